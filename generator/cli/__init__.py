@@ -1,0 +1,59 @@
+"""The ``ocioforge`` command: a thin group whose commands are imported only when run."""
+
+from __future__ import annotations
+
+import importlib
+import sys
+
+import click
+
+#: Command name -> module under generator.cli, with its one-line help.
+COMMANDS = {
+    "build": "Build an OCIO config (and its LUTs) from a spec.",
+    "init": "Write the embedded default spec, commented, to a file.",
+    "matrix": "Print the 3x3 matrix from one colour space's linear RGB to another's.",
+    "info": "Describe a library colour space: gamut, white, curve, matrices.",
+    "list": "List the library's colour spaces, displays and curves.",
+}
+
+
+class LazyGroup(click.Group):
+    def list_commands(self, ctx):
+        return list(COMMANDS)
+
+    def get_command(self, ctx, name):
+        if name not in COMMANDS:
+            return None
+        return importlib.import_module(f"generator.cli.{name.replace('-', '_')}").command
+
+    def format_commands(self, ctx, formatter):
+        formatter.write_dl([(name, text) for name, text in COMMANDS.items()], col_max=12)
+
+
+@click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(package_name="ocioforge", prog_name="ocioforge")
+def cli():
+    """ocioforge: OpenColorIO configs and LUTs from a declarative spec, checked by numbers."""
+
+
+def fail(message: str) -> None:
+    """One line on stderr and exit status 2 (bad input)."""
+    click.echo(f"error: {message}", err=True)
+    sys.exit(2)
+
+
+def main(argv=None) -> None:
+    from generator.spec.schema import SpecError
+
+    try:
+        cli.main(args=argv, prog_name="ocioforge", standalone_mode=False)
+    except click.exceptions.Abort:
+        fail("aborted")
+    except click.exceptions.NoArgsIsHelpError as error:
+        click.echo(error.ctx.get_help())
+    except click.UsageError as error:
+        fail(error.format_message().replace("\n", " "))
+    except SpecError as error:
+        fail(str(error))
+    except click.exceptions.Exit as exit_:
+        sys.exit(exit_.exit_code)

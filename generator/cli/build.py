@@ -1,0 +1,29 @@
+"""ocioforge build: spec -> config folder."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import click
+
+
+@click.command(help="Build an OCIO config from SPEC (default: the embedded spec) into a folder.")
+@click.argument("spec", required=False, type=click.Path(dir_okay=False))
+@click.option("-o", "--output", type=click.Path(file_okay=False), help="Folder to write (default: configs/<name>).")
+@click.option("--ocio-version", help="Config version to write, e.g. 2.1 (overrides the spec).")
+@click.option("--force", is_flag=True, help="Replace a non-empty output folder.")
+def command(spec, output, ocio_version, force):
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    started = time.perf_counter()
+    parsed = load.load(spec)
+    version = load.parse_version(ocio_version, "--ocio-version") if ocio_version else None
+    out_dir = Path(output) if output else Path("configs") / parsed.name
+    result = build(for_folder(parsed, out_dir.absolute(), version), out_dir, force=force)
+    click.echo(
+        f"{result.path / 'config.ocio'}: OCIO {'.'.join(map(str, version or parsed.ocio_version))}, "
+        f"{result.colour_spaces} colour spaces, {result.displays} displays, {result.views} views, "
+        f"{result.files} files ({time.perf_counter() - started:.2f} s)"
+    )

@@ -1,0 +1,57 @@
+"""ocioforge matrix: the 3x3 from one colour space's linear RGB to another's."""
+
+from __future__ import annotations
+
+import json
+
+import click
+
+FORMATS = ("plain", "json", "nuke", "ocio")
+
+
+def _ocio_snippet(matrix) -> str:
+    """The matrix as an OCIO config line, serialised by OCIO itself."""
+    import PyOpenColorIO as ocio
+
+    from generator.ocio.emit import matrix_transform
+
+    cfg = ocio.Config()
+    cs = ocio.ColorSpace(name="matrix")
+    cs.setTransform(matrix_transform(matrix), ocio.COLORSPACE_DIR_TO_REFERENCE)
+    cfg.addColorSpace(cs)
+    return next(line.split("to_scene_reference:")[1].strip() for line in cfg.serialize().splitlines()
+                if "MatrixTransform" in line)
+
+
+def render(matrix, fmt: str, label: str) -> str:
+    rows = [[float(v) for v in row] for row in matrix]
+    if fmt == "json":
+        return json.dumps({"matrix": rows})
+    if fmt == "nuke":
+        body = "\n".join("     {" + " ".join(f"{v:.10g}" for v in row) + "}" for row in rows)
+        return f"ColorMatrix {{\n matrix {{\n{body}\n   }}\n name {label}\n}}"
+    if fmt == "ocio":
+        return _ocio_snippet(matrix)
+    return "\n".join(" ".join(f"{v: .10f}" for v in row) for row in rows)
+
+
+@click.command(help="Print the 3x3 matrix taking linear SRC RGB to linear DST RGB (column vectors).")
+@click.argument("src")
+@click.argument("dst")
+@click.option("--cat", default="Bradford", show_default=True,
+              help="Chromatic adaptation: Bradford, CAT02, CAT16, von Kries, XYZ scaling, none.")
+@click.option("--format", "fmt", type=click.Choice(FORMATS), default="plain", show_default=True)
+def command(src, dst, cat, fmt):
+    from generator.colorimetry.matrices import CATS, rgb_to_rgb
+    from generator.spec.load import library_space
+    from generator.spec.schema import SpecError
+
+    if cat not in CATS:
+        raise SpecError("--cat", cat, f"unknown chromatic adaptation; allowed: {', '.join(CATS)}")
+    spaces = [library_space(name, "ocioforge matrix", which) for name, which in ((src, "SRC"), (dst, "DST"))]
+    for space, which in zip(spaces, ("SRC", "DST")):
+        if space.gamut is None:
+            raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
+    matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat)
+    label = f"{spaces[0].aliases[0] if spaces[0].aliases else 'src'}_to_{spaces[1].aliases[0] if spaces[1].aliases else 'dst'}"
+    click.echo(render(matrix, fmt, label))

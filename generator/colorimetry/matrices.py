@@ -1,0 +1,105 @@
+"""RGB <-> XYZ and RGB <-> RGB matrices, derived from primaries and white points.
+
+The normalised primary matrix follows SMPTE RP 177-1993; chromatic adaptation
+is a von Kries-type transform in the cone space of the chosen CAT
+(colour-science supplies the cone matrices). Nothing here is pasted: every
+matrix is computed from chromaticities.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+#: Chromatic adaptation transforms a spec may name, mapped to colour-science's names.
+#: "none" keeps XYZ unchanged across white points (no adaptation at all).
+CATS = {
+    "Bradford": "Bradford",
+    "CAT02": "CAT02",
+    "CAT16": "CAT16",
+    "von Kries": "Von Kries",
+    "XYZ scaling": "XYZ Scaling",
+    "none": None,
+}
+
+
+@dataclass(frozen=True)
+class Gamut:
+    """An RGB gamut: three primaries, the white point they are balanced to,
+    and the white its values are relative to when adapting (the same, except
+    for XYZ-like spaces whose white is E by construction but whose values are
+    relative to another illuminant, such as CIE XYZ-D65)."""
+
+    name: str
+    primaries: tuple[tuple[float, float], tuple[float, float], tuple[float, float]]
+    whitepoint: tuple[float, float]
+    adapting_white: tuple[float, float] | None = None
+    citation: str = ""
+
+    @property
+    def white(self) -> tuple[float, float]:
+        """The white point colours in this gamut are adapted to."""
+        return self.adapting_white or self.whitepoint
+
+    @property
+    def rgb_to_xyz(self) -> np.ndarray:
+        return normalised_primary_matrix(self.primaries, self.whitepoint)
+
+    @property
+    def xyz_to_rgb(self) -> np.ndarray:
+        return np.linalg.inv(self.rgb_to_xyz)
+
+
+def xy_to_XYZ(xy) -> np.ndarray:
+    """Chromaticity (..., 2) to tristimulus with Y = 1."""
+    xy = np.asarray(xy, dtype=np.float64)
+    x, y = xy[..., 0], xy[..., 1]
+    return np.stack([x / y, np.ones_like(x), (1.0 - x - y) / y], axis=-1)
+
+
+def normalised_primary_matrix(primaries, whitepoint) -> np.ndarray:
+    """RGB -> XYZ matrix of a gamut (SMPTE RP 177-1993, equation 3.3).
+
+    Columns are the primaries' XYZ, scaled so that RGB (1, 1, 1) maps to the
+    white point with Y = 1.
+    """
+    p = np.asarray(primaries, dtype=np.float64)
+    columns = np.stack([p[:, 0], p[:, 1], 1.0 - p[:, 0] - p[:, 1]], axis=0)
+    scale = np.linalg.solve(columns, xy_to_XYZ(whitepoint))
+    return columns * scale[np.newaxis, :]
+
+
+def adaptation_matrix(source_white, target_white, cat: str = "Bradford") -> np.ndarray:
+    """XYZ -> XYZ chromatic adaptation from ``source_white`` to ``target_white`` (xy).
+
+    ``cat`` is one of :data:`CATS`; "none" gives the identity.
+    """
+    if cat not in CATS:
+        raise ValueError(f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
+    if CATS[cat] is None or np.allclose(source_white, target_white, rtol=0, atol=1e-12):
+        return np.eye(3)
+    from colour.adaptation import matrix_chromatic_adaptation_VonKries
+
+    return np.asarray(
+        matrix_chromatic_adaptation_VonKries(
+            xy_to_XYZ(source_white), xy_to_XYZ(target_white), transform=CATS[cat]
+        ),
+        dtype=np.float64,
+    )
+
+
+def rgb_to_rgb(source: Gamut, target: Gamut, cat: str = "Bradford") -> np.ndarray:
+    """Linear RGB of ``source`` to linear RGB of ``target``:
+    M_target⁻¹ · CAT(w_source → w_target) · M_source."""
+    return target.xyz_to_rgb @ adaptation_matrix(source.white, target.white, cat) @ source.rgb_to_xyz
+
+
+def rgb_to_xyz_adapted(source: Gamut, xyz_white, cat: str = "Bradford") -> np.ndarray:
+    """Linear RGB of ``source`` to XYZ relative to ``xyz_white`` (e.g. CIE XYZ-D65)."""
+    return adaptation_matrix(source.white, xyz_white, cat) @ source.rgb_to_xyz
+
+
+def apply_matrix(matrix, rgb) -> np.ndarray:
+    """Apply a 3x3 matrix to colours along the last axis of ``rgb``."""
+    return np.einsum("ij,...j->...i", np.asarray(matrix, dtype=np.float64), np.asarray(rgb, dtype=np.float64))

@@ -1,0 +1,91 @@
+"""The reference evaluation: float64 numpy, the single source of truth.
+
+Every colour transform a config expresses is evaluated here directly from the
+resolved spec: the emitter writes the same maths as OCIO transforms, the baker
+samples these functions, the verifier compares OCIO's output with them.
+
+Conventions: scene-linear values are relative to the scene reference (by
+default ACES2065-1); display-linear values are CIE XYZ relative to D65 with
+1.0 = 100 cd/m²; views clip each display channel to [0, peak / 100 cd/m²].
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from generator.colorimetry.gamuts import D65
+from generator.colorimetry.matrices import adaptation_matrix, apply_matrix, rgb_to_rgb, rgb_to_xyz_adapted
+from generator.spec.schema import ColourSpace, Display, Spec
+
+
+def space_matrix(spec: Spec, space: ColourSpace) -> np.ndarray:
+    """Linear RGB of ``space`` to the scene reference."""
+    return rgb_to_rgb(space.gamut, spec.reference.gamut, spec.chromatic_adaptation)
+
+
+def _adx_reference_matrix(spec: Spec) -> np.ndarray:
+    from generator.colorimetry.gamuts import gamuts
+
+    return rgb_to_rgb(gamuts()["AP0"], spec.reference.gamut, spec.chromatic_adaptation)
+
+
+def to_reference(spec: Spec, space: ColourSpace, rgb) -> np.ndarray:
+    """Encoded values of ``space`` (..., 3) to scene-reference linear RGB."""
+    rgb = np.asarray(rgb, dtype=np.float64)
+    if space.is_data:
+        return rgb.copy()
+    if space.special:
+        from generator.colorimetry.adx import adx_to_aces
+
+        return apply_matrix(_adx_reference_matrix(spec), adx_to_aces(rgb, int(space.special[3:])))
+    return apply_matrix(space_matrix(spec, space), space.curve.decode(rgb))
+
+
+def from_reference(spec: Spec, space: ColourSpace, ref) -> np.ndarray:
+    """Scene-reference linear RGB (..., 3) to encoded values of ``space``."""
+    ref = np.asarray(ref, dtype=np.float64)
+    if space.is_data:
+        return ref.copy()
+    if space.special:
+        from generator.colorimetry.adx import aces_to_adx
+
+        return aces_to_adx(apply_matrix(np.linalg.inv(_adx_reference_matrix(spec)), ref), int(space.special[3:]))
+    return space.curve.encode(apply_matrix(np.linalg.inv(space_matrix(spec, space)), ref))
+
+
+def scene_to_display_reference(spec: Spec) -> np.ndarray:
+    """Scene-reference linear RGB to CIE XYZ-D65 (the display reference)."""
+    return rgb_to_xyz_adapted(spec.reference.gamut, D65, spec.chromatic_adaptation)
+
+
+def display_matrix(spec: Spec, display: Display) -> np.ndarray:
+    """CIE XYZ-D65 to the display's linear RGB (adapted to the display's white)."""
+    return display.gamut.xyz_to_rgb @ adaptation_matrix(D65, display.gamut.white, spec.chromatic_adaptation)
+
+
+def display_encode(display: Display, rgb) -> np.ndarray:
+    """Display-linear RGB (1.0 = 100 cd/m², already inside [0, peak/100]) to code values."""
+    rgb = np.asarray(rgb, dtype=np.float64)
+    if display.eotf_name == "HLG":
+        from colour.models import eotf_inverse_BT2100_HLG
+
+        return np.asarray(eotf_inverse_BT2100_HLG(rgb * 100.0, L_B=0.0, L_W=display.peak), dtype=np.float64)
+    return display.eotf.encode(rgb)
+
+
+def display_decode(display: Display, code) -> np.ndarray:
+    """Display code values to display-linear RGB (1.0 = 100 cd/m²)."""
+    code = np.asarray(code, dtype=np.float64)
+    if display.eotf_name == "HLG":
+        from colour.models import eotf_BT2100_HLG
+
+        return np.asarray(eotf_BT2100_HLG(code, L_B=0.0, L_W=display.peak), dtype=np.float64) / 100.0
+    return display.eotf.decode(code)
+
+
+def colorimetric_view(spec: Spec, display: Display, ref) -> np.ndarray:
+    """Scene-reference linear RGB through the Colorimetric view of ``display``:
+    to display RGB, clip each channel to [0, peak], encode."""
+    matrix = display_matrix(spec, display) @ scene_to_display_reference(spec)
+    linear = np.clip(apply_matrix(matrix, ref), 0.0, display.clip_high)
+    return display_encode(display, linear)

@@ -1,0 +1,53 @@
+"""What each OCIO config version can express: data, checked by the test suite
+against OpenColorIO's own refusal to write newer styles into older profiles.
+"""
+
+from __future__ import annotations
+
+#: BuiltinTransform styles the generator uses, with the first config version that accepts them.
+BUILTIN_MIN_VERSION = {
+    "ADX10_to_ACES2065-1": (2, 0),
+    "ADX16_to_ACES2065-1": (2, 0),
+    "CURVE - ST-2084_to_LINEAR": (2, 0),
+    "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit": (2, 0),
+    "CURVE - CANON_CLOG2_to_LINEAR": (2, 2),
+    "CURVE - CANON_CLOG3_to_LINEAR": (2, 2),
+    "CURVE - APPLE_LOG_to_LINEAR": (2, 4),
+    "CURVE - HLG-OETF-INVERSE": (2, 4),
+}
+
+#: Curves with no LogCamera form, and the builtin chain (decode direction:
+#: code -> linear) that expresses each exactly. A chain is a tuple of
+#: (style, inverse?) pairs. Curves absent here, or whose chain the target
+#: version lacks, are baked into a 1D LUT. (ACEScc is baked: OCIO's
+#: ACEScc_to_ACES2065-1 clamps negative ACES2065-1 values, so it is not the
+#: curve and a matrix.)
+CURVE_BUILTINS = {
+    "ST 2084": (("CURVE - ST-2084_to_LINEAR", False),),
+    "Canon Log 2": (("CURVE - CANON_CLOG2_to_LINEAR", False),),
+    "Canon Log 3": (("CURVE - CANON_CLOG3_to_LINEAR", False),),
+    "Apple Log": (("CURVE - APPLE_LOG_to_LINEAR", False),),
+    "HLG": (("CURVE - HLG-OETF-INVERSE", False),),
+}
+
+#: Whole-space builtins: encodings that are not a per-channel curve and a gamut.
+SPACE_BUILTINS = {
+    "adx10": "ADX10_to_ACES2065-1",
+    "adx16": "ADX16_to_ACES2065-1",
+}
+
+#: HLG display encoding, including BT.2100's OOTF for a 1000 cd/m² display.
+HLG_DISPLAY_BUILTIN = "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit"
+HLG_DISPLAY_PEAK = 1000.0
+
+
+def has_builtin(style: str, version: tuple[int, int]) -> bool:
+    return version >= BUILTIN_MIN_VERSION[style]
+
+
+def curve_chain(curve_name: str, version: tuple[int, int]):
+    """The builtin chain expressing ``curve_name`` at ``version``, or None (bake it)."""
+    chain = CURVE_BUILTINS.get(curve_name)
+    if chain and all(has_builtin(style, version) for style, _ in chain):
+        return chain
+    return None

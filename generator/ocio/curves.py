@@ -1,0 +1,74 @@
+"""Transfer-function records as OCIO transforms, in the decode direction (code -> linear).
+
+Analytic where the target version can express the curve exactly; otherwise a
+baked 1D LUT file, recorded in the ``bakes`` dictionary the caller writes out.
+"""
+
+from __future__ import annotations
+
+import PyOpenColorIO as ocio
+
+from generator.colorimetry import transfer
+from generator.luts.curve1d import BakedCurve, bake_curve
+from generator.ocio.capabilities import curve_chain
+
+INVERSE = ocio.TRANSFORM_DIR_INVERSE
+FORWARD = ocio.TRANSFORM_DIR_FORWARD
+
+
+def _log(curve: transfer.LogCamera) -> ocio.Transform:
+    args = dict(
+        base=curve.base,
+        logSideSlope=[curve.log_side_slope] * 3,
+        logSideOffset=[curve.log_side_offset] * 3,
+        linSideSlope=[curve.lin_side_slope] * 3,
+        linSideOffset=[curve.lin_side_offset] * 3,
+        direction=INVERSE,
+    )
+    if curve.lin_side_break is None:
+        return ocio.LogAffineTransform(**args)
+    t = ocio.LogCameraTransform(linSideBreak=[curve.lin_side_break] * 3, **args)
+    if curve.linear_slope is not None:
+        t.setLinearSlopeValue([curve.linear_slope] * 3)
+    return t
+
+
+def _baked(name: str, curve, bakes: dict[str, BakedCurve]) -> list:
+    """Normalise the code to [0, 1] over the domain, apply the shaper, look up the LUT."""
+    baked = bake_curve(name, curve, curve.domain)
+    bakes[baked.filename] = baked
+    lo, hi = baked.domain
+    steps = []
+    if (lo, hi) != (0.0, 1.0):
+        scale = 1.0 / (hi - lo)
+        steps.append(ocio.MatrixTransform(matrix=[scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, 1],
+                                          offset=[-lo * scale] * 3 + [0.0]))
+    if baked.shaper != 1:
+        steps.append(ocio.ExponentTransform(value=[1.0 / baked.shaper] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_CLAMP))
+    steps.append(ocio.FileTransform(src=baked.filename, interpolation=ocio.INTERP_LINEAR, direction=FORWARD))
+    return steps
+
+
+def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[str, BakedCurve]) -> list:
+    """OCIO transforms taking code values of ``curve`` to linear."""
+    if isinstance(curve, transfer.Linear):
+        return []
+    if isinstance(curve, transfer.Power):
+        return [ocio.ExponentTransform(value=[curve.exponent] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_MIRROR)]
+    if isinstance(curve, transfer.PiecewisePower):
+        return [ocio.ExponentWithLinearTransform(gamma=[curve.gamma] * 3 + [1.0], offset=[curve.offset] * 3 + [0.0])]
+    if isinstance(curve, transfer.LogCamera):
+        return [_log(curve)]
+    chain = curve_chain(name, version) if isinstance(curve, transfer.Function) else None
+    if chain:
+        return [ocio.BuiltinTransform(style, INVERSE if inverse else FORWARD) for style, inverse in chain]
+    return _baked(name, curve, bakes)
+
+
+def group(transforms: list, direction=FORWARD) -> ocio.Transform | None:
+    """One transform for a list: None when empty, the transform itself when single, else a group."""
+    if not transforms:
+        return None
+    if len(transforms) == 1 and direction == FORWARD:
+        return transforms[0]
+    return ocio.GroupTransform(transforms, direction=direction)

@@ -1,0 +1,161 @@
+"""The only code that turns a :class:`Spec` into PyOpenColorIO objects.
+
+Matrices come from :mod:`generator.colorimetry.reference` (the same functions
+the reference evaluation uses), curves from :mod:`generator.ocio.curves`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import PyOpenColorIO as ocio
+
+from generator.colorimetry import reference
+from generator.luts.curve1d import BakedCurve
+from generator.ocio import curves
+from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
+from generator.spec.load import DISPLAY_REFERENCE
+from generator.spec.schema import ColourSpace, Display, Spec
+
+SCENE = ocio.REFERENCE_SPACE_SCENE
+DISPLAY = ocio.REFERENCE_SPACE_DISPLAY
+LUT_FOLDER = "luts"
+COLORIMETRIC = "Colorimetric"
+CATEGORIES = {
+    "scene-linear": ["file-io", "working-space"],
+    "log": ["file-io", "working-space"],
+    "sdr-video": ["file-io", "texture"],
+    "data": ["file-io", "working-space", "texture"],
+}
+
+
+@dataclass(frozen=True)
+class Emitted:
+    config: ocio.Config
+    luts: dict[str, BakedCurve]
+
+
+def matrix_transform(matrix: np.ndarray, direction=ocio.TRANSFORM_DIR_FORWARD) -> ocio.MatrixTransform:
+    m44 = np.eye(4)
+    m44[:3, :3] = matrix
+    return ocio.MatrixTransform(matrix=[float(v) for v in m44.ravel()], direction=direction)
+
+
+def _matrix_unless_identity(matrix: np.ndarray) -> list:
+    return [] if np.allclose(matrix, np.eye(3), rtol=0, atol=1e-12) else [matrix_transform(matrix)]
+
+
+def _curve_label(space_name: str, curve_name: str) -> str:
+    return space_name if curve_name.startswith("custom") else curve_name
+
+
+def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
+    if space.is_data:
+        return []
+    if space.special:
+        ap0_to_ref = reference._adx_reference_matrix(spec)
+        return [ocio.BuiltinTransform(SPACE_BUILTINS[space.special]), *_matrix_unless_identity(ap0_to_ref)]
+    decode = curves.decode_transforms(_curve_label(space.name, space.curve_name), space.curve, spec.ocio_version, bakes)
+    return decode + _matrix_unless_identity(reference.space_matrix(spec, space))
+
+
+def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace:
+    cs = ocio.ColorSpace(
+        SCENE, name=space.name, aliases=list(space.aliases), family=space.family, encoding=space.encoding,
+        description=space.description, isData=space.is_data, categories=CATEGORIES.get(space.encoding, ["file-io"]),
+    )
+    if space.interop_id and spec.ocio_version >= (2, 5):
+        cs.setInteropID(space.interop_id)
+    transform = curves.group(_to_reference(spec, space, bakes))
+    if transform is not None:
+        cs.setTransform(transform, ocio.COLORSPACE_DIR_TO_REFERENCE)
+    return cs
+
+
+def _display_space(spec: Spec, display: Display, bakes: dict) -> ocio.ColorSpace:
+    """Display-referred space: XYZ-D65 -> display RGB -> clip to [0, peak] -> inverse EOTF."""
+    to_rgb = reference.display_matrix(spec, display)
+    steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high,
+                                                           minOutValue=0.0, maxOutValue=display.clip_high)]
+    if display.eotf_name == "HLG":
+        steps += [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN)]
+    else:
+        decode = curves.decode_transforms(_curve_label(display.name, display.eotf_name), display.eotf,
+                                          spec.ocio_version, bakes)
+        if decode:
+            steps.append(ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE))
+    cs = ocio.ColorSpace(DISPLAY, name=display.name, aliases=list(display.aliases), family="Display",
+                         encoding=display.encoding, description=display.description, categories=["file-io"])
+    cs.setTransform(ocio.GroupTransform(steps), ocio.COLORSPACE_DIR_FROM_REFERENCE)
+    return cs
+
+
+def _display_reference_space() -> ocio.ColorSpace:
+    return ocio.ColorSpace(DISPLAY, name=DISPLAY_REFERENCE, aliases=["cie_xyz_d65_display", "lin_ciexyzd65_display"],
+                           family="", encoding="display-linear", description="CIE XYZ relative to D65, 1.0 = 100 cd/m²",
+                           categories=["file-io"])
+
+
+def _views(spec: Spec, cfg: ocio.Config) -> None:
+    vt = ocio.ViewTransform(SCENE, name=COLORIMETRIC, family="Colorimetric",
+                            description="Scene reference to CIE XYZ-D65, no tone or gamut mapping; displays clip per channel")
+    vt.setTransform(matrix_transform(reference.scene_to_display_reference(spec)), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    cfg.addViewTransform(vt)
+    raw = next((s.name for s in spec.colour_spaces if s.is_data), None)
+    for display in spec.displays:
+        for view in display.views:
+            if view == "Raw":
+                cfg.addDisplayView(display.name, view, raw)
+            else:
+                cfg.addDisplayView(display.name, view, COLORIMETRIC, display.name, "", "", "")
+    cfg.setActiveDisplays(", ".join(d.name for d in spec.displays))
+    views = list(dict.fromkeys(v for d in spec.displays for v in d.views))
+    cfg.setActiveViews(", ".join(views))
+
+
+def _display_view_spaces(spec: Spec, cfg: ocio.Config) -> None:
+    for display in spec.displays:
+        for view in display.views:
+            if view == "Raw":
+                continue
+            cs = ocio.ColorSpace(SCENE, name=f"{view} - {display.name}", family="Display-View",
+                                 encoding=display.encoding, categories=["file-io"],
+                                 description=f"The {view} view of {display.name}, for writing display-ready files")
+            dvt = ocio.DisplayViewTransform(src=spec.scene_reference, display=display.name, view=view)
+            cs.setTransform(dvt, ocio.COLORSPACE_DIR_FROM_REFERENCE)
+            cfg.addColorSpace(cs)
+
+
+def _file_rules(spec: Spec) -> ocio.FileRules:
+    rules = ocio.FileRules()
+    for index, rule in enumerate(r for r in spec.file_rules if r.name != "Default"):
+        rules.insertRule(index, rule.name, rule.colour_space, rule.pattern, rule.extension)
+    rules.setDefaultRuleColorSpace(spec.file_rules[-1].colour_space)
+    return rules
+
+
+def emit(spec: Spec) -> Emitted:
+    """The OCIO config for ``spec`` (validated) and the 1D LUTs it references."""
+    cfg = ocio.Config()
+    cfg.setMajorVersion(spec.ocio_version[0])
+    cfg.setMinorVersion(spec.ocio_version[1])
+    cfg.setName(spec.name)
+    cfg.setDescription(spec.description)
+    cfg.setSearchPath(LUT_FOLDER)
+    bakes: dict[str, BakedCurve] = {}
+    for space in spec.colour_spaces:
+        cfg.addColorSpace(_scene_space(spec, space, bakes))
+    cfg.addColorSpace(_display_reference_space())
+    for display in spec.displays:
+        cfg.addColorSpace(_display_space(spec, display, bakes))
+    _views(spec, cfg)
+    if spec.display_view_spaces:
+        _display_view_spaces(spec, cfg)
+    for role, target in spec.roles:
+        cfg.setRole(role, target)
+    cfg.setFileRules(_file_rules(spec))
+    if spec.inactive:
+        cfg.setInactiveColorSpaces(", ".join(spec.inactive))
+    cfg.validate()
+    return Emitted(cfg, dict(sorted(bakes.items())))

@@ -1,0 +1,72 @@
+"""Writing a built config folder atomically: config.ocio, luts/, the resolved spec.
+
+Everything is written into a temporary sibling folder, then renamed into place,
+so a failed build never leaves a half-written folder behind.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+from generator.luts.spi1d import format_spi1d
+from generator.ocio.emit import LUT_FOLDER, emit
+from generator.spec import resolved
+from generator.spec.schema import Spec, SpecError
+
+CONFIG_FILENAME = "config.ocio"
+
+
+@dataclass(frozen=True)
+class BuildResult:
+    path: Path
+    colour_spaces: int
+    displays: int
+    views: int
+    files: int
+    worst_lut_error: float
+
+
+def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None) -> Spec:
+    """The spec as built into ``out_dir``: the config's name is the folder's name."""
+    return replace(spec, name=out_dir.name, ocio_version=version or spec.ocio_version)
+
+
+def write_files(spec: Spec, folder: Path) -> BuildResult:
+    emitted = emit(spec)
+    (folder / CONFIG_FILENAME).write_text(emitted.config.serialize(), encoding="utf-8")
+    if emitted.luts:
+        (folder / LUT_FOLDER).mkdir()
+    for name, lut in emitted.luts.items():
+        (folder / LUT_FOLDER / name).write_text(format_spi1d(lut.values), encoding="utf-8")
+    (folder / resolved.FILENAME).write_text(resolved.dumps(spec), encoding="utf-8")
+    cfg = emitted.config
+    views = sum(len(cfg.getViews(d)) for d in cfg.getDisplays())
+    worst = max((lut.max_relative_error for lut in emitted.luts.values()), default=0.0)
+    return BuildResult(folder, len(cfg.getColorSpaceNames()), len(cfg.getDisplays()), views, len(emitted.luts) + 2, worst)
+
+
+def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
+    """Build ``spec`` into ``out_dir`` (replacing a non-empty one only with ``force``)."""
+    out_dir = Path(out_dir).absolute()
+    if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())) and not force:
+        raise SpecError(str(out_dir), "-o", "exists and is not empty; pass --force to replace it")
+    out_dir.parent.mkdir(parents=True, exist_ok=True)
+    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", dir=out_dir.parent))
+    try:
+        result = write_files(spec, staging)
+        os.chmod(staging, 0o755)
+        if out_dir.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.old.", dir=out_dir.parent))
+            out_dir.rename(old / "x")
+            staging.rename(out_dir)
+            shutil.rmtree(old)
+        else:
+            staging.rename(out_dir)
+    finally:
+        if staging.exists():
+            shutil.rmtree(staging)
+    return replace(result, path=out_dir)

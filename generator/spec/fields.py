@@ -1,0 +1,151 @@
+"""Parsing of the spec's colorimetric fields: primaries, white points, transfer functions.
+
+Each parser takes the raw TOML value and a ``where`` (source, field) pair for
+errors, and returns a frozen record; a bad value raises
+:class:`~generator.spec.schema.SpecError` naming the field and what is allowed.
+"""
+
+from __future__ import annotations
+
+import difflib
+import math
+from pathlib import Path
+
+from generator.colorimetry import transfer
+from generator.spec.schema import SpecError
+
+TRANSFER_FAMILIES = {
+    "linear": (),
+    "gamma": ("exponent",),
+    "piecewise_gamma": ("gamma", "offset"),
+    "log_camera": ("base", "log_side_slope", "log_side_offset", "lin_side_slope", "lin_side_offset",
+                   "lin_side_break", "linear_slope"),
+    "tabulated": ("file",),
+}
+_OPTIONAL = {"lin_side_break", "linear_slope"}
+
+
+def suggest(name: str, choices) -> str:
+    """' (did you mean …?)' for close matches of ``name`` among ``choices``, or ''."""
+    lowered = {c.lower(): c for c in choices}
+    close = difflib.get_close_matches(name.lower(), list(lowered), n=3, cutoff=0.6)
+    return f" (did you mean {', '.join(repr(lowered[c]) for c in close)}?)" if close else ""
+
+
+def number(value, source: str, field: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise SpecError(source, field, f"expected a finite number, got {value!r}")
+    return float(value)
+
+
+def xy_pair(value, source: str, field: str) -> tuple[float, float]:
+    if not isinstance(value, list) or len(value) != 2:
+        raise SpecError(source, field, f"expected a chromaticity [x, y], got {value!r}")
+    x, y = (number(v, source, field) for v in value)
+    if not (0.0 < y and -1.0 < x < 2.0 and y < 2.0):
+        raise SpecError(source, field, f"chromaticity {value!r} is not plausible: need y > 0")
+    return (x, y)
+
+
+def primaries(value, source: str, field: str) -> tuple:
+    if not isinstance(value, list) or len(value) != 3:
+        raise SpecError(source, field, "expected three chromaticities [[xr, yr], [xg, yg], [xb, yb]]")
+    return tuple(xy_pair(v, source, f"{field}[{i}]") for i, v in enumerate(value))
+
+
+def resolve_path(value, base: Path, source: str, field: str) -> Path:
+    if not isinstance(value, str) or not value:
+        raise SpecError(source, field, f"expected a file path, got {value!r}")
+    path = (base / value).resolve() if not Path(value).is_absolute() else Path(value)
+    if not path.is_file():
+        raise SpecError(source, field, f"file {value!r} does not exist")
+    return path
+
+
+def _csv(reader, path: Path, source: str, field: str):
+    try:
+        return reader(path)
+    except (ValueError, OSError) as error:
+        raise SpecError(source, field, str(error)) from None
+
+
+def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float]:
+    """A white point: [x, y], a named CIE illuminant, a CCT in kelvin, or an SPD CSV file."""
+    from generator.colorimetry import spectral
+
+    if isinstance(value, list):
+        return xy_pair(value, source, field)
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        cct = number(value, source, field)
+        if not 1667.0 <= cct <= 25000.0:
+            raise SpecError(source, field, f"CCT {cct:g} K is outside 1667 to 25000 K")
+        return tuple(float(v) for v in spectral.whitepoint_from_cct(cct))
+    if isinstance(value, str) and value.lower().endswith(".csv"):
+        sd = _csv(spectral.read_spd_csv, resolve_path(value, base, source, field), source, field)
+        return tuple(float(v) for v in spectral.whitepoint_from_sd(sd))
+    if isinstance(value, str):
+        import colour
+
+        illuminants = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]
+        if value in illuminants:
+            return tuple(float(v) for v in illuminants[value])
+        raise SpecError(source, field, f"unknown illuminant {value!r}{suggest(value, illuminants)}; "
+                        "allowed: [x, y], a CIE illuminant name (D65, D60, A, E, ...), a CCT in K, or an SPD .csv")
+    raise SpecError(source, field, f"expected [x, y], an illuminant name, a CCT or an SPD .csv, got {value!r}")
+
+
+def spectral_primaries(value, base: Path, source: str, field: str) -> tuple:
+    from generator.colorimetry import spectral
+
+    path = resolve_path(value, base, source, field)
+    xy = _csv(spectral.read_primaries_spectra_csv, path, source, field)
+    return tuple((float(x), float(y)) for x, y in xy)
+
+
+def transfer_function(value, base: Path, source: str, field: str):
+    """A transfer function: a library curve name, or a table with a ``family``."""
+    from generator.colorimetry.curves import CURVES
+
+    if isinstance(value, str):
+        for name, curve in CURVES.items():
+            if name.lower() == value.lower():
+                return name, curve
+        raise SpecError(source, field, f"unknown curve {value!r}{suggest(value, CURVES)}; "
+                        "allowed: a library curve (ocioforge list --curves) or a table with 'family'")
+    if not isinstance(value, dict):
+        raise SpecError(source, field, f"expected a curve name or a table, got {value!r}")
+    family = value.get("family")
+    if family not in TRANSFER_FAMILIES:
+        raise SpecError(source, f"{field}.family", f"unknown family {family!r}; allowed: {', '.join(TRANSFER_FAMILIES)}")
+    allowed = set(TRANSFER_FAMILIES[family]) | {"family"}
+    for key in value:
+        if key not in allowed:
+            raise SpecError(source, f"{field}.{key}", f"unknown key for family {family!r}; allowed: {', '.join(sorted(allowed))}")
+    missing = [k for k in TRANSFER_FAMILIES[family] if k not in value and k not in _OPTIONAL]
+    if missing:
+        raise SpecError(source, f"{field}.{missing[0]}", f"missing for family {family!r}")
+    return _build_transfer(family, value, base, source, field)
+
+
+def _build_transfer(family: str, value: dict, base: Path, source: str, field: str):
+    label = f"custom {family}"
+    if family == "linear":
+        return "linear", transfer.Linear()
+    if family == "tabulated":
+        from generator.colorimetry import spectral
+
+        path = resolve_path(value["file"], base, source, f"{field}.file")
+        code, linear = _csv(spectral.read_curve_csv, path, source, f"{field}.file")
+        return label, transfer.Tabulated(path.name, tuple(map(float, code)), tuple(map(float, linear)))
+    params = {k: number(v, source, f"{field}.{k}") for k, v in value.items() if k != "family"}
+    if family == "gamma":
+        if params["exponent"] <= 0:
+            raise SpecError(source, f"{field}.exponent", "must be positive")
+        return label, transfer.Power(params["exponent"])
+    if family == "piecewise_gamma":
+        if params["gamma"] <= 1 or params["offset"] <= 0:
+            raise SpecError(source, field, "piecewise_gamma needs gamma > 1 and offset > 0")
+        return label, transfer.PiecewisePower(params["gamma"], params["offset"])
+    if params["base"] <= 1 or params["log_side_slope"] == 0 or params["lin_side_slope"] == 0:
+        raise SpecError(source, field, "log_camera needs base > 1 and non-zero slopes")
+    return label, transfer.LogCamera(**params)

@@ -1,0 +1,283 @@
+"""Reading a TOML spec (or the embedded default) into a frozen :class:`Spec`.
+
+Strict: an unknown key is an error listing the allowed ones; an unknown
+colour-space name suggests close matches. Nothing in a spec is executed.
+"""
+
+from __future__ import annotations
+
+import tomllib
+from importlib import resources
+from pathlib import Path
+
+from generator.colorimetry import library
+from generator.colorimetry.matrices import CATS, Gamut
+from generator.spec import fields
+from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
+
+TOP_KEYS = ("name", "description", "ocio_version", "scene_reference", "chromatic_adaptation", "colour_spaces",
+            "inactive", "display_view_spaces", "custom_space", "display", "roles", "file_rule")
+CUSTOM_SPACE_KEYS = ("name", "aliases", "family", "encoding", "description", "gamut", "primaries",
+                     "primaries_spectra", "white", "transfer")
+DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "white", "eotf", "peak_luminance", "description")
+FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension")
+ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "hdr-video", "data")
+
+#: Views every display may offer (gamut-mapped views extend this list).
+VIEWS = ("Colorimetric", "Raw")
+
+#: Roles a config must set so hosts load it without warnings, with their default targets.
+DEFAULT_ROLES = {
+    "scene_linear": "ACEScg", "rendering": "ACEScg", "compositing_linear": "ACEScg",
+    "compositing_log": "ACEScct", "color_timing": "ACEScct", "color_picking": "sRGB Encoded Rec.709 (sRGB)",
+    "texture_paint": "sRGB Encoded Rec.709 (sRGB)", "matte_paint": "sRGB Encoded Rec.709 (sRGB)",
+    "data": "Raw", "default": "sRGB Encoded Rec.709 (sRGB)", "aces_interchange": "ACES2065-1",
+    "cie_xyz_d65_interchange": "CIE XYZ-D65 - Display-referred", "default_byte": "sRGB Encoded Rec.709 (sRGB)",
+    "default_float": "ACEScg", "default_sequencer": "sRGB Encoded Rec.709 (sRGB)",
+}
+#: The name of the display-referred reference space every config has.
+DISPLAY_REFERENCE = "CIE XYZ-D65 - Display-referred"
+
+OCIO_MIN_VERSION = (2, 1)
+
+
+def newest_ocio_version() -> tuple[int, int]:
+    """The newest config version the installed PyOpenColorIO writes."""
+    import PyOpenColorIO as ocio
+
+    major, minor = ocio.__version__.split(".")[:2]
+    return int(major), int(minor)
+
+
+def default_text() -> str:
+    """The embedded default spec, with its comments."""
+    return resources.files("generator.spec").joinpath("default.toml").read_text(encoding="utf-8")
+
+
+def load(path: str | Path | None = None) -> Spec:
+    """Read and validate the spec at ``path``, or the embedded default when None."""
+    if path is None:
+        return parse(default_text(), "<default>", Path.cwd())
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as error:
+        raise SpecError(str(path), "-", f"cannot read the spec: {error.strerror}") from None
+    return parse(text, str(path), path.parent)
+
+
+def parse(text: str, source: str, base: Path) -> Spec:
+    try:
+        raw = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as error:
+        raise SpecError(source, "-", f"not valid TOML: {error}") from None
+    _check_keys(raw, TOP_KEYS, source, "")
+    version = parse_version(raw.get("ocio_version", "2.1"), source)
+    cat = raw.get("chromatic_adaptation", "Bradford")
+    if cat not in CATS:
+        raise SpecError(source, "chromatic_adaptation", f"unknown {cat!r}; allowed: {', '.join(CATS)}")
+    spaces = _spaces(raw, source, base)
+    names = {n.lower() for s in spaces for n in s.all_names}
+    reference = _string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
+    if reference.lower() not in names:
+        raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
+    inactive = tuple(_name_list(raw.get("inactive", []), source, "inactive", names))
+    displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(raw.get("display", _default_displays())))
+    _unique([d.name for d in displays], source, "display")
+    return Spec(
+        name=_string(raw.get("name", "ocioforge"), source, "name"),
+        description=_string(raw.get("description", ""), source, "description"),
+        ocio_version=version,
+        scene_reference=reference,
+        chromatic_adaptation=cat,
+        colour_spaces=spaces,
+        displays=displays,
+        roles=_roles(raw.get("roles", {}), source, names | {DISPLAY_REFERENCE.lower()}),
+        file_rules=_file_rules(raw.get("file_rule", None), source),
+        inactive=inactive,
+        display_view_spaces=_bool(raw.get("display_view_spaces", False), source, "display_view_spaces"),
+        source=source,
+    )
+
+
+def _check_keys(table: dict, allowed, source: str, prefix: str) -> None:
+    if not isinstance(table, dict):
+        raise SpecError(source, prefix or "-", "expected a table")
+    for key in table:
+        if key not in allowed:
+            raise SpecError(source, f"{prefix}{key}", f"unknown key; allowed: {', '.join(allowed)}")
+
+
+def _string(value, source: str, field: str) -> str:
+    if not isinstance(value, str):
+        raise SpecError(source, field, f"expected a string, got {value!r}")
+    return value
+
+
+def _bool(value, source: str, field: str) -> bool:
+    if not isinstance(value, bool):
+        raise SpecError(source, field, f"expected true or false, got {value!r}")
+    return value
+
+
+def _strings(value, source: str, field: str) -> tuple[str, ...]:
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        raise SpecError(source, field, f"expected a list of strings, got {value!r}")
+    return tuple(value)
+
+
+def _unique(names, source: str, field: str) -> None:
+    seen = set()
+    for name in names:
+        if name.lower() in seen:
+            raise SpecError(source, field, f"{name!r} is defined twice")
+        seen.add(name.lower())
+
+
+def parse_version(value, source: str) -> tuple[int, int]:
+    newest = newest_ocio_version()
+    allowed = f"2.{OCIO_MIN_VERSION[1]} to {newest[0]}.{newest[1]}"
+    try:
+        major, minor = (int(part) for part in str(value).split("."))
+    except ValueError:
+        raise SpecError(source, "ocio_version", f"expected a version like \"2.1\"; allowed: {allowed}") from None
+    if not OCIO_MIN_VERSION <= (major, minor) <= newest:
+        raise SpecError(source, "ocio_version", f"{value} is not supported; allowed: {allowed}")
+    return (major, minor)
+
+
+def library_space(name: str, source: str, field: str) -> ColourSpace:
+    for space in library.SPACES:
+        if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
+            return from_library(space)
+    choices = [n for s in library.SPACES for n in (s.name, *s.aliases)]
+    raise SpecError(source, field, f"unknown colour space {name!r}{fields.suggest(name, choices)}; see ocioforge list")
+
+
+def from_library(space: library.SpaceDef) -> ColourSpace:
+    """The resolved record of a library colour space."""
+    from generator.colorimetry.curves import CURVES
+    from generator.colorimetry.gamuts import gamuts
+    from generator.colorimetry.transfer import Linear
+
+    special = space.curve.lower() if space.curve.startswith("ADX") else ""
+    return ColourSpace(
+        name=space.name, gamut=gamuts()[space.gamut] if space.gamut else None,
+        curve=Linear() if special else CURVES[space.curve], curve_name=space.curve, aliases=space.aliases,
+        family=space.family, encoding=space.encoding, description=space.description,
+        interop_id=space.interop_id, is_data=space.is_data, special=special,
+    )
+
+
+def _spaces(raw: dict, source: str, base: Path) -> tuple[ColourSpace, ...]:
+    names = raw.get("colour_spaces", ["*"])
+    if names == ["*"]:
+        spaces = [from_library(s) for s in library.SPACES]
+    else:
+        spaces = [library_space(n, source, f"colour_spaces[{i}]") for i, n in enumerate(_strings(names, source, "colour_spaces"))]
+    for i, table in enumerate(raw.get("custom_space", [])):
+        spaces.append(_custom_space(table, source, f"custom_space[{i}]", base))
+    _unique([n for s in spaces for n in s.all_names], source, "colour_spaces")
+    return tuple(spaces)
+
+
+def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut:
+    from generator.colorimetry.gamuts import gamuts
+
+    given = [k for k in ("gamut", "primaries", "primaries_spectra") if k in table]
+    if len(given) != 1:
+        raise SpecError(source, field, "give exactly one of 'gamut' (a library gamut), 'primaries' or 'primaries_spectra'")
+    if "gamut" in table:
+        key = _string(table["gamut"], source, f"{field}.gamut")
+        if key not in gamuts():
+            raise SpecError(source, f"{field}.gamut", f"unknown gamut {key!r}{fields.suggest(key, gamuts())}")
+        if "white" in table:
+            raise SpecError(source, f"{field}.white", "a library gamut brings its own white point")
+        return gamuts()[key]
+    if "white" not in table:
+        raise SpecError(source, f"{field}.white", "required with 'primaries' or 'primaries_spectra'")
+    white = fields.whitepoint(table["white"], base, source, f"{field}.white")
+    if "primaries" in table:
+        prims = fields.primaries(table["primaries"], source, f"{field}.primaries")
+    else:
+        prims = fields.spectral_primaries(table["primaries_spectra"], base, source, f"{field}.primaries_spectra")
+    return Gamut(name, prims, white, citation=f"custom, {source}")
+
+
+def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpace:
+    _check_keys(table, CUSTOM_SPACE_KEYS, source, f"{field}.")
+    name = _string(table.get("name", ""), source, f"{field}.name")
+    if not name:
+        raise SpecError(source, f"{field}.name", "required")
+    encoding = table.get("encoding", "scene-linear")
+    if encoding not in ENCODINGS:
+        raise SpecError(source, f"{field}.encoding", f"unknown {encoding!r}; allowed: {', '.join(ENCODINGS)}")
+    curve_name, curve = fields.transfer_function(table.get("transfer", "linear"), base, source, f"{field}.transfer")
+    return ColourSpace(
+        name=name, gamut=_gamut(table, source, field, base, name), curve=curve, curve_name=curve_name,
+        aliases=_strings(table.get("aliases", []), source, f"{field}.aliases"),
+        family=_string(table.get("family", "Custom"), source, f"{field}.family"), encoding=encoding,
+        description=_string(table.get("description", ""), source, f"{field}.description"),
+    )
+
+
+def _default_displays() -> list[dict]:
+    return [{"name": d.name} for d in library.DISPLAYS]
+
+
+def _display(table: dict, source: str, field: str, base: Path) -> Display:
+    from generator.colorimetry.curves import CURVES
+    from generator.colorimetry.gamuts import gamuts
+
+    _check_keys(table, DISPLAY_KEYS, source, f"{field}.")
+    name = _string(table.get("name", ""), source, f"{field}.name")
+    views = _strings(table.get("views", list(VIEWS)), source, f"{field}.views")
+    for i, view in enumerate(views):
+        if view not in VIEWS:
+            raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}; allowed: {', '.join(VIEWS)}")
+    known = {d.name.lower(): d for d in library.DISPLAYS}
+    custom = any(k in table for k in ("gamut", "primaries", "eotf"))
+    if name.lower() in known and not custom:
+        d = known[name.lower()]
+        return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
+    if not custom:
+        raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, known)}; "
+                        "a custom display needs 'gamut' or 'primaries' and 'eotf'")
+    eotf_name, eotf = fields.transfer_function(table.get("eotf", "sRGB"), base, source, f"{field}.eotf")
+    peak = fields.number(table.get("peak_luminance", 100.0), source, f"{field}.peak_luminance")
+    hdr = eotf_name in ("ST 2084", "HLG")
+    return Display(name, _gamut(table, source, field, base, name), eotf, eotf_name, views,
+                   _strings(table.get("aliases", []), source, f"{field}.aliases"), peak,
+                   "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"))
+
+
+def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
+    result = []
+    for i, name in enumerate(_strings(value, source, field)):
+        if name.lower() not in names:
+            raise SpecError(source, f"{field}[{i}]", f"{name!r} is not among the colour spaces")
+        result.append(name)
+    return result
+
+
+def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
+    if not isinstance(table, dict):
+        raise SpecError(source, "roles", "expected a table of role = colour space")
+    roles = {**DEFAULT_ROLES, **table}
+    for role, target in roles.items():
+        if not isinstance(target, str) or target.lower() not in names:
+            raise SpecError(source, f"roles.{role}", f"{target!r} is not among the colour spaces")
+    return tuple(sorted(roles.items()))
+
+
+def _file_rules(value, source: str) -> tuple[FileRule, ...]:
+    if value is None:
+        return (FileRule("OpenEXR", "scene_linear", "*", "exr"), FileRule("PNG", "texture_paint", "*", "png"), FileRule("JPEG", "texture_paint", "*", "jpg"),
+                FileRule("JPEG long", "texture_paint", "*", "jpeg"), FileRule("Default", "default"))
+    rules = []
+    for i, table in enumerate(value):
+        _check_keys(table, FILE_RULE_KEYS, source, f"file_rule[{i}].")
+        rules.append(FileRule(**{k: _string(v, source, f"file_rule[{i}].{k}") for k, v in table.items()}))
+    if not rules or rules[-1].name != "Default":
+        raise SpecError(source, "file_rule", "the last file rule must be named 'Default'")
+    return tuple(rules)

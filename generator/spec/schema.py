@@ -1,0 +1,107 @@
+"""The validated, typed, frozen description a spec resolves to.
+
+Nothing here builds OCIO objects or evaluates colour; these records are what
+the colorimetry, the emitter, the baker and the verifier all read.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from generator.colorimetry.matrices import Gamut
+from generator.colorimetry.transfer import TransferFunction
+
+
+class SpecError(ValueError):
+    """Bad input in a spec: names the file and the field, says what is allowed."""
+
+    def __init__(self, source: str, field: str, message: str):
+        super().__init__(f"{source}:{field}: {message}")
+        self.source, self.field, self.message = source, field, message
+
+
+@dataclass(frozen=True)
+class ColourSpace:
+    """A scene-referred colour space: decode with ``curve``, then ``gamut`` linear RGB.
+
+    ``special`` names an encoding that is not a per-channel curve and a gamut
+    (ADX10 / ADX16, whose decoding goes straight to ACES2065-1).
+    """
+
+    name: str
+    gamut: Gamut | None
+    curve: TransferFunction
+    curve_name: str
+    aliases: tuple[str, ...] = ()
+    family: str = ""
+    encoding: str = "scene-linear"
+    description: str = ""
+    interop_id: str = ""
+    is_data: bool = False
+    special: str = ""
+
+    @property
+    def all_names(self) -> tuple[str, ...]:
+        return (self.name, *self.aliases)
+
+
+@dataclass(frozen=True)
+class Display:
+    """A display: gamut, EOTF, peak luminance (cd/m²) and the views it offers."""
+
+    name: str
+    gamut: Gamut
+    eotf: TransferFunction
+    eotf_name: str
+    views: tuple[str, ...]
+    aliases: tuple[str, ...] = ()
+    peak: float = 100.0
+    encoding: str = "sdr-video"
+    description: str = ""
+
+    @property
+    def is_hdr(self) -> bool:
+        return self.encoding != "sdr-video"
+
+    @property
+    def clip_high(self) -> float:
+        """Largest display-linear value shown (1.0 = 100 cd/m²)."""
+        return self.peak / 100.0
+
+
+@dataclass(frozen=True)
+class FileRule:
+    name: str
+    colour_space: str
+    pattern: str = "*"
+    extension: str = "*"
+
+
+@dataclass(frozen=True)
+class Spec:
+    """A whole config description."""
+
+    name: str
+    description: str
+    ocio_version: tuple[int, int]
+    scene_reference: str
+    chromatic_adaptation: str
+    colour_spaces: tuple[ColourSpace, ...]
+    displays: tuple[Display, ...]
+    roles: tuple[tuple[str, str], ...]
+    file_rules: tuple[FileRule, ...]
+    inactive: tuple[str, ...] = ()
+    display_view_spaces: bool = False
+    source: str = "<default>"
+
+    def space(self, name: str) -> ColourSpace:
+        """The colour space called ``name`` or one of its aliases (case-insensitive)."""
+        key = name.lower()
+        for space in self.colour_spaces:
+            if key in (n.lower() for n in space.all_names):
+                return space
+        raise KeyError(name)
+
+    @property
+    def reference(self) -> ColourSpace:
+        return self.space(self.scene_reference)
