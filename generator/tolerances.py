@@ -15,11 +15,47 @@ ROUND_TRIP_RELATIVE = 1e-5
 #: A baked 1D LUT standing in for a curve OCIO cannot express for the target version.
 BAKED_CURVE_RELATIVE = 1e-4
 
-#: A derived matrix against the 4-to-10-decimal matrix its standard publishes.
-PUBLISHED_MATRIX_ABSOLUTE = 1e-4
+
+
+def published_rounding(decimals: int) -> float:
+    """Half a unit in the last place of a figure published with ``decimals`` decimals:
+    a derived value must round to the published one."""
+    return 0.5 * 10.0**-decimals + 1e-15
+
 
 #: Chromaticity derived from spectra against tabulated xy.
 SPECTRAL_XY_ABSOLUTE = 1e-4
 
 #: A transfer function against values printed in the vendor's paper.
 PUBLISHED_CURVE_ABSOLUTE = 1e-4
+
+#: Our float64 evaluation of a published formula against an independent float64
+#: implementation of the same formula with the same constants (colour-science).
+FORMULA_ABSOLUTE = 1e-9
+
+#: The CIE daylight-locus polynomial at a D illuminant's nominal CCT against the
+#: chromaticity of its tabulated SPD (the polynomial sits about 1.0e-4 higher in y
+#: for D50 to D75, from the rounding in CIE's D-series tables).
+DAYLIGHT_LOCUS_XY_ABSOLUTE = 2e-4
+
+#: Luminance a gamut mapping keeps (desaturation at constant Y), relative; float64 rounding only.
+GAMUT_LUMINANCE_RELATIVE = 1e-12
+
+#: Chromaticity a gamut mapping keeps (xy, or the spectral-locus point of the dominant wavelength).
+GAMUT_CHROMATICITY_ABSOLUTE = 1e-12
+
+#: Oklab lightness and hue (radians) the perceptual gamut mapping keeps.
+GAMUT_OKLAB_ABSOLUTE = 1e-9
+
+#: Oklab chroma below which a mapped colour's hue is not compared (hue is undefined at 0).
+GAMUT_HUE_MIN_CHROMA = 1e-3
+
+#: Decrease of output chroma tolerated along a ramp of increasing input chroma.
+GAMUT_MONOTONE_ABSOLUTE = 1e-12
+
+#: Distance of a channel from 0 or 1 for a colour mapped onto the display gamut boundary.
+GAMUT_BOUNDARY_ABSOLUTE = 1e-9
+
+#: The Reference Gamut Compression against OCIO's float32 fixed function, per channel,
+#: divided by max(1, largest |component|) (the RGC commutes with positive scaling).
+RGC_OCIO_SCALED = 1e-5

@@ -126,7 +126,7 @@ _CAMERAS = (
 
 _UTILITY = (
     SpaceDef("sRGB Encoded Rec.709 (sRGB)", "Rec.709", "sRGB",
-             ("srgb_encoded_rec709_srgb", "srgb_texture", "srgb_tx", "srgb_rec709_scene", "Utility - sRGB - Texture",
+             ("srgb_encoded_rec709_srgb", "srgb_texture", "srgb_tx", "sRGB", "srgb_rec709_scene", "Utility - sRGB - Texture",
               "Input - Generic - sRGB - Texture", "sRGB - Texture"),
              "Utility", "sdr-video", "sRGB piecewise encoding of Rec.709 primaries (IEC 61966-2-1)",
              "ocio:srgb_rec709_scene"),

@@ -1,0 +1,85 @@
+"""Derived matrices against the matrices their standards publish."""
+
+import numpy as np
+import pytest
+
+from generator.colorimetry.gamuts import gamuts
+from generator.colorimetry.matrices import adaptation_matrix, normalised_primary_matrix, rgb_to_rgb
+from generator.tolerances import published_rounding
+
+# (gamut, published RGB->XYZ, decimals, source)
+PUBLISHED_NPM = [
+    ("AP0", [[0.9525523959, 0.0, 0.0000936786], [0.3439664498, 0.7281660966, -0.0721325464],
+             [0.0, 0.0, 1.0088251844]], 10, "SMPTE ST 2065-1:2012, 4.1.2"),
+    ("AP1", [[0.6624541811, 0.1340042065, 0.1561876870], [0.2722287168, 0.6740817658, 0.0536895174],
+             [-0.0055746495, 0.0040607335, 1.0103391003]], 10, "Academy S-2014-004, 4.1.2"),
+    ("Rec.709", [[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]], 4,
+     "IEC 61966-2-1:1999, 5.2"),
+]
+
+
+@pytest.mark.parametrize("name, published, decimals, source", PUBLISHED_NPM, ids=[p[0] for p in PUBLISHED_NPM])
+def test_normalised_primary_matrix_matches_standard(name, published, decimals, source):
+    derived = gamuts()[name].rgb_to_xyz
+    assert np.abs(derived - np.array(published)).max() <= published_rounding(decimals), source
+
+
+def test_rec2020_luminance_row_matches_bt2020():
+    # ITU-R BT.2020-2, Table 4: Y'C = 0.2627 R + 0.6780 G + 0.0593 B.
+    row = gamuts()["Rec.2020"].rgb_to_xyz[1]
+    assert np.abs(row - [0.2627, 0.6780, 0.0593]).max() <= published_rounding(4)
+
+
+def test_ap0_to_ap1_matches_academy():
+    # Academy S-2014-004, 4.1.3 (same white: no adaptation involved).
+    published = [[1.4514393161, -0.2365107469, -0.2149285693], [-0.0765537734, 1.1762296998, -0.0996759264],
+                 [0.0083161484, -0.0060324498, 0.9977163014]]
+    derived = rgb_to_rgb(gamuts()["AP0"], gamuts()["AP1"])
+    assert np.abs(derived - published).max() <= published_rounding(10)
+
+
+def test_rec709_to_rec2020_matches_bt2087():
+    # ITU-R BT.2087-0, equation (4).
+    published = [[0.6274, 0.3293, 0.0433], [0.0691, 0.9195, 0.0114], [0.0164, 0.0880, 0.8956]]
+    derived = rgb_to_rgb(gamuts()["Rec.709"], gamuts()["Rec.2020"])
+    assert np.abs(derived - published).max() <= published_rounding(4)
+
+
+def test_bradford_d65_to_d50_matches_lindbloom():
+    # B. Lindbloom, "Chromatic Adaptation", Bradford D65 -> D50, with his whites
+    # D65 = (0.95047, 1, 1.08883), D50 = (0.96422, 1, 0.82521).
+    def xy(X, Z):
+        return (X / (X + 1 + Z), 1 / (X + 1 + Z))
+
+    published = [[1.0478112, 0.0228866, -0.0501270], [0.0295424, 0.9904844, -0.0170491],
+                 [-0.0092345, 0.0150436, 0.7521316]]
+    derived = adaptation_matrix(xy(0.95047, 1.08883), xy(0.96422, 0.82521), "Bradford")
+    assert np.abs(derived - published).max() <= published_rounding(7)
+
+
+def test_aces_to_rec709_bradford_matches_studio_config():
+    # The AP0 -> linear Rec.709 matrix of OCIO's ACES studio config (Bradford, D60 -> D65),
+    # printed there with 15 significant digits; ours must agree to float64 rounding of those digits.
+    published = [[2.52168618674388, -1.13413098823972, -0.387555198504164],
+                 [-0.276479914229922, 1.37271908766826, -0.096239173438334],
+                 [-0.0153780649660342, -0.152975335867399, 1.16835340083343]]
+    derived = rgb_to_rgb(gamuts()["AP0"], gamuts()["Rec.709"], "Bradford")
+    assert np.abs(derived - published).max() <= published_rounding(14)
+
+
+@pytest.mark.parametrize("cat", ["Bradford", "CAT02", "CAT16", "von Kries", "XYZ scaling"])
+def test_adaptation_maps_white_to_white(cat):
+    d65, d50 = (0.3127, 0.3290), (0.3457, 0.3585)
+    white = adaptation_matrix(d65, d50, cat) @ [d65[0] / d65[1], 1.0, (1 - sum(d65)) / d65[1]]
+    assert np.allclose(white, [d50[0] / d50[1], 1.0, (1 - sum(d50)) / d50[1]], rtol=0, atol=1e-12)
+
+
+def test_no_adaptation_is_identity_and_unknown_cat_is_refused():
+    assert np.array_equal(adaptation_matrix((0.3127, 0.329), (0.32168, 0.33767), "none"), np.eye(3))
+    with pytest.raises(ValueError, match="allowed"):
+        adaptation_matrix((0.3127, 0.329), (0.3457, 0.3585), "Sharp")
+
+
+def test_npm_maps_unit_rgb_to_white_with_unit_luminance():
+    m = normalised_primary_matrix(((0.64, 0.33), (0.3, 0.6), (0.15, 0.06)), (0.3127, 0.329))
+    assert np.allclose(m @ np.ones(3), [0.3127 / 0.329, 1.0, (1 - 0.3127 - 0.329) / 0.329], rtol=0, atol=1e-15)
