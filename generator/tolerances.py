@@ -9,8 +9,22 @@ RELATIVE_FLOOR = 0.1
 #: An analytic OCIO path against the float64 reference evaluation.
 ANALYTIC_RELATIVE = 1e-4
 
+#: An analytic HDR display path against the reference, in ΔE ITP (ITU-R BT.2124),
+#: where 1 is about one just-noticeable difference: a hundredth of one.
+ANALYTIC_DELTA_E_ITP = 0.01
+
+#: Display luminance (cd/m²) below which OCIO's HLG display builtin departs from
+#: BT.2100: it replaces the inverse OOTF's infinite slope at black with a straight
+#: line (measured: equal to 1e-7 at 0.1 cd/m², ΔE ITP 1.8 at 0.001 cd/m²).
+HLG_BUILTIN_BLACK = 0.1
+
 #: A colour space to the reference and back through OCIO.
 ROUND_TRIP_RELATIVE = 1e-5
+
+#: Relative precision of a float32 value (unit roundoff, 2**-24): the images OCIO
+#: processes carry no more, so a round trip through float32 linear values cannot
+#: resolve code values closer than this divided by the curve's slope.
+FLOAT32_UNIT_ROUNDOFF = 2.0**-24
 
 #: A baked 1D LUT standing in for a curve OCIO cannot express for the target version.
 BAKED_CURVE_RELATIVE = 1e-4
@@ -64,3 +78,8 @@ GAMUT_BOUNDARY_ABSOLUTE = 1e-9
 #: The Reference Gamut Compression against OCIO's float32 fixed function, per channel,
 #: divided by max(1, largest |component|) (the RGC commutes with positive scaling).
 RGC_OCIO_SCALED = 1e-5
+
+#: Decrease of Oklab output chroma tolerated along a ramp of increasing chroma at constant
+#: L and hue built through linear RGB: where a cone response nears 0, its cube root turns
+#: float64 rounding of the RGB into hue errors near 1e-8 rad (measured drop: 2.5e-9).
+GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE = 1e-8

@@ -9,7 +9,6 @@ def _lines(space, spec) -> list[str]:
     import numpy as np
 
     from generator.colorimetry import reference
-    from generator.ocio.capabilities import curve_chain
     from generator.spec.load import newest_ocio_version
 
     out = [f"name:      {space.name}", f"aliases:   {', '.join(space.aliases)}",
@@ -26,24 +25,24 @@ def _lines(space, spec) -> list[str]:
         out += ["  " + " ".join(f"{v: .10f}" for v in row) for row in reference.space_matrix(spec, space)]
     newest = newest_ocio_version()
     for minor in range(1, newest[1] + 1):
-        how = _expression(space, (2, minor), curve_chain)
+        how = _expression(space, (2, minor))
         out.append(f"OCIO 2.{minor}: {how}")
     return out
 
 
-def _expression(space, version, curve_chain) -> str:
+def _expression(space, version) -> str:
     from generator.colorimetry import transfer
+    from generator.ocio.curves import is_baked
 
     if space.is_data:
         return "data (no transform)"
     if space.special:
-        return "BuiltinTransform"
-    curve = space.curve
-    if isinstance(curve, (transfer.Linear, transfer.Power, transfer.PiecewisePower, transfer.LogCamera)):
-        return f"analytic ({type(curve).__name__})"
-    if isinstance(curve, transfer.Function) and curve_chain(space.curve_name, version):
         return "analytic (BuiltinTransform)"
-    return "baked 1D LUT"
+    if is_baked(space.curve_name, space.curve, version):
+        return "baked 1D LUT"
+    if isinstance(space.curve, transfer.Function):
+        return "analytic (BuiltinTransform)"
+    return f"analytic ({type(space.curve).__name__})"
 
 
 @click.command(help="Describe a library colour space: gamut, white, curve, matrix, how OCIO expresses it.")

@@ -14,15 +14,18 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import tolerances
+from generator.verify.metrics import relative_error
 
 MIN_SIZE = 1024
 MAX_SIZE = 1 << 17
 
 
 #: Shaper exponents tried in turn: the LUT is indexed by u = t ** (1 / k), t the code
-#: normalised to [0, 1] over the domain, which unfolds a square-root singularity at
-#: the domain's start (Apple Log's and Mi-Log's quadratic toe decode as a square root).
-SHAPER_EXPONENTS = (1, 2)
+#: normalised to [0, 1] over the domain. k = 2 unfolds a square-root singularity at the
+#: domain's start (Apple Log's and Mi-Log's quadratic toes decode as a square root);
+#: k = 1/3 makes a cubic toe linear in u, so the LUT's inverse stays exact where the
+#: curve is flat (N-Log's cube-root encoding).
+SHAPER_EXPONENTS = (1.0, 2.0, 1.0 / 3.0)
 
 
 @dataclass(frozen=True)
@@ -31,7 +34,7 @@ class BakedCurve:
 
     filename: str
     domain: tuple[float, float]
-    shaper: int
+    shaper: float
     values: tuple[float, ...]
     max_relative_error: float
 
@@ -40,20 +43,18 @@ class BakedCurve:
 class _Shaped:
     curve: object
     domain: tuple[float, float]
-    shaper: int
+    shaper: float
+
+    def code(self, u):
+        lo, hi = self.domain
+        return lo + (hi - lo) * np.asarray(u, dtype=np.float64) ** self.shaper
 
     def decode(self, u):
-        lo, hi = self.domain
-        return self.curve.decode(lo + (hi - lo) * np.asarray(u, dtype=np.float64) ** self.shaper)
+        return self.curve.decode(self.code(u))
 
 
 def slug(name: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
-
-
-def relative_error(actual, expected) -> np.ndarray:
-    expected = np.asarray(expected, dtype=np.float64)
-    return np.abs(np.asarray(actual, dtype=np.float64) - expected) / np.maximum(np.abs(expected), tolerances.RELATIVE_FLOOR)
 
 
 def interpolation_error(curve, domain, size: int, jumps=()) -> float:
@@ -62,22 +63,36 @@ def interpolation_error(curve, domain, size: int, jumps=()) -> float:
     Intervals holding one of ``jumps`` (the curve's own published discontinuities,
     where no interpolation can do better than half the jump) are left out.
     """
+    return _lut_errors(curve, domain, size, jumps)[0]
+
+
+def _lut_errors(curve, domain, size: int, jumps=()) -> tuple[float, float]:
+    """(decode, encode) worst relative errors of a LUT of ``size`` nodes over ``domain``.
+
+    Decoding interpolates between nodes; encoding inverts that interpolation, so a
+    value interpolated at a fraction t of an interval maps back exactly to the
+    input at t: its error is that input against the curve's own encoding (in
+    code values when ``curve`` is a shaped curve).
+    """
     nodes = np.linspace(domain[0], domain[1], size)
     values = curve.decode(nodes)
     keep = np.ones(size - 1, dtype=bool)
     for jump in jumps:
         keep &= ~((nodes[:-1] <= jump) & (jump <= nodes[1:]))
-    worst = 0.0
+    worst = [0.0, 0.0]
     for t in (0.25, 0.5, 0.75):
         x = nodes[:-1] + t * np.diff(nodes)
         interpolated = values[:-1] + t * np.diff(values)
-        worst = max(worst, float(np.max(relative_error(interpolated, curve.decode(x))[keep])))
-    return worst
+        worst[0] = max(worst[0], float(np.max(relative_error(interpolated, curve.decode(x))[keep])))
+        if isinstance(curve, _Shaped):
+            inverse = relative_error(curve.code(x), curve.curve.encode(interpolated))
+            worst[1] = max(worst[1], float(np.max(inverse[keep])))
+    return worst[0], worst[1]
 
 
 def _smallest(curve, jumps) -> tuple[int, float]:
     size = MIN_SIZE
-    while (error := interpolation_error(curve, (0.0, 1.0), size + 1, jumps)) > tolerances.BAKED_CURVE_RELATIVE / 2:
+    while (error := max(_lut_errors(curve, (0.0, 1.0), size + 1, jumps))) > tolerances.BAKED_CURVE_RELATIVE / 2:
         if size >= MAX_SIZE:
             break
         size *= 2
@@ -85,18 +100,15 @@ def _smallest(curve, jumps) -> tuple[int, float]:
 
 
 def bake_curve(name: str, curve, domain) -> BakedCurve:
-    """Bake ``curve.decode`` over ``domain`` (code values) into the smallest LUT within bound,
-    trying each shaper in turn."""
+    """Bake ``curve.decode`` over ``domain`` (code values) into the smallest LUT whose
+    decoding and inverse both stay within bound, over the shapers of SHAPER_EXPONENTS."""
     lo, hi = (float(v) for v in domain)
     jumps = tuple((j - lo) / (hi - lo) for j in getattr(curve, "discontinuities", ()))
-    best = None
+    candidates = []
     for k in SHAPER_EXPONENTS:
         shaped = _Shaped(curve, (lo, hi), k)
         size, error = _smallest(shaped, tuple(j ** (1.0 / k) for j in jumps))
-        if best is None or (error, size) < (best[2], best[1]):
-            best = (k, size, error, shaped)
-        if error <= tolerances.BAKED_CURVE_RELATIVE / 2:
-            break
-    k, size, error, shaped = best
+        candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, size, error, SHAPER_EXPONENTS.index(k), shaped))
+    _, size, error, _, shaped = min(candidates, key=lambda c: c[:4])
     values = shaped.decode(np.linspace(0.0, 1.0, size + 1)).astype(np.float32).astype(np.float64)
-    return BakedCurve(f"{slug(name)}_to_linear.spi1d", (lo, hi), k, tuple(values), error)
+    return BakedCurve(f"{slug(name)}_to_linear.spi1d", (lo, hi), shaped.shaper, tuple(values), error)

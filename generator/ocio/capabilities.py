@@ -13,7 +13,6 @@ BUILTIN_MIN_VERSION = {
     "CURVE - CANON_CLOG2_to_LINEAR": (2, 2),
     "CURVE - CANON_CLOG3_to_LINEAR": (2, 2),
     "CURVE - APPLE_LOG_to_LINEAR": (2, 4),
-    "CURVE - HLG-OETF-INVERSE": (2, 4),
 }
 
 #: Curves with no LogCamera form, and the builtin chain (decode direction:
@@ -21,13 +20,13 @@ BUILTIN_MIN_VERSION = {
 #: (style, inverse?) pairs. Curves absent here, or whose chain the target
 #: version lacks, are baked into a 1D LUT. (ACEScc is baked: OCIO's
 #: ACEScc_to_ACES2065-1 clamps negative ACES2065-1 values, so it is not the
-#: curve and a matrix.)
+#: curve and a matrix. The HLG scene curve is baked too: OCIO's
+#: CURVE - HLG-OETF-INVERSE returns three times BT.2100's scene light E.)
 CURVE_BUILTINS = {
     "ST 2084": (("CURVE - ST-2084_to_LINEAR", False),),
     "Canon Log 2": (("CURVE - CANON_CLOG2_to_LINEAR", False),),
     "Canon Log 3": (("CURVE - CANON_CLOG3_to_LINEAR", False),),
     "Apple Log": (("CURVE - APPLE_LOG_to_LINEAR", False),),
-    "HLG": (("CURVE - HLG-OETF-INVERSE", False),),
 }
 
 #: Whole-space builtins: encodings that are not a per-channel curve and a gamut.

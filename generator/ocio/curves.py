@@ -49,6 +49,13 @@ def _baked(name: str, curve, bakes: dict[str, BakedCurve]) -> list:
     return steps
 
 
+def is_baked(name: str, curve, version: tuple[int, int]) -> bool:
+    """Whether ``curve`` is expressed as a baked 1D LUT at ``version``."""
+    if isinstance(curve, transfer.Tabulated):
+        return True
+    return isinstance(curve, transfer.Function) and curve_chain(name, version) is None
+
+
 def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[str, BakedCurve]) -> list:
     """OCIO transforms taking code values of ``curve`` to linear."""
     if isinstance(curve, transfer.Linear):
@@ -59,10 +66,9 @@ def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[st
         return [ocio.ExponentWithLinearTransform(gamma=[curve.gamma] * 3 + [1.0], offset=[curve.offset] * 3 + [0.0])]
     if isinstance(curve, transfer.LogCamera):
         return [_log(curve)]
-    chain = curve_chain(name, version) if isinstance(curve, transfer.Function) else None
-    if chain:
-        return [ocio.BuiltinTransform(style, INVERSE if inverse else FORWARD) for style, inverse in chain]
-    return _baked(name, curve, bakes)
+    if is_baked(name, curve, version):
+        return _baked(name, curve, bakes)
+    return [ocio.BuiltinTransform(style, INVERSE if inverse else FORWARD) for style, inverse in curve_chain(name, version)]
 
 
 def group(transforms: list, direction=FORWARD) -> ocio.Transform | None:

@@ -65,8 +65,6 @@ def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace
         SCENE, name=space.name, aliases=list(space.aliases), family=space.family, encoding=space.encoding,
         description=space.description, isData=space.is_data, categories=CATEGORIES.get(space.encoding, ["file-io"]),
     )
-    if space.interop_id and spec.ocio_version >= (2, 5):
-        cs.setInteropID(space.interop_id)
     transform = curves.group(_to_reference(spec, space, bakes))
     if transform is not None:
         cs.setTransform(transform, ocio.COLORSPACE_DIR_TO_REFERENCE)

@@ -165,7 +165,7 @@ def from_library(space: library.SpaceDef) -> ColourSpace:
         name=space.name, gamut=gamuts()[space.gamut] if space.gamut else None,
         curve=Linear() if special else CURVES[space.curve], curve_name=space.curve, aliases=space.aliases,
         family=space.family, encoding=space.encoding, description=space.description,
-        interop_id=space.interop_id, is_data=space.is_data, special=special,
+        is_data=space.is_data, special=special,
     )
 
 

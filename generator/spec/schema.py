@@ -36,7 +36,6 @@ class ColourSpace:
     family: str = ""
     encoding: str = "scene-linear"
     description: str = ""
-    interop_id: str = ""
     is_data: bool = False
     special: str = ""
 

@@ -1,0 +1,39 @@
+"""Error metrics, each named once: relative (value or colour), and ΔE ITP for HDR."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from generator import tolerances
+
+
+def relative_error(actual, expected) -> np.ndarray:
+    expected = np.asarray(expected, dtype=np.float64)
+    return np.abs(np.asarray(actual, dtype=np.float64) - expected) / np.maximum(np.abs(expected), tolerances.RELATIVE_FLOOR)
+
+
+def colour_relative_error(actual, expected) -> np.ndarray:
+    """Error of each colour (..., 3) relative to its largest component (floored): float32
+    keeps 24 bits of the largest value of a triplet, so a channel far smaller than its
+    neighbours cannot be held to a tighter relative bound after a matrix."""
+    expected = np.asarray(expected, dtype=np.float64)
+    scale = np.maximum(np.max(np.abs(expected), axis=-1, keepdims=True), tolerances.RELATIVE_FLOOR)
+    return np.max(np.abs(np.asarray(actual, dtype=np.float64) - expected) / scale, axis=-1)
+
+
+def delta_e_itp(display, code_a, code_b) -> np.ndarray:
+    """ΔE ITP (ITU-R BT.2124) between two sets of a display's code values.
+
+    Both are decoded with the display's EOTF to light in cd/m², taken to BT.2020
+    linear RGB through CIE XYZ, then to ICtCp (ITU-R BT.2100, PQ).
+    """
+    import colour
+
+    from generator.colorimetry import reference
+    from generator.colorimetry.gamuts import gamuts
+    from generator.colorimetry.matrices import rgb_to_rgb
+
+    to_2020 = rgb_to_rgb(display.gamut, gamuts()["Rec.2020"], "none")
+    ictcp = [colour.RGB_to_ICtCp(np.einsum("ij,...j->...i", to_2020, reference.display_decode(display, code) * 100.0))
+             for code in (code_a, code_b)]
+    return np.asarray(colour.delta_E(ictcp[0], ictcp[1], method="ITP"), dtype=np.float64)
