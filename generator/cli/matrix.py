@@ -23,6 +23,13 @@ def _ocio_snippet(matrix) -> str:
                 if "MatrixTransform" in line)
 
 
+def _node_name(space) -> str:
+    """The space's first alias usable as a node name (letters, digits, underscores)."""
+    from generator.luts.curve1d import slug
+
+    return next((a for a in space.aliases if a.replace("_", "").isalnum()), slug(space.name))
+
+
 def render(matrix, fmt: str, label: str) -> str:
     rows = [[float(v) for v in row] for row in matrix]
     if fmt == "json":
@@ -53,5 +60,5 @@ def command(src, dst, cat, fmt):
         if space.gamut is None:
             raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
     matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat)
-    label = f"{spaces[0].aliases[0] if spaces[0].aliases else 'src'}_to_{spaces[1].aliases[0] if spaces[1].aliases else 'dst'}"
+    label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
     click.echo(render(matrix, fmt, label))

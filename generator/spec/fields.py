@@ -28,7 +28,8 @@ _OPTIONAL = {"lin_side_break", "linear_slope"}
 def suggest(name: str, choices) -> str:
     """' (did you mean …?)' for close matches of ``name`` among ``choices``, or ''."""
     lowered = {c.lower(): c for c in choices}
-    close = difflib.get_close_matches(name.lower(), list(lowered), n=3, cutoff=0.6)
+    key = name.lower()
+    close = [c for c in lowered if c.startswith(key)][:3] or difflib.get_close_matches(key, list(lowered), n=3, cutoff=0.6)
     return f" (did you mean {', '.join(repr(lowered[c]) for c in close)}?)" if close else ""
 
 
@@ -38,12 +39,14 @@ def number(value, source: str, field: str) -> float:
     return float(value)
 
 
-def xy_pair(value, source: str, field: str) -> tuple[float, float]:
+def xy_pair(value, source: str, field: str, white: bool = False) -> tuple[float, float]:
+    """A chromaticity [x, y]: a white needs y > 0; a primary may be imaginary (y < 0) but not y = 0."""
     if not isinstance(value, list) or len(value) != 2:
         raise SpecError(source, field, f"expected a chromaticity [x, y], got {value!r}")
     x, y = (number(v, source, field) for v in value)
-    if not (0.0 < y and -1.0 < x < 2.0 and y < 2.0):
-        raise SpecError(source, field, f"chromaticity {value!r} is not plausible: need y > 0")
+    if (white and y <= 0.0) or y == 0.0 or not (-1.0 < x < 2.0 and -1.0 < y < 2.0):
+        need = "0 < y < 2" if white else "-1 < y < 2, y != 0"
+        raise SpecError(source, field, f"chromaticity {value!r} is not plausible: need -1 < x < 2 and {need}")
     return (x, y)
 
 
@@ -74,7 +77,7 @@ def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float
     from generator.colorimetry import spectral
 
     if isinstance(value, list):
-        return xy_pair(value, source, field)
+        return xy_pair(value, source, field, white=True)
     if isinstance(value, (int, float)) and not isinstance(value, bool):
         cct = number(value, source, field)
         if not 1667.0 <= cct <= 25000.0:

@@ -241,7 +241,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
         d = known[name.lower()]
         return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
-        raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, known)}; "
+        raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
                         "a custom display needs 'gamut' or 'primaries' and 'eotf'")
     eotf_name, eotf = fields.transfer_function(table.get("eotf", "sRGB"), base, source, f"{field}.eotf")
     peak = fields.number(table.get("peak_luminance", 100.0), source, f"{field}.peak_luminance")

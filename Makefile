@@ -1,0 +1,26 @@
+# ocioforge: `make run` builds everything from a fresh clone; `make test` runs the suite.
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMP := $(VENV)/.installed-stamp
+CONFIG := configs/ocioforge-studio
+
+.PHONY: run test bench clean
+
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install --quiet --upgrade pip
+	$(BIN)/pip install --quiet -e '.[test]'
+	touch $(STAMP)
+
+run: $(STAMP)
+	$(BIN)/ocioforge build -o $(CONFIG) --force
+
+test: $(STAMP)
+	$(BIN)/pytest -n 2 -p no:warnings
+
+bench: $(STAMP)
+	$(BIN)/python bench/build.py
+
+clean:
+	rm -rf $(VENV) .pytest_cache

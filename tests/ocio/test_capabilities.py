@@ -1,0 +1,39 @@
+"""The capability table against OpenColorIO's own refusal of newer styles in older profiles."""
+
+import PyOpenColorIO as ocio
+import pytest
+
+from generator.ocio.capabilities import BUILTIN_MIN_VERSION, CURVE_BUILTINS, SPACE_BUILTINS, curve_chain
+from tests.conftest import VERSIONS
+
+
+def accepts(style: str, version) -> bool:
+    cfg = ocio.Config()
+    cfg.setMajorVersion(version[0])
+    cfg.setMinorVersion(version[1])
+    space = ocio.ColorSpace(name="probe")
+    space.setTransform(ocio.BuiltinTransform(style), ocio.COLORSPACE_DIR_TO_REFERENCE)
+    cfg.addColorSpace(space)
+    try:
+        cfg.serialize()
+    except ocio.Exception:
+        return False
+    return True
+
+
+@pytest.mark.parametrize("style", sorted(BUILTIN_MIN_VERSION))
+def test_min_versions_match_what_ocio_accepts(style):
+    for version in VERSIONS:
+        assert accepts(style, version) == (version >= BUILTIN_MIN_VERSION[style]), (style, version)
+
+
+def test_every_style_used_is_in_the_table():
+    used = {s for chain in CURVE_BUILTINS.values() for s, _ in chain} | set(SPACE_BUILTINS.values())
+    assert used <= set(BUILTIN_MIN_VERSION)
+
+
+def test_curves_without_builtins_at_a_version_are_baked():
+    assert curve_chain("Canon Log 3", (2, 1)) is None
+    assert curve_chain("Canon Log 3", (2, 2)) is not None
+    assert curve_chain("Apple Log", (2, 3)) is None
+    assert curve_chain("Apple Log", (2, 4)) is not None

@@ -1,0 +1,124 @@
+"""The spec: strict parsing, custom spaces of every family, clear errors, the resolved JSON."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from generator.colorimetry import reference, transfer
+from generator.spec import load, resolved
+from generator.spec.schema import SpecError
+
+
+def parse(text: str, base: Path = Path(".")):
+    return load.parse(text, "show.toml", base)
+
+
+def test_default_spec_loads_every_library_space_and_display(default_spec):
+    from generator.colorimetry import library
+
+    assert len(default_spec.colour_spaces) == len(library.SPACES)
+    assert [d.name for d in default_spec.displays] == [d.name for d in library.DISPLAYS]
+    assert default_spec.ocio_version == (2, 1)
+    assert default_spec.reference.name == "ACES2065-1"
+
+
+@pytest.mark.parametrize("text, field, words", [
+    ("colour_space = ['ACEScg']", "colour_space", "allowed: name"),
+    ("colour_spaces = ['ACEScgg']", "colour_spaces[0]", "did you mean 'ACEScg'"),
+    ("ocio_version = '1.3'", "ocio_version", "allowed: 2.1 to"),
+    ("ocio_version = 'two'", "ocio_version", "allowed"),
+    ("chromatic_adaptation = 'Sharp'", "chromatic_adaptation", "allowed: Bradford"),
+    ("scene_reference = 'Nope'", "scene_reference", "not among"),
+    ("[roles]\nscene_linear = 'Nope'", "roles.scene_linear", "not among"),
+    ("[[display]]\nname = 'sRGB'", "display[0].name", "did you mean 'sRGB - Display'"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['Filmic']", "display[0].views[0]", "allowed: Colorimetric"),
+    ("[[custom_space]]\nname = 'x'\nprimaries = [[0.7, 0.3], [0.2, 0.7]]\nwhite = 'D65'", "custom_space[0].primaries",
+     "three chromaticities"),
+    ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = 'S-Log9'", "custom_space[0].transfer",
+     "did you mean 'S-Log3'"),
+    ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = {family = 'cubic'}", "custom_space[0].transfer.family",
+     "allowed: linear, gamma"),
+    ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = {family = 'gamma', exponent = 2.2, offset = 1}",
+     "custom_space[0].transfer.offset", "allowed: exponent"),
+    ("[[custom_space]]\nname = 'x'\nprimaries = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]]\nwhite = 'D66'",
+     "custom_space[0].white", "did you mean"),
+    ("[[custom_space]]\nname = 'ACEScg'\ngamut = 'Rec.709'", "colour_spaces", "defined twice"),
+    ("name = = 1", "-", "not valid TOML"),
+])
+def test_bad_specs_name_the_field_and_what_is_allowed(text, field, words):
+    with pytest.raises(SpecError) as error:
+        parse(text)
+    assert error.value.field == field
+    assert words in error.value.message
+    assert "\n" not in str(error.value)
+
+
+def test_custom_spaces_of_every_family(tmp_path):
+    (tmp_path / "curve.csv").write_text("code,linear\n0,0\n0.5,0.2\n1,1\n")
+    text = """
+colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw",
+                 "CIE XYZ-D65 - Scene-referred"]
+[[custom_space]]
+name = "Gamma"
+gamut = "Rec.2020"
+transfer = { family = "gamma", exponent = 2.6 }
+[[custom_space]]
+name = "Piecewise"
+primaries = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]]
+white = 6504
+transfer = { family = "piecewise_gamma", gamma = 2.4, offset = 0.055 }
+[[custom_space]]
+name = "Log"
+primaries = [[0.73, 0.28], [0.14, 0.86], [0.10, -0.03]]
+white = [0.3127, 0.329]
+encoding = "log"
+transfer = { family = "log_camera", base = 10, log_side_slope = 0.25, log_side_offset = 0.4, lin_side_slope = 5.0, lin_side_offset = 0.05, lin_side_break = 0.01 }
+[[custom_space]]
+name = "Table"
+gamut = "P3-D65"
+transfer = { family = "tabulated", file = "curve.csv" }
+"""
+    spec = parse(text, tmp_path)
+    assert isinstance(spec.space("Gamma").curve, transfer.Power)
+    assert isinstance(spec.space("Piecewise").curve, transfer.PiecewisePower)
+    assert isinstance(spec.space("Log").curve, transfer.LogCamera)
+    assert spec.space("Table").curve.decode(np.array(0.5)) == pytest.approx(0.2)
+    # A CCT of 6504 K gives the daylight locus near D65.
+    assert np.allclose(spec.space("Piecewise").gamut.whitepoint, (0.3127, 0.329), atol=2e-4)
+
+
+def test_white_and_primaries_from_spectra(tmp_path):
+    import colour
+
+    wl = np.arange(380, 781, 1)
+    d65 = colour.SDS_ILLUMINANTS["D65"]
+    (tmp_path / "d65.csv").write_text("".join(f"{w},{d65[w]}\n" for w in wl))
+    rows = [(w, float(w == 610), float(w == 540), float(w == 465)) for w in wl]
+    (tmp_path / "leds.csv").write_text("".join(f"{w},{r},{g},{b}\n" for w, r, g, b in rows))
+    spec = parse('colour_spaces = ["ACES2065-1", "Raw", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)"]\n'
+                 '[[custom_space]]\nname = "LED wall"\nprimaries_spectra = "leds.csv"\nwhite = "d65.csv"\n', tmp_path)
+    gamut = spec.space("LED wall").gamut
+    assert np.allclose(gamut.whitepoint, (0.3127, 0.3290), atol=2e-4)
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"]
+    red = colour.XYZ_to_xy(cmfs[610])
+    assert np.allclose(gamut.primaries[0], red, atol=1e-6)
+
+
+def test_missing_file_is_a_spec_error(tmp_path):
+    with pytest.raises(SpecError, match="does not exist"):
+        parse("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = {family = 'tabulated', file = 'no.csv'}",
+              tmp_path)
+
+
+def test_resolved_spec_round_trips_and_evaluates_identically(default_spec):
+    again = resolved.loads(resolved.dumps(default_spec))
+    assert resolved.dumps(again) == resolved.dumps(default_spec)
+    codes = np.linspace(0, 1, 11)[:, None] * [1, 1, 1]
+    for space in (s for s in default_spec.colour_spaces if not s.is_data):
+        assert np.array_equal(reference.to_reference(default_spec, space, codes),
+                              reference.to_reference(again, again.space(space.name), codes)), space.name
+
+
+def test_embedded_default_is_the_documented_file():
+    assert load.parse(load.default_text(), "<default>", Path(".")) == load.load()
