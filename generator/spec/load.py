@@ -13,6 +13,7 @@ from pathlib import Path
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.spec import fields
+from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
 TOP_KEYS = ("name", "description", "ocio_version", "scene_reference", "chromatic_adaptation", "colour_spaces",
@@ -244,8 +245,13 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
         raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
                         "a custom display needs 'gamut' or 'primaries' and 'eotf'")
     eotf_name, eotf = fields.transfer_function(table.get("eotf", "sRGB"), base, source, f"{field}.eotf")
-    peak = fields.number(table.get("peak_luminance", 100.0), source, f"{field}.peak_luminance")
     hdr = eotf_name in ("ST 2084", "HLG")
+    peak = fields.number(table.get("peak_luminance", 1000.0 if hdr else 100.0), source, f"{field}.peak_luminance")
+    if eotf_name == "HLG" and peak != HLG_DISPLAY_PEAK:
+        raise SpecError(source, f"{field}.peak_luminance", f"HLG displays are built for {HLG_DISPLAY_PEAK:g} cd/m²")
+    if not (hdr and 100.0 <= peak <= 10000.0) and not (not hdr and peak == 100.0):
+        raise SpecError(source, f"{field}.peak_luminance",
+                        "allowed: 100 to 10000 cd/m² for ST 2084 displays, 100 for SDR (1.0 = 100 cd/m²)")
     return Display(name, _gamut(table, source, field, base, name), eotf, eotf_name, views,
                    _strings(table.get("aliases", []), source, f"{field}.aliases"), peak,
                    "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"))

@@ -1,0 +1,114 @@
+"""The CLI through its entry point: in-process for speed, one subprocess for start-up."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from generator.cli import main
+
+
+def run(capsys, *argv):
+    try:
+        main(list(argv))
+        code = 0
+    except SystemExit as exit_:
+        code = exit_.code
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_help_starts_without_heavy_imports():
+    probe = ("import sys\nfrom generator.cli import main\n"
+             "try:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
+             "print(sorted(m for m in ('colour', 'scipy', 'matplotlib', 'PyOpenColorIO', 'OpenImageIO') if m in sys.modules))")
+    result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=60)
+    assert "Commands" in result.stdout or "build" in result.stdout
+    assert result.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_console_script_runs():
+    result = subprocess.run([sys.executable, "-m", "generator", "--version"], capture_output=True, text=True,
+                            timeout=60)
+    assert result.returncode == 0 and "ocioforge" in result.stdout
+
+
+def test_build_writes_a_named_config_and_refuses_to_overwrite(tmp_path, capsys):
+    out = tmp_path / "my-show"
+    code, stdout, _ = run(capsys, "build", "-o", str(out), "--ocio-version", "2.3")
+    assert code == 0 and "OCIO 2.3" in stdout
+    import PyOpenColorIO as ocio
+
+    cfg = ocio.Config.CreateFromFile(str(out / "config.ocio"))
+    assert cfg.getName() == "my-show" and cfg.getMinorVersion() == 3
+    before = sorted(p.name for p in out.iterdir())
+    code, _, err = run(capsys, "build", "-o", str(out))
+    assert code == 2 and err.count("\n") == 1 and "--force" in err
+    assert sorted(p.name for p in out.iterdir()) == before
+    assert run(capsys, "build", "-o", str(out), "--force")[0] == 0
+
+
+def test_bad_spec_gives_one_line_exit_2_and_writes_nothing(tmp_path, capsys):
+    spec = tmp_path / "bad.toml"
+    spec.write_text('colour_spaces = ["ACEScg", "Linear Rec.709 (sRGB)", "S-Log3 S-Gamut9"]\n')
+    code, _, err = run(capsys, "build", str(spec), "-o", str(tmp_path / "out"))
+    assert code == 2
+    assert err.startswith("error: ") and err.count("\n") == 1
+    assert "bad.toml:colour_spaces[2]" in err and "S-Log3 S-Gamut3" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
+
+
+@pytest.mark.parametrize("argv, words", [
+    (("build", "--ocio-version", "1.9"), "allowed: 2.1 to"),
+    (("build", "nowhere.toml"), "cannot read"),
+    (("matrix", "acescg", "lin_rec709", "--cat", "Sharp"), "allowed: Bradford"),
+    (("matrix", "acescg", "raw"), "no RGB primaries"),
+    (("info", "nothing_like_this"), "unknown colour space"),
+    (("matrix", "acescg"), "Missing argument"),
+])
+def test_bad_arguments_exit_2_with_one_line(tmp_path, capsys, monkeypatch, argv, words):
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.startswith("error: ") and err.count("\n") == 1 and words in err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_init_writes_the_default_spec_that_builds(tmp_path, capsys):
+    path = tmp_path / "my-show.toml"
+    assert run(capsys, "init", str(path))[0] == 0
+    assert path.read_text().startswith("# ocioforge spec")
+    assert run(capsys, "init", str(path))[0] == 2
+    assert run(capsys, "build", str(path), "-o", str(tmp_path / "cfg"))[0] == 0
+
+
+def test_matrix_formats_agree(capsys):
+    from generator.colorimetry.gamuts import gamuts
+    from generator.colorimetry.matrices import rgb_to_rgb
+
+    expected = rgb_to_rgb(gamuts()["AP1"], gamuts()["Rec.709"], "Bradford")
+    code, out, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--format", "json")
+    assert code == 0 and np.allclose(json.loads(out)["matrix"], expected, rtol=0, atol=1e-15)
+    _, plain, _ = run(capsys, "matrix", "ACEScg", "Linear Rec.709 (sRGB)")
+    assert np.allclose(np.array(plain.split(), dtype=float).reshape(3, 3), expected, atol=1e-10)
+    _, nuke, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--format", "nuke")
+    assert nuke.startswith("ColorMatrix {") and "name lin_ap1_to_lin_rec709_srgb" in nuke
+    _, snippet, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--format", "ocio")
+    assert snippet.startswith("!<MatrixTransform>") and "1.705050992657" in snippet
+    _, cat02, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--cat", "CAT02", "--format", "json")
+    assert not np.allclose(json.loads(cat02)["matrix"], expected, atol=1e-6)
+
+
+def test_info_and_list(capsys):
+    code, out, _ = run(capsys, "info", "arri_logc4")
+    assert code == 0 and "ARRI Wide Gamut 4" in out and "18% grey:  code 0.278396" in out
+    assert "OCIO 2.1: analytic (LogCamera)" in out
+    _, out, _ = run(capsys, "info", "canonlog3_cinemagamut_d55")
+    assert "OCIO 2.1: baked 1D LUT" in out and "OCIO 2.2: analytic (BuiltinTransform)" in out
+    _, out, _ = run(capsys, "list")
+    assert "S-Log3 S-Gamut3.Cine" in out and "lin_ap1" in out
+    _, out, _ = run(capsys, "list", "--displays")
+    assert "Rec.2100-PQ - Display" in out
+    _, out, _ = run(capsys, "list", "--curves")
+    assert "LogCamera" in out and "T-LogE" in out
