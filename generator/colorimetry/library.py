@@ -104,6 +104,8 @@ _CAMERAS = (
              ("lin_venice_sgamut3cine", "Input - Sony - Linear - Venice S-Gamut3.Cine"), "Input/Sony"),
     SpaceDef("Apple Log", "Rec.2020", "Apple Log", ("apple_log", "applelog_rec2020"), "Input/Apple", "log",
              "Apple Log encoded Rec.2020"),
+    *_camera("Apple Log 2", "Linear Apple Wide Gamut", "Apple Wide Gamut", "Apple Log", ("apple_log_2", "applelog_applewg"),
+             ("lin_apple_wide_gamut", "lin_applewg"), "Input/Apple"),
     *_camera("F-Log F-Gamut", "Linear F-Gamut", "F-Gamut", "F-Log", ("flog_fgamut",), ("lin_fgamut",), "Input/Fujifilm"),
     SpaceDef("F-Log2 F-Gamut", "F-Gamut", "F-Log2", ("flog2_fgamut",), "Input/Fujifilm", "log", "F-Log2 encoded F-Gamut"),
     *_camera("F-Log2 F-Gamut C", "Linear F-Gamut C", "F-Gamut C", "F-Log2", ("flog2_fgamutc",), ("lin_fgamutc",),
