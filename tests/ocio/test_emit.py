@@ -178,3 +178,16 @@ def test_same_spec_builds_byte_identical_files(tmp_path, default_spec):
         build(for_folder(default_spec, folder), folder)
         outputs.append({p.relative_to(folder): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()})
     assert outputs[0] == outputs[1]
+
+
+def test_committed_default_config_is_what_the_build_gives(tmp_path, default_spec):
+    from pathlib import Path
+
+    from generator.ocio.write import build, for_folder
+
+    committed = Path(__file__).resolve().parents[2] / "configs" / "ocioforge-studio"
+    folder = tmp_path / committed.name
+    build(for_folder(default_spec, folder), folder)
+    built = {p.relative_to(folder): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
+    on_disk = {p.relative_to(committed): p.read_bytes() for p in sorted(committed.rglob("*")) if p.is_file()}
+    assert built == on_disk, "configs/ is stale: run make run"
