@@ -83,3 +83,45 @@ RGC_OCIO_SCALED = 1e-5
 #: L and hue built through linear RGB: where a cone response nears 0, its cube root turns
 #: float64 rounding of the RGB into hue errors near 1e-8 rad (measured drop: 2.5e-9).
 GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE = 1e-8
+
+#: One step of a 16-bit integer image file: a value an engine computed and wrote to
+#: such a file reads back up to half of this away (the verifier allows exactly that).
+UINT16_STEP = 1.0 / 65535.0
+
+#: Half-width, in normalised code values, of the band around a published discontinuity
+#: of a curve (N-Log's: two 10-bit codes) where a baked LUT interpolates across the jump
+#: and the decoding is not monotonic; the verifier leaves it out.
+DISCONTINUITY_BAND = 2.0 / 1023.0
+
+#: Float32 rounding a 3x3 matrix product adds to each channel, in units of
+#: FLOAT32_UNIT_ROUNDOFF times (|M| |x|) of that channel: gamma_3 = 3u / (1 - 3u)
+#: (Higham 2002, 3.5). The verifier carries it, with the source curve's own
+#: rounding (its condition number times u), through the destination curve: a
+#: curve steep near zero (a pure power) turns it into a visible code difference.
+FLOAT32_MATRIX_ROUNDINGS = 3.0
+
+#: A colour a bounded encoding (ADX) represents decodes back to itself within float64
+#: rounding, relative to its largest component; colours that do not (non-positive
+#: printing-density exposure has no unique density) are left out of its checks.
+REPRESENTABLE_RELATIVE = 1e-9
+
+#: A baked LUT read back through OCIO against the values the baker stored at the
+#: lattice nodes (float32 reading of 5- to 6-decimal text; measured 2.3e-7).
+LUT_NODE_ABSOLUTE = 1e-5
+
+#: CLF (and config view) of a clip view, 33³, against the reference, ten-bit codes,
+#: in-gamut colours (the issue's target; measured 0.008, float32 processing).
+LUT_CLF_IN_GAMUT_CODES = 0.05
+
+#: CLF of the scale mapping, 33³, every probe set, ten-bit codes (target 1; measured
+#: 1.64 into sRGB: the largest channel's division bends inside lattice cells).
+LUT_CLF_SCALE_CODES = 2.0
+
+#: Resolve .cube of a clip view from a linear or log source, 33³, in-gamut p99, ten-bit
+#: codes: clipping planes are oblique to a source-axis lattice (measured 48 to 67).
+LUT_CUBE_IN_GAMUT_P99_CODES = 80.0
+
+#: As LUT_NODE_ABSOLUTE for a CLF whose source decoding, matrix and pre-shaper run in
+#: float32 before the lattice, moving node inputs by about 1e-7 relative where the
+#: mapping is steep (measured 2.3e-5, desaturate, ACEScct to sRGB).
+LUT_CLF_NODE_ABSOLUTE = 1e-4

@@ -12,6 +12,7 @@ COMMANDS = {
     "build": "Build an OCIO config (and its LUTs) from a spec.",
     "init": "Write the embedded default spec, commented, to a file.",
     "matrix": "Print the 3x3 matrix from one colour space's linear RGB to another's.",
+    "bake": "Bake a transform from a colour space to a display into a LUT file (.cube, .spi3d, .clf).",
     "info": "Describe a library colour space: gamut, white, curve, matrices.",
     "list": "List the library's colour spaces, displays and curves.",
 }

@@ -89,3 +89,55 @@ def colorimetric_view(spec: Spec, display: Display, ref) -> np.ndarray:
     matrix = display_matrix(spec, display) @ scene_to_display_reference(spec)
     linear = np.clip(apply_matrix(matrix, ref), 0.0, display.clip_high)
     return display_encode(display, linear)
+
+
+def display_gamut(display: Display):
+    """The :class:`~generator.gamut.DisplayGamut` of ``display``: its linear RGB to XYZ
+    matrix (SMPTE RP 177) and white, as the gamut-mapping methods need them."""
+    from generator.gamut import DisplayGamut
+
+    return DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
+
+
+def scene_to_display_matrix(spec: Spec, display: Display) -> np.ndarray:
+    """Scene-reference linear RGB to the display's linear RGB (1.0 = 100 cd/m²)."""
+    return display_matrix(spec, display) @ scene_to_display_reference(spec)
+
+
+def map_display_linear(display: Display, method: str, linear, params=None) -> np.ndarray:
+    """Display-linear RGB (1.0 = 100 cd/m², any values) gamut mapped and encoded.
+
+    The methods of :data:`generator.gamut.METHODS` bring colours into the unit
+    cube; the cube is the display's range [0, peak], so display-linear values
+    are divided by ``display.clip_high`` before mapping and multiplied after.
+
+    Parameters
+    ----------
+    display : Display
+    method : str
+        A key of :data:`generator.gamut.METHODS` (clip, desaturate, scale, rgc, perceptual).
+    linear : array_like, shape (..., 3)
+    params : optional
+        The method's parameters (e.g. :class:`~generator.gamut.RGCParams`), or None for its defaults.
+
+    Returns
+    -------
+    numpy.ndarray, shape (..., 3), float64: code values.
+    """
+    from generator.gamut import METHODS
+
+    high = display.clip_high
+    gamut = None if method in ("clip", "scale") else display_gamut(display)
+    mapped = METHODS[method](np.asarray(linear, dtype=np.float64) / high, gamut, params)
+    return display_encode(display, mapped * high)
+
+
+def mapped_view(spec: Spec, display: Display, method: str, ref, params=None) -> np.ndarray:
+    """Scene-reference linear RGB through a gamut-mapped view of ``display``.
+
+    To display-linear RGB (the scene-to-display matrix with chromatic
+    adaptation), gamut mapping with ``method`` into [0, peak], display encoding
+    (see :func:`map_display_linear`). ``mapped_view(..., "clip")`` is
+    :func:`colorimetric_view`.
+    """
+    return map_display_linear(display, method, apply_matrix(scene_to_display_matrix(spec, display), ref), params)

@@ -1,0 +1,63 @@
+"""Bake speed: `ocioforge bake` against `ociobakelut`, whole-process wall time.
+
+Both bake ACEScg -> "sRGB - Display" (clip, the transform the config's display
+colour space expresses) as a 65³ Resolve .cube; ociobakelut reads a config built
+by ocioforge (OCIO 2.1). Each is run REPEATS times as a fresh process, start-up
+included; the best times and their ratio are printed, with ocioforge's own
+report of the time spent baking and writing (after its imports).
+
+Run: .venv/bin/python bench/lut_bake.py
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+REPEATS = 5
+SIZE = 65
+#: `ocioforge bake` as a fresh process; COMMANDS gains "bake" here until the CLI registers it.
+OCIOFORGE = ("import sys, generator.cli as c; c.COMMANDS.setdefault('bake', 'Bake a LUT.'); "
+             "c.main(sys.argv[1:])")
+
+
+def best_time(args) -> tuple[float, str]:
+    best, output = float("inf"), ""
+    for _ in range(REPEATS):
+        started = time.perf_counter()
+        done = subprocess.run(args, capture_output=True, text=True, check=True)
+        best = min(best, time.perf_counter() - started)
+        output = done.stdout.strip()
+    return best, output
+
+
+def main() -> None:
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    if shutil.which("ociobakelut") is None:
+        sys.exit("ociobakelut is not installed")
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        config = folder / "ocioforge-bench"
+        build(for_folder(load.load(), config, (2, 1)), config)
+        theirs, _ = best_time(["ociobakelut", "--iconfig", str(config / "config.ocio"), "--inputspace", "ACEScg",
+                               "--outputspace", "sRGB - Display", "--format", "resolve_cube", "--cubesize", str(SIZE),
+                               str(folder / "theirs.cube")])
+        ours, report = best_time([sys.executable, "-c", OCIOFORGE, "bake", "--from", "ACEScg", "--to", "sRGB - Display",
+                                  "--gamut-map", "clip", "--size", str(SIZE), "-o", str(folder / "ours.cube"), "--force"])
+        imports, _ = best_time([sys.executable, "-c", "import generator.cli.bake as b; b._import_colour_without_plotting(); "
+                                "from generator.spec import load; load.load(); import generator.gamut"])
+    print(f"65^3 Resolve cube, ACEScg -> sRGB - Display, best of {REPEATS} fresh processes:")
+    print(f"  ociobakelut      {theirs:6.3f} s")
+    print(f"  ocioforge bake   {ours:6.3f} s   ({report})")
+    print(f"  of which imports {imports:6.3f} s (Python, numpy, click, colour-science without plotting, the spec)")
+    print(f"  ratio ocioforge / ociobakelut: {ours / theirs:.2f}x; without the imports: {(ours - imports) / theirs:.2f}x")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,54 @@
+"""ocioforge bake: one transform, scene colour space to display, as a LUT file."""
+
+from __future__ import annotations
+
+import sys
+import time
+import types
+
+import click
+
+
+def _import_colour_without_plotting() -> None:
+    """Import colour-science without its plotting package (and so without matplotlib).
+
+    colour-science imports ``colour.plotting`` on import, which loads matplotlib;
+    baking never plots. A placeholder stands in while ``colour`` is imported and is
+    removed afterwards, so a later ``import colour.plotting`` loads the real package.
+    """
+    if "colour" in sys.modules or "colour.plotting" in sys.modules:
+        return
+    sys.modules["colour.plotting"] = types.ModuleType("colour.plotting")
+    try:
+        import colour
+    finally:
+        del sys.modules["colour.plotting"]
+    colour.__dict__.pop("plotting", None)
+
+
+@click.command(help="Bake the transform from scene colour space SRC (--from) to display DST (--to) into a LUT file.")
+@click.option("--from", "source", required=True, help="Source colour space (name or alias).")
+@click.option("--to", "display", required=True, help="Destination display (name or alias).")
+@click.option("--gamut-map", "method", default=None, help="clip, desaturate, scale, rgc or perceptual (default: scale).")
+@click.option("--size", type=int, default=None, help="Lattice nodes a side (default: 33).")
+@click.option("--format", "fmt", default=None, help="resolve_cube, iridas_cube, spi3d or clf (default: from the suffix).")
+@click.option("--shaper", default="auto", show_default=True, help="auto, none, or a colour space whose curve spaces the nodes.")
+@click.option("--spec", "spec_path", type=click.Path(dir_okay=False), default=None, help="Spec file (default: the embedded spec).")
+@click.option("-o", "--output", default=None, help="File to write (a .spi3d's shaper goes beside it as .spi1d).")
+@click.option("--force", is_flag=True, help="Replace existing files.")
+def command(source, display, method, size, fmt, shaper, spec_path, output, force):
+    _import_colour_without_plotting()
+    from generator.luts import bake
+    from generator.spec import load
+    from generator.spec.schema import SpecError
+
+    started = time.perf_counter()
+    if not output:
+        raise SpecError(bake.WHERE, "-o", "give the file to write")
+    fmt = bake.format_for(fmt, output)
+    req = bake.request(load.load(spec_path), source, display, method or bake.DEFAULT_METHOD, fmt,
+                       bake.DEFAULT_SIZE if size is None else size, shaper)
+    files = bake.paths(bake.bake(req), output)
+    bake.write(files, force)
+    written = ", ".join(str(path) for path in files)
+    click.echo(f"{written}: {fmt}, {bake.describe(req)} ({time.perf_counter() - started:.2f} s)")

@@ -1,0 +1,219 @@
+"""Baking one transform, source colour space to display, into LUT files.
+
+The transform is the reference evaluation
+(:func:`~generator.colorimetry.reference.mapped_view`): decode the source,
+matrix with chromatic adaptation, gamut map, display encoding. Which lattice
+layout each format gets is in :mod:`generator.luts.lattice`; bad requests raise
+:class:`~generator.spec.schema.SpecError` before anything is computed, and
+:func:`write` replaces the output only once every byte is ready.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from generator.luts import formats, lattice
+from generator.spec.schema import ColourSpace, Display, Spec, SpecError
+
+WHERE = "ocioforge bake"
+
+#: The gamut mapping of ``ocioforge bake`` and of the standalone pack: clip's result
+#: inside the gamut and for negative components, the chromaticity of over-range colours
+#: kept, and within about 2 ten-bit codes of the reference at 33³ (see luts/README.md).
+DEFAULT_METHOD = "scale"
+
+DEFAULT_SIZE = 33
+
+
+@dataclass(frozen=True)
+class Format:
+    """A LUT format: its file suffix, lattice sizes OCIO reads, and what it can hold."""
+
+    suffix: str
+    max_size: int
+    shaper: bool
+    matrix: bool
+
+
+#: OpenColorIO reads 3D LUTs of at most 129 nodes a side (Resolve's own limit is 256).
+FORMATS = {
+    "resolve_cube": Format(".cube", 129, True, False),
+    "iridas_cube": Format(".cube", 129, False, False),
+    "spi3d": Format(".spi3d", 129, True, False),
+    "clf": Format(".clf", 129, True, True),
+}
+
+_BY_SUFFIX = {".cube": "resolve_cube", ".spi3d": "spi3d", ".clf": "clf"}
+
+
+@dataclass(frozen=True)
+class Request:
+    """A validated bake: everything :func:`bake` needs."""
+
+    spec: Spec
+    source: ColourSpace
+    display: Display
+    method: str
+    fmt: str
+    size: int
+    shaper: str | ColourSpace
+
+
+def find_display(spec: Spec, name: str, field: str) -> Display:
+    """The display called ``name`` or one of its aliases; SpecError naming the kind otherwise."""
+    from generator.spec.fields import suggest
+
+    for display in spec.displays:
+        if name.lower() in (n.lower() for n in (display.name, *display.aliases)):
+            return display
+    try:
+        space = spec.space(name)
+    except KeyError:
+        names = [n for d in spec.displays for n in (d.name, *d.aliases)]
+        raise SpecError(WHERE, field, f"unknown display {name!r}{suggest(name, names)}") from None
+    raise SpecError(WHERE, field, f"{space.name!r} is a scene colour space; {field} takes a display")
+
+
+def find_source(spec: Spec, name: str, field: str, role: str = "source") -> ColourSpace:
+    """An encoded scene colour space (not data, not a display, a per-channel curve and primaries)."""
+    from generator.spec.fields import suggest
+
+    try:
+        space = spec.space(name)
+    except KeyError:
+        if any(name.lower() in (n.lower() for n in (d.name, *d.aliases)) for d in spec.displays):
+            raise SpecError(WHERE, field, f"{name!r} is a display; {field} takes a scene colour space") from None
+        names = [n for s in spec.colour_spaces for n in s.all_names]
+        raise SpecError(WHERE, field, f"unknown colour space {name!r}{suggest(name, names)}") from None
+    if space.is_data:
+        raise SpecError(WHERE, field, f"{space.name!r} is data (never colour managed); it cannot be a {role}")
+    if space.special or space.gamut is None:
+        raise SpecError(WHERE, field, f"{space.name!r} is not a per-channel encoding of RGB primaries; "
+                        "baking it is not supported")
+    return space
+
+
+def format_for(fmt: str | None, output: str) -> str:
+    """The format named, or the one the output's suffix implies."""
+    if fmt is None:
+        suffix = Path(output).suffix.lower()
+        if suffix not in _BY_SUFFIX:
+            raise SpecError(WHERE, "--format", f"cannot tell the format from {suffix or 'no suffix'!r}; "
+                            f"give --format ({', '.join(FORMATS)})")
+        return _BY_SUFFIX[suffix]
+    if fmt not in FORMATS:
+        raise SpecError(WHERE, "--format", f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
+    return fmt
+
+
+def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: int, shaper: str = "auto") -> Request:
+    """Validate a bake's parameters (SpecError naming the option otherwise)."""
+    from generator.gamut import METHODS
+
+    if fmt not in FORMATS:
+        raise SpecError(WHERE, "--format", f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
+    if method not in METHODS:
+        raise SpecError(WHERE, "--gamut-map", f"unknown method {method!r}; allowed: {', '.join(METHODS)}")
+    src, dst = find_source(spec, source, "--from"), find_display(spec, display, "--to")
+    chosen: str | ColourSpace = shaper
+    if shaper not in ("auto", "none"):
+        if not FORMATS[fmt].shaper:
+            raise SpecError(WHERE, "--shaper", f"{fmt} holds no shaper; allowed: auto, none")
+        chosen = find_source(spec, shaper, "--shaper", "shaper")
+    top = FORMATS[fmt].max_size
+    smallest = _smallest_size(dst, src, method, fmt, chosen)
+    if not smallest <= size <= top:
+        raise SpecError(WHERE, "--size", f"{size} is outside what {fmt} allows here: {smallest} to {top}")
+    return Request(spec, src, dst, method, fmt, size, chosen)
+
+
+def _smallest_size(display: Display, source: ColourSpace, method: str, fmt: str, shaper) -> int:
+    """Fewest nodes a side the layout needs (2 without a shaper)."""
+    if shaper == "none" or not FORMATS[fmt].shaper:
+        return 2
+    for size in range(2, 16):
+        try:
+            if fmt == "clf" and shaper == "auto":
+                lattice.display_axis(display, size, method)
+            else:
+                lattice.source_axis(source, display, size, method)
+            return size
+        except ValueError:
+            continue
+    return 16
+
+
+def build_lattice(req: Request) -> lattice.Lattice:
+    if req.fmt == "clf" and req.shaper == "auto":
+        return lattice.display_lattice(req.spec, req.display, req.method, req.size, source=req.source)
+    shaper = "none" if not FORMATS[req.fmt].shaper else req.shaper
+    return lattice.source_lattice(req.spec, req.source, req.display, req.method, req.size, shaper)
+
+
+def describe(req: Request) -> str:
+    return f"{req.source.name} to {req.display.name}, gamut mapping {req.method}, {req.size}^3 lattice"
+
+
+def notes(req: Request, lat: lattice.Lattice) -> list[str]:
+    """Comment lines: what the file does and what its input is."""
+    lo, hi = lat.domain
+    lines = [f"ocioforge: {describe(req)}.",
+             f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).",
+             f"Output: {req.display.name} code values (full range, 0 to 1)."]
+    if lat.shaper is not None:
+        lines.append("A 1D shaper puts the lattice nodes at the display's code values of the decoded input.")
+    return lines
+
+
+def bake(req: Request) -> dict[str, bytes]:
+    """The files of a bake: suffix ("" for the main file) to bytes."""
+    lat = build_lattice(req)
+    title = describe(req)
+    if req.fmt == "resolve_cube":
+        return {"": formats.resolve_cube(lat, title, notes(req, lat))}
+    if req.fmt == "iridas_cube":
+        return {"": formats.iridas_cube(lat, title, notes(req, lat))}
+    if req.fmt == "spi3d":
+        files = {"": formats.spi3d(lat)}
+        if formats.needs_spi1d(lat):
+            files[".spi1d"] = formats.spi1d_shaper(lat)
+        return files
+    return {"": formats.clf(lat, identifier(req), " ".join(notes(req, lat)), descriptors=(req.source.name, req.display.name))}
+
+
+def identifier(req: Request) -> str:
+    from generator.luts.curve1d import slug
+
+    return f"ocioforge:{slug(req.source.name)}_to_{slug(req.display.name)}_{req.method}_{req.size}"
+
+
+def paths(files: dict[str, bytes], output: str | Path) -> dict[Path, bytes]:
+    """Where each file goes: the main file at ``output``, a shaper beside it with its own suffix."""
+    output = Path(output)
+    return {(output if not suffix else output.with_suffix(suffix)): data for suffix, data in files.items()}
+
+
+def write(files: dict[Path, bytes], force: bool = False) -> None:
+    """Write every file or none: each goes to a temporary sibling first, then all are renamed."""
+    for path in files:
+        if not path.parent.is_dir():
+            raise SpecError(WHERE, "-o", f"folder {str(path.parent)!r} does not exist")
+        if path.exists() and not force:
+            raise SpecError(WHERE, "-o", f"{str(path)!r} exists; pass --force to replace it")
+    staged: list[tuple[str, Path]] = []
+    try:
+        for path, data in files.items():
+            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+            staged.append((temporary, path))
+            with os.fdopen(handle, "wb") as stream:
+                stream.write(data)
+            os.chmod(temporary, 0o644)
+        for temporary, path in staged:
+            os.replace(temporary, path)
+    finally:
+        for temporary, _ in staged:
+            if os.path.exists(temporary):
+                os.unlink(temporary)

@@ -1,0 +1,182 @@
+"""One writer per LUT format: a :class:`~generator.luts.lattice.Lattice` to bytes.
+
+* ``resolve_cube``: DaVinci Resolve .cube (Blackmagic Design, "Resolve cube LUT
+  specification"): an optional 1D shaper (``LUT_1D_SIZE``,
+  ``LUT_1D_INPUT_RANGE``) then the 3D table (``LUT_3D_SIZE``,
+  ``LUT_3D_INPUT_RANGE``), red index fastest.
+* ``iridas_cube``: Iridas/Adobe .cube ("Cube LUT Specification" 1.0): 3D only,
+  input domain in ``DOMAIN_MIN`` / ``DOMAIN_MAX``, red fastest.
+* ``spi3d``: Sony Pictures Imageworks 3D (``SPILUT 1.0``, explicit node indices,
+  input [0, 1]); the shaper, where there is one, is a separate .spi1d.
+* ``clf``: Academy/ASC Common LUT Format v3 (S-2014-006, 2020 revision), all
+  32-bit float: source decoding, Matrix, pre-shaper, Range, LUT1D, LUT3D in one
+  ProcessList; the 3D array has blue fastest.
+
+Every writer returns text as bytes; the same lattice always gives the same bytes.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from generator.colorimetry.transfer import Linear, LogCamera, PiecewisePower, Power
+from generator.luts import numbers
+from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice
+from generator.luts.spi1d import format_spi1d
+
+#: Interpolation CLF's LUT3D asks for (and what the config's FileTransform uses).
+INTERPOLATION = "tetrahedral"
+
+
+def red_fastest(cube: np.ndarray) -> np.ndarray:
+    """``cube[r, g, b]`` as rows with the red index changing fastest."""
+    return cube.transpose(2, 1, 0, 3).reshape(-1, 3)
+
+
+def blue_fastest(cube: np.ndarray) -> np.ndarray:
+    """``cube[r, g, b]`` as rows with the blue index changing fastest."""
+    return cube.reshape(-1, 3)
+
+
+def _comments(lines) -> str:
+    return "".join(f"# {line}\n" for line in lines)
+
+
+def _n(value) -> str:
+    return numbers.number(value)
+
+
+def resolve_cube(lattice: Lattice, title: str, notes=()) -> bytes:
+    lo, hi = lattice.domain
+    head = [_comments([title, *notes])]  # OCIO's Resolve reader takes no TITLE line
+    body = []
+    if lattice.shaper is not None:
+        head += [f"LUT_1D_SIZE {lattice.shaper.size}\n", f"LUT_1D_INPUT_RANGE {_n(lo)} {_n(hi)}\n",
+                 f"LUT_3D_SIZE {lattice.size}\n", "LUT_3D_INPUT_RANGE 0 1\n"]
+        body.append(numbers.table(np.repeat(lattice.shaper[:, None], 3, axis=1), SHAPER_DECIMALS))
+    else:
+        head += [f"LUT_3D_SIZE {lattice.size}\n", f"LUT_3D_INPUT_RANGE {_n(lo)} {_n(hi)}\n"]
+    body.append(numbers.table(red_fastest(lattice.cube), CUBE_DECIMALS))
+    return "".join(head).encode("ascii") + b"".join(body)
+
+
+def iridas_cube(lattice: Lattice, title: str, notes=()) -> bytes:
+    if lattice.shaper is not None:
+        raise ValueError("an Iridas .cube holds no shaper")
+    lo, hi = lattice.domain
+    head = (f'TITLE "{title}"\n{_comments(notes)}LUT_3D_SIZE {lattice.size}\n'
+            f"DOMAIN_MIN {_n(lo)} {_n(lo)} {_n(lo)}\nDOMAIN_MAX {_n(hi)} {_n(hi)} {_n(hi)}\n")
+    return head.encode("ascii") + numbers.table(red_fastest(lattice.cube), CUBE_DECIMALS)
+
+
+def spi3d(lattice: Lattice) -> bytes:
+    n = lattice.size
+    index = np.indices((n, n, n)).reshape(3, -1).T
+    values = numbers.table(blue_fastest(lattice.cube), CUBE_DECIMALS).decode("ascii").splitlines()
+    rows = "".join(f"{i} {j} {k} {v}\n" for (i, j, k), v in zip(index.tolist(), values))
+    return f"SPILUT 1.0\n3 3\n{n} {n} {n}\n{rows}".encode("ascii")
+
+
+def spi1d_shaper(lattice: Lattice) -> bytes:
+    """The .spi1d taking the lattice's input to [0, 1] (a straight line without a shaper table)."""
+    values = lattice.shaper if lattice.shaper is not None else np.array([0.0, 1.0])
+    return format_spi1d(values, lattice.domain).encode("ascii")
+
+
+def needs_spi1d(lattice: Lattice) -> bool:
+    """Whether an .spi3d of this lattice needs a shaper beside it (its input is not [0, 1])."""
+    return lattice.shaper is not None or tuple(lattice.domain) != (0.0, 1.0)
+
+
+def _array(rows: np.ndarray, dim: str, decimals: int) -> str:
+    return f'<Array dim="{dim}">\n' + numbers.table(rows, decimals).decode("ascii") + "</Array>\n"
+
+
+def _op(tag: str, body: str, **attributes) -> str:
+    attrs = "".join(f' {key}="{value}"' for key, value in attributes.items())
+    return f'<{tag} inBitDepth="32f" outBitDepth="32f"{attrs}>\n{body}</{tag}>\n'
+
+
+def _exponent(style: str, gamma: float, offset: float | None = None) -> str:
+    extra = f' offset="{_n(offset)}"' if offset is not None else ""
+    return _op("Exponent", f'<ExponentParams exponent="{_n(gamma)}"{extra}/>\n', style=style)
+
+
+def _range(lo: float, hi: float) -> str:
+    body = "".join(f"<{tag}>{_n(v)}</{tag}>\n" for tag, v in
+                   (("minInValue", lo), ("maxInValue", hi), ("minOutValue", 0.0), ("maxOutValue", 1.0)))
+    return _op("Range", body)
+
+
+def _lut1d(values: np.ndarray, decimals: int) -> str:
+    return _op("LUT1D", _array(values[:, None], f"{values.size} 1", decimals))
+
+
+def _log_camera(curve: LogCamera) -> str:
+    params = dict(base=curve.base, logSideSlope=curve.log_side_slope, logSideOffset=curve.log_side_offset,
+                  linSideSlope=curve.lin_side_slope, linSideOffset=curve.lin_side_offset,
+                  linSideBreak=curve.lin_side_break)
+    if curve.linear_slope is not None:
+        params["linearSlope"] = curve.linear_slope
+    attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
+    return _op("Log", f"<LogParams {attrs}/>\n", style="cameraLogToLin")
+
+
+def decode_ops(name: str, curve) -> str:
+    """CLF operators decoding ``curve``: analytic (Exponent, Log) where CLF has one,
+    else the baked 1D LUT of :mod:`generator.luts.curve1d` behind a Range."""
+    if isinstance(curve, Linear):
+        return ""
+    if isinstance(curve, Power):
+        return _exponent("basicMirrorFwd", curve.exponent)
+    if isinstance(curve, PiecewisePower):
+        return _exponent("monCurveFwd", curve.gamma, curve.offset)
+    if isinstance(curve, LogCamera) and curve.lin_side_break is not None:
+        return _log_camera(curve)
+    from generator.luts.curve1d import bake_curve
+
+    baked = bake_curve(name, curve, curve.domain)
+    ops = _range(*baked.domain)
+    if baked.shaper != 1:
+        ops += _exponent("basicFwd", 1.0 / baked.shaper)
+    values = np.asarray(baked.values)
+    return ops + _op("LUT1D", "<Array dim=\"%d 1\">\n%s</Array>\n" % (values.size, "".join(f"{v:.9g}\n" for v in values)))
+
+
+def _matrix(matrix: np.ndarray) -> str:
+    rows = "".join(" ".join(_n(v) for v in row) + "\n" for row in np.asarray(matrix, dtype=np.float64))
+    return _op("Matrix", f'<Array dim="3 3">\n{rows}</Array>\n')
+
+
+def clf(lattice: Lattice, identifier: str, description: str, include_matrix: bool = True,
+        descriptors: tuple[str, str] = ("", "")) -> bytes:
+    """A CLF v3 ProcessList of ``lattice``. Display layout: [decoding, Matrix,] pre-shaper,
+    Range, LUT1D, LUT3D; without ``include_matrix`` the file starts at the
+    pre-shaper and its input is normalised display-linear RGB (the config keeps
+    the matrix as a MatrixTransform). Source layout: Range, [LUT1D,] LUT3D."""
+    ops = []
+    if lattice.pre is not None:
+        if include_matrix:
+            if lattice.decode is not None:
+                ops.append(decode_ops(lattice.source.name, lattice.decode))
+            ops.append(_matrix(lattice.matrix))
+        pre = lattice.pre
+        ops.append(_exponent("monCurveMirrorRev", pre.gamma, pre.offset) if pre.offset
+                   else _exponent("basicMirrorRev", pre.gamma))
+    ops.append(_range(*lattice.domain))
+    if lattice.shaper is not None:
+        ops.append(_lut1d(lattice.shaper, SHAPER_DECIMALS))
+    n = lattice.size
+    ops.append(_op("LUT3D", _array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", CUBE_DECIMALS),
+                   interpolation=INTERPOLATION))
+    head = (f'<?xml version="1.0" encoding="UTF-8"?>\n<ProcessList compCLFversion="3" id="{_xml(identifier)}">\n'
+            f"<Description>{_xml(description)}</Description>\n")
+    if descriptors[0]:
+        head += f"<InputDescriptor>{_xml(descriptors[0])}</InputDescriptor>\n"
+    if descriptors[1]:
+        head += f"<OutputDescriptor>{_xml(descriptors[1])}</OutputDescriptor>\n"
+    return (head + "".join(ops) + "</ProcessList>\n").encode("utf-8")
+
+
+def _xml(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")

@@ -1,0 +1,121 @@
+"""Probe colours for measuring a baked LUT against the reference, and the error figures.
+
+Four sets, each in the LUT's input (source code values), drawn from a fixed
+seed so the same call always gives the same colours:
+
+* ``in_gamut``: display-linear RGB uniform in the display cube [0, peak];
+* ``dark``: in-gamut colours whose largest channel is 1e-4 to 1e-2 of
+  display white (100 cd/m²), log-uniform;
+* ``out_of_gamut``: source-gamut colours (source linear RGB uniform in [0, 1]
+  times display white) that the display cannot show, a channel below 0;
+* ``over_range``: source-gamut colours scaled by 1 to 16 times the display's
+  peak, log-uniform, whose largest display channel exceeds the peak.
+
+Errors are ten-bit code values (largest channel difference times 1023) for SDR
+displays and ΔE ITP (ITU-R BT.2124, :func:`~generator.verify.metrics.delta_e_itp`)
+for HDR ones; each set reports its maximum and 99th percentile.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from generator.colorimetry import reference
+from generator.spec.schema import ColourSpace, Display, Spec
+
+SETS = ("in_gamut", "dark", "out_of_gamut", "over_range")
+
+#: Probes per set.
+COUNT = 4096
+
+#: Over-range probes reach this multiple of the display's peak.
+OVER_RANGE = 16.0
+
+SEED = 20240601
+
+
+@dataclass(frozen=True)
+class Figures:
+    """Largest and 99th-percentile error of one probe set, in ``unit``."""
+
+    maximum: float
+    p99: float
+    unit: str
+
+
+def _display_linear(spec: Spec, source: ColourSpace, display: Display, rng, count: int) -> dict[str, np.ndarray]:
+    high = display.clip_high
+    to_display = reference.scene_to_display_matrix(spec, display) @ reference.space_matrix(spec, source)
+    sets = {"in_gamut": rng.random((count, 3)) * high}
+    dark = rng.random((count, 3))
+    sets["dark"] = dark / dark.max(axis=-1, keepdims=True) * 10.0 ** rng.uniform(-4, -2, (count, 1))
+    wide = reference.apply_matrix(to_display, rng.random((8 * count, 3)))
+    sets["out_of_gamut"] = wide[wide.min(axis=-1) < 0][:count]
+    scale = high * 10.0 ** rng.uniform(0, np.log10(OVER_RANGE), (8 * count, 1))
+    bright = reference.apply_matrix(to_display, rng.random((8 * count, 3)) * scale)
+    sets["over_range"] = bright[bright.max(axis=-1) > high][:count]
+    return sets
+
+
+def probes(spec: Spec, source: ColourSpace, display: Display, count: int = COUNT,
+           gamut_source: ColourSpace | None = None) -> dict[str, np.ndarray]:
+    """The probe sets as scene-reference linear RGB, shape (n, 3) each.
+
+    ``gamut_source`` (default ``source``) is the space whose gamut the
+    out-of-gamut and over-range sets are drawn from."""
+    rng = np.random.default_rng(SEED)
+    sets = _display_linear(spec, gamut_source or source, display, rng, count)
+    to_reference = np.linalg.inv(reference.scene_to_display_matrix(spec, display))
+    return {name: reference.apply_matrix(to_reference, linear) for name, linear in sets.items()}
+
+
+def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
+    """Per-colour error of code values ``actual`` against ``expected``, and its unit."""
+    actual, expected = np.asarray(actual, dtype=np.float64), np.asarray(expected, dtype=np.float64)
+    if display.is_hdr:
+        from generator.verify.metrics import delta_e_itp
+
+        with np.errstate(all="ignore"):
+            return np.nan_to_num(delta_e_itp(display, actual, expected)), "ΔE ITP"
+    return np.abs(actual - expected).max(axis=-1) * 1023.0, "10-bit codes"
+
+
+def measure(spec: Spec, source: ColourSpace | None, display: Display, method: str, apply,
+            gamut_source: ColourSpace | None = None, count: int = COUNT) -> dict[str, Figures]:
+    """Figures of ``apply`` (source code values (n, 3) -> display code values) on every set.
+
+    ``source`` None means the input is scene-reference linear RGB. A set with no
+    colours (no out-of-gamut colours when the source gamut is the display's) is left out."""
+    space = source or spec.reference
+    result = {}
+    for name, ref in probes(spec, space, display, count, gamut_source).items():
+        if not len(ref):
+            continue
+        code = ref if source is None else reference.from_reference(spec, source, ref)
+        with np.errstate(all="ignore"):
+            expected = reference.mapped_view(spec, display, method, ref)
+        error, unit = errors(display, apply(code), expected)
+        result[name] = Figures(float(error.max()), float(np.percentile(error, 99)), unit)
+    return result
+
+
+def ocio_apply(transform, interpolation=None):
+    """A function applying an OCIO transform (e.g. a FileTransform) in float32 on the CPU.
+
+    OCIO caches files by path; the cache is cleared first so a file rewritten at
+    the same path is read anew."""
+    import PyOpenColorIO as ocio
+
+    ocio.ClearAllCaches()
+    if interpolation is not None:
+        transform.setInterpolation(interpolation)
+    processor = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
+
+    def apply(code):
+        pixels = np.ascontiguousarray(np.asarray(code, dtype=np.float32))
+        processor.applyRGB(pixels)
+        return pixels.astype(np.float64)
+
+    return apply

@@ -1,0 +1,89 @@
+"""The per-display LUT a config's gamut-mapped view references.
+
+The view is scene-reference linear RGB -> :func:`~generator.luts.lattice.view_matrix`
+(an OCIO MatrixTransform, exact, kept in the config) -> this CLF (pre-shaper,
+Range, LUT1D, LUT3D in display axes, see :mod:`generator.luts.lattice`). The
+function is pure: it returns the file's name and bytes with the measured
+error; the config writer writes them.
+"""
+
+from __future__ import annotations
+
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from generator.luts import formats, lattice, probes
+from generator.luts.curve1d import slug
+from generator.spec.schema import Display, Spec
+
+#: Lattice size of the config's view LUTs.
+VIEW_SIZE = 33
+
+
+@dataclass(frozen=True)
+class ViewLut:
+    """A view's baked LUT.
+
+    ``matrix`` takes scene-reference linear RGB to the file's input (normalised
+    display-linear RGB, 1 = the display's peak); the config applies it as a
+    MatrixTransform before a FileTransform of ``filename``. ``figures`` are the
+    measured errors through OCIO on :mod:`generator.luts.probes` sets (drawn from
+    the ACEScg gamut when the spec has it), ``bound`` their largest maximum.
+    """
+
+    filename: str
+    data: bytes
+    matrix: tuple[tuple[float, float, float], ...]
+    figures: dict
+    bound: float
+    unit: str
+
+
+def view_filename(display: Display, method: str, size: int = VIEW_SIZE) -> str:
+    return f"view_{slug(display.name)}_{method}_{size}.clf"
+
+
+def view_transform(matrix, path: str):
+    """The OCIO transform of a view LUT: MatrixTransform then FileTransform (tetrahedral)."""
+    import PyOpenColorIO as ocio
+
+    from generator.ocio.emit import matrix_transform
+
+    return ocio.GroupTransform([matrix_transform(np.asarray(matrix)),
+                                ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)])
+
+
+def bake_view_lut(spec: Spec, display: Display, method: str, size: int = VIEW_SIZE, params=None) -> ViewLut:
+    """Bake the view of ``display`` with gamut mapping ``method`` and measure it through OCIO.
+
+    Parameters
+    ----------
+    spec : Spec
+    display : Display
+    method : str
+        A key of :data:`generator.gamut.METHODS`.
+    size : int
+        Lattice nodes a side (at most 129, OCIO's limit).
+    params : optional
+        The method's parameters.
+    """
+    lat = lattice.display_lattice(spec, display, method, size, params=params)
+    name = view_filename(display, method, size)
+    text = (f"ocioforge view LUT: normalised {display.name} linear RGB (1 = peak, after the config's matrix) "
+            f"to code values, gamut mapping {method}, {size}^3 lattice in the display's code values.")
+    data = formats.clf(lat, f"ocioforge:{name[:-4]}", text, include_matrix=False)
+    matrix = tuple(tuple(float(v) for v in row) for row in lat.matrix)
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / name
+        path.write_bytes(data)
+        try:
+            gamut_source = spec.space("ACEScg")
+        except KeyError:
+            gamut_source = None
+        figures = probes.measure(spec, None, display, method, probes.ocio_apply(view_transform(matrix, str(path))),
+                                 gamut_source=gamut_source)
+    unit = next(iter(figures.values())).unit
+    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit)

@@ -1,0 +1,126 @@
+"""Baked LUT files: they read back in OCIO (and colour-science where it has a reader)
+to the stored node values, meet the measured accuracy bounds, and are reproducible."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from generator import tolerances
+from generator.colorimetry import reference
+from generator.luts import bake, formats, lattice, probes
+
+
+def _request(spec, fmt, method="clip", size=17, source="ACEScct", display="sRGB - Display", shaper="auto"):
+    return bake.request(spec, source, display, method, fmt, size, shaper)
+
+
+def _write(tmp_path, req, name="lut"):
+    files = bake.paths(bake.bake(req), tmp_path / f"{name}{bake.FORMATS[req.fmt].suffix}")
+    bake.write(files)
+    return list(files)
+
+
+def _transform(paths):
+    import PyOpenColorIO as ocio
+
+    steps = [ocio.FileTransform(str(p), interpolation=ocio.INTERP_TETRAHEDRAL) for p in reversed(paths)]
+    return steps[0] if len(steps) == 1 else ocio.GroupTransform(steps)
+
+
+def _node_inputs(req, lat, picks=(0, 3, 9, 16)):
+    """Input values landing on lattice nodes, and the node values."""
+    coordinates = lattice._preimages(lat.size, lat.shaper, lat.domain)
+    index = np.array([(i, j, k) for i in picks for j in picks for k in picks])
+    values = coordinates[index]
+    if lat.pre is not None:  # display layout: input is source code; invert pre-shaper and matrix
+        linear = reference.apply_matrix(np.linalg.inv(lat.matrix), lat.pre.inverse(values))
+        values = req.source.curve.encode(linear)
+    return values, lat.cube[index[:, 0], index[:, 1], index[:, 2]]
+
+
+@pytest.mark.parametrize("fmt", ("resolve_cube", "iridas_cube", "spi3d", "clf"))
+def test_files_read_back_in_ocio_at_the_nodes(default_spec, tmp_path, fmt):
+    req = _request(default_spec, fmt, method="desaturate")
+    lat = bake.build_lattice(req)
+    paths = _write(tmp_path, req)
+    inputs, expected = _node_inputs(req, lat)
+    actual = probes.ocio_apply(_transform(paths))(inputs)
+    bound = tolerances.LUT_CLF_NODE_ABSOLUTE if fmt == "clf" else tolerances.LUT_NODE_ABSOLUTE
+    np.testing.assert_allclose(actual, expected, rtol=0, atol=bound)
+
+
+@pytest.mark.parametrize("fmt", ("resolve_cube", "iridas_cube", "spi3d"))
+def test_colour_science_reads_the_same_table(default_spec, tmp_path, fmt):
+    import colour
+
+    req = _request(default_spec, fmt, source="ACEScg")
+    lat = bake.build_lattice(req)
+    paths = _write(tmp_path, req)
+    lut = colour.read_LUT(str(paths[0]))
+    table = lut[-1].table if isinstance(lut, colour.LUTSequence) else lut.table
+    np.testing.assert_allclose(table, lat.cube, rtol=0, atol=tolerances.LUT_NODE_ABSOLUTE)
+    if fmt == "resolve_cube":
+        np.testing.assert_allclose(lut[0].table[:, 0], lat.shaper, atol=tolerances.LUT_NODE_ABSOLUTE)
+        np.testing.assert_allclose(lut[0].domain[:, 0], lat.domain)
+    if fmt == "spi3d":
+        shaper = colour.read_LUT(str(paths[1]))
+        np.testing.assert_allclose(shaper.table, lat.shaper, atol=tolerances.LUT_NODE_ABSOLUTE)
+
+
+def test_clf_clip_meets_the_in_gamut_target(default_spec, tmp_path):
+    req = _request(default_spec, "clf", size=33, source="ACEScg")
+    figures = probes.measure(default_spec, req.source, req.display, "clip",
+                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    assert figures["in_gamut"].maximum <= tolerances.LUT_CLF_IN_GAMUT_CODES
+    assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_IN_GAMUT_CODES
+
+
+def test_clf_scale_within_its_bound(default_spec, tmp_path):
+    req = _request(default_spec, "clf", method="scale", size=33, source="ACEScg")
+    figures = probes.measure(default_spec, req.source, req.display, "scale",
+                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_SCALE_CODES
+
+
+def test_resolve_cube_in_gamut_bound(default_spec, tmp_path):
+    req = _request(default_spec, "resolve_cube", size=33)
+    figures = probes.measure(default_spec, req.source, req.display, "clip",
+                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    assert figures["in_gamut"].p99 <= tolerances.LUT_CUBE_IN_GAMUT_P99_CODES
+
+
+@pytest.mark.parametrize("fmt", ("resolve_cube", "clf", "spi3d"))
+def test_same_input_same_bytes(default_spec, fmt):
+    req = _request(default_spec, fmt, method="scale", source="ARRI LogC4", display="Rec.2100-PQ - Display")
+    assert bake.bake(req) == bake.bake(req)
+
+
+def test_clf_decodes_every_curve_family(default_spec, tmp_path):
+    """Analytic Log and Exponent operators, and a baked LUT1D for a function curve."""
+    for name in ("S-Log3 S-Gamut3.Cine", "sRGB Encoded Rec.709 (sRGB)", "Gamma 2.2 Encoded AP1", "ACEScc"):
+        req = _request(default_spec, "clf", source=name, display="Rec.1886 Rec.709 - Display")
+        lat = bake.build_lattice(req)
+        inputs, expected = _node_inputs(req, lat, picks=(lat.cube.shape[0] // 2,))
+        paths = _write(tmp_path, req, name=name.replace(" ", "_"))
+        np.testing.assert_allclose(probes.ocio_apply(_transform(paths))(inputs), expected,
+                                   atol=tolerances.LUT_CLF_NODE_ABSOLUTE)
+
+
+def test_clf_loads_in_ocio_2_1(default_spec, tmp_path):
+    import subprocess
+
+    from tests.conftest import require_program
+
+    program = require_program("ociochecklut")
+    req = _request(default_spec, "clf", source="ACEScct")
+    path = _write(tmp_path, req)[0]
+    done = subprocess.run([program, str(path), "0.4", "0.4", "0.4"], capture_output=True, text=True, check=True)
+    expected = probes.ocio_apply(_transform([path]))(np.array([[0.4, 0.4, 0.4]]))[0]
+    np.testing.assert_allclose([float(v) for v in done.stdout.split()[-3:]], expected, atol=1e-5)
+
+
+def test_writers_refuse_what_a_format_cannot_hold(default_spec):
+    lat = bake.build_lattice(_request(default_spec, "resolve_cube"))
+    with pytest.raises(ValueError):
+        formats.iridas_cube(lat, "t")

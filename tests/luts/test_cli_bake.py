@@ -1,0 +1,97 @@
+"""ocioforge bake: writes the file; bad input exits 2 with one line and leaves nothing."""
+
+from __future__ import annotations
+
+import pytest
+from click.testing import CliRunner
+
+import generator.cli as cli
+from generator.cli.bake import command
+
+
+def test_bakes_a_resolve_cube(tmp_path):
+    out = tmp_path / "acescg_srgb.cube"
+    result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "srgb_display", "--size", "17", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.read_text().count("\n") > 17**3
+    assert [p.name for p in tmp_path.iterdir()] == [out.name]
+
+
+def test_spi3d_writes_its_shaper_beside(tmp_path):
+    out = tmp_path / "a.spi3d"
+    result = CliRunner().invoke(command, ["--from", "ACEScct", "--to", "sRGB - Display", "--size", "9", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.spi1d", "a.spi3d"]
+
+
+BAD = {
+    "display as source": ["--from", "sRGB - Display", "--to", "sRGB - Display"],
+    "data source": ["--from", "Raw", "--to", "sRGB - Display"],
+    "scene space as display": ["--from", "ACEScg", "--to", "ACEScct"],
+    "unknown format": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "3dl"],
+    "unknown method": ["--from", "ACEScg", "--to", "sRGB - Display", "--gamut-map", "squash"],
+    "size too large": ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "130"],
+    "size too small": ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "2"],
+    "shaper in iridas": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube", "--shaper", "ACEScct"],
+    "data shaper": ["--from", "ACEScg", "--to", "sRGB - Display", "--shaper", "Raw"],
+}
+
+
+@pytest.fixture
+def run(monkeypatch, capsys):
+    monkeypatch.setitem(cli.COMMANDS, "bake", "Bake a LUT.")
+
+    def _run(args):
+        with pytest.raises(SystemExit) as exited:
+            cli.main(["bake", *args])
+        return exited.value.code, capsys.readouterr().err
+
+    return _run
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_bad_input_exits_2_with_one_line(tmp_path, run, case):
+    code, err = run([*BAD[case], "-o", str(tmp_path / "out.cube")])
+    assert code == 2
+    assert err.startswith("error: ") and err.count("\n") == 1, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_existing_output_needs_force(tmp_path, run):
+    out = tmp_path / "out.clf"
+    out.write_text("keep")
+    code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out)])
+    assert code == 2 and "--force" in err and out.read_text() == "keep"
+    result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out),
+                                          "--force"])
+    assert result.exit_code == 0 and out.read_text().startswith("<?xml")
+
+
+def test_a_failed_bake_leaves_no_file(tmp_path, monkeypatch):
+    from generator.luts import formats
+
+    def broken(*args, **kwargs):
+        raise RuntimeError("disk full")
+
+    monkeypatch.setattr(formats, "clf", broken)
+    result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "sRGB - Display", "-o", str(tmp_path / "x.clf")])
+    assert result.exit_code != 0 and list(tmp_path.iterdir()) == []
+
+
+def test_a_failed_write_leaves_no_file(tmp_path, monkeypatch):
+    from generator.luts import bake
+
+    files = {tmp_path / "a.spi3d": b"1", tmp_path / "a.spi1d": b"2"}
+    real_replace = bake.os.replace
+    calls = []
+
+    def failing(src, dst):
+        calls.append(dst)
+        if len(calls) == 1:
+            raise OSError("no space")
+        real_replace(src, dst)
+
+    monkeypatch.setattr(bake.os, "replace", failing)
+    with pytest.raises(OSError):
+        bake.write(files)
+    assert list(tmp_path.iterdir()) == []
