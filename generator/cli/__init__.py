@@ -44,8 +44,10 @@ def fail(message: str) -> None:
 
 
 def main(argv=None) -> None:
+    from generator.colour_science import skip_plotting
     from generator.spec.schema import SpecError
 
+    skip_plotting()
     try:
         cli.main(args=argv, prog_name="ocioforge", standalone_mode=False)
     except click.exceptions.Abort:

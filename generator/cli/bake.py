@@ -2,28 +2,9 @@
 
 from __future__ import annotations
 
-import sys
 import time
-import types
 
 import click
-
-
-def _import_colour_without_plotting() -> None:
-    """Import colour-science without its plotting package (and so without matplotlib).
-
-    colour-science imports ``colour.plotting`` on import, which loads matplotlib;
-    baking never plots. A placeholder stands in while ``colour`` is imported and is
-    removed afterwards, so a later ``import colour.plotting`` loads the real package.
-    """
-    if "colour" in sys.modules or "colour.plotting" in sys.modules:
-        return
-    sys.modules["colour.plotting"] = types.ModuleType("colour.plotting")
-    try:
-        import colour
-    finally:
-        del sys.modules["colour.plotting"]
-    colour.__dict__.pop("plotting", None)
 
 
 @click.command(help="Bake the transform from scene colour space SRC (--from) to display DST (--to) into a LUT file.")
@@ -37,7 +18,6 @@ def _import_colour_without_plotting() -> None:
 @click.option("-o", "--output", default=None, help="File to write (a .spi3d's shaper goes beside it as .spi1d).")
 @click.option("--force", is_flag=True, help="Replace existing files.")
 def command(source, display, method, size, fmt, shaper, spec_path, output, force):
-    _import_colour_without_plotting()
     from generator.luts import bake
     from generator.spec import load
     from generator.spec.schema import SpecError
@@ -46,7 +26,7 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     if not output:
         raise SpecError(bake.WHERE, "-o", "give the file to write")
     fmt = bake.format_for(fmt, output)
-    req = bake.request(load.load(spec_path), source, display, method or bake.DEFAULT_METHOD, fmt,
+    req = bake.request(load.load(spec_path, keep=(source,)), source, display, method or bake.DEFAULT_METHOD, fmt,
                        bake.DEFAULT_SIZE if size is None else size, shaper)
     files = bake.paths(bake.bake(req), output)
     bake.write(files, force)

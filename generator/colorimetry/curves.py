@@ -25,10 +25,9 @@ function's notes.
 from __future__ import annotations
 
 import math
-from functools import partial, wraps
+from functools import wraps
 from types import MappingProxyType
 
-import colour.models as cm
 import numpy as np
 
 from generator.colorimetry import vendor
@@ -277,14 +276,27 @@ def jplog2() -> LogCamera:
     return LogCamera(2.0, per_stop, code_at_one, 1.0, 0.0, lin_side_break=brk, linear_slope=10.36773919972907)
 
 
+def _colour_models(name: str, **kwargs):
+    """colour.models.<name> with ``kwargs``; colour-science is imported at the first call,
+    not with this module (it takes a second to import)."""
+
+    def call(values):
+        import colour.models
+
+        return getattr(colour.models, name)(values, **kwargs)
+
+    call.__name__ = call.__qualname__ = name
+    return call
+
+
 def _pq_decode(code):
     """SMPTE ST 2084 EOTF, in units of 100 cd/m² (1.0 = 100 cd/m², 100.0 = 10000)."""
-    return cm.eotf_ST2084(code) / 100.0
+    return _colour_models("eotf_ST2084")(code) / 100.0
 
 
 def _pq_encode(linear):
     """SMPTE ST 2084 inverse EOTF from units of 100 cd/m²."""
-    return cm.eotf_inverse_ST2084(np.asarray(linear, dtype=np.float64) * 100.0)
+    return _colour_models("eotf_inverse_ST2084")(np.asarray(linear, dtype=np.float64) * 100.0)
 
 
 def _quiet(fn):
@@ -300,11 +312,9 @@ def _quiet(fn):
 
 
 def _function(name: str, decode, encode, domain=None, discontinuities=()) -> Function:
-    """A :class:`Function` over ``decode``/``encode``; ``domain`` is computed from
-    ``encode`` when it is a callable (see :func:`_lut_domain`)."""
+    """A :class:`Function` over ``decode``/``encode``; ``domain`` may be a rule computing
+    it from the encoding (see :func:`_lut_domain`), evaluated when first asked."""
     decode, encode = _quiet(decode), _quiet(encode)
-    if callable(domain):
-        domain = domain(encode)
     return Function(name, decode, encode, (0.0, 1.0) if domain is None else domain, tuple(discontinuities))
 
 
@@ -341,31 +351,36 @@ def _functions() -> dict[str, Function]:
     """
     functions = (
         _function(
-            "ACEScc", cm.log_decoding_ACEScc, cm.log_encoding_ACEScc, lambda f: (float(f(0.0)), float(f(HALF_MAX)))
+            "ACEScc",
+            _colour_models("log_decoding_ACEScc"),
+            _colour_models("log_encoding_ACEScc"),
+            lambda f: (float(f(0.0)), float(f(HALF_MAX))),
         ),
         _function(
             "Canon Log 2",
-            partial(cm.log_decoding_CanonLog2, **_CANON_DECODE),
-            partial(cm.log_encoding_CanonLog2, **_CANON_ENCODE),
+            _colour_models("log_decoding_CanonLog2", **_CANON_DECODE),
+            _colour_models("log_encoding_CanonLog2", **_CANON_ENCODE),
             _lut_domain,
         ),
         _function(
             "Canon Log 3",
-            partial(cm.log_decoding_CanonLog3, **_CANON_DECODE),
-            partial(cm.log_encoding_CanonLog3, **_CANON_ENCODE),
+            _colour_models("log_decoding_CanonLog3", **_CANON_DECODE),
+            _colour_models("log_encoding_CanonLog3", **_CANON_ENCODE),
             _lut_domain,
         ),
-        _function("Apple Log", cm.log_decoding_AppleLogProfile, cm.log_encoding_AppleLogProfile),
+        _function(
+            "Apple Log", _colour_models("log_decoding_AppleLogProfile"), _colour_models("log_encoding_AppleLogProfile")
+        ),
         _function(
             "N-Log",
-            partial(cm.log_decoding_NLog, **_NLOG_DECODE),
-            partial(cm.log_encoding_NLog, **_NLOG_ENCODE),
+            _colour_models("log_decoding_NLog", **_NLOG_DECODE),
+            _colour_models("log_encoding_NLog", **_NLOG_ENCODE),
             discontinuities=(NLOG_BREAK,),
         ),
         _function("Samsung Log", vendor.samsung_log_decode, vendor.samsung_log_encode),
-        _function("Mi-Log", cm.log_decoding_MiLog, cm.log_encoding_MiLog),
+        _function("Mi-Log", _colour_models("log_decoding_MiLog"), _colour_models("log_encoding_MiLog")),
         _function("ST 2084", _pq_decode, _pq_encode),
-        _function("HLG", cm.oetf_inverse_BT2100_HLG, cm.oetf_BT2100_HLG),
+        _function("HLG", _colour_models("oetf_inverse_BT2100_HLG"), _colour_models("oetf_BT2100_HLG")),
     )
     return {f.name: f for f in functions}
 

@@ -161,9 +161,16 @@ class Function:
     name: str
     decode_fn: Callable = field(compare=False, repr=False)
     encode_fn: Callable = field(compare=False, repr=False)
-    domain: tuple[float, float] = (0.0, 1.0)
+    #: The code-value domain, or a rule computing it from the encoding function
+    #: (evaluated when asked, so colour-science is imported only when needed).
+    domain_rule: tuple[float, float] | Callable = field(default=(0.0, 1.0), compare=False, repr=False)
     #: Code values where the published formula itself jumps (segments that do not meet).
     discontinuities: tuple[float, ...] = ()
+
+    @property
+    def domain(self) -> tuple[float, float]:
+        rule = self.domain_rule
+        return tuple(float(v) for v in (rule(self.encode) if callable(rule) else rule))
 
     def decode(self, code):
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

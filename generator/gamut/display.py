@@ -20,7 +20,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import colour
 import numpy as np
 
 #: Largest magnitude accepted, the largest finite IEEE 754 binary32 value; +Inf maps to it.
@@ -91,12 +90,12 @@ class DisplayGamut:
         if white.shape != (2,) or not np.all(np.isfinite(white)):
             raise ValueError(f"expected a finite white chromaticity (x, y), got {self.white_xy!r}")
         object.__setattr__(self, "white_xy", (float(white[0]), float(white[1])))
-        implied = colour.XYZ_to_xy(self.white_xyz)
+        implied = _xyz_to_xy(self.white_xyz)
         if np.max(np.abs(implied - white)) > _WHITE_AGREEMENT:
             raise ValueError(f"white {tuple(white)} disagrees with the matrix's white {tuple(implied)}")
 
     @classmethod
-    def from_colourspace(cls, colourspace: colour.RGB_Colourspace) -> DisplayGamut:
+    def from_colourspace(cls, colourspace) -> DisplayGamut:
         """The display of a colour-science RGB colourspace (read, never modified)."""
         return cls(colourspace.matrix_RGB_to_XYZ, colourspace.whitepoint)
 
@@ -118,4 +117,10 @@ class DisplayGamut:
     @property
     def primaries_xy(self) -> np.ndarray:
         """Chromaticities of the red, green and blue primaries, shape (3, 2)."""
-        return colour.XYZ_to_xy(self.matrix.T)
+        return _xyz_to_xy(self.matrix.T)
+
+
+def _xyz_to_xy(xyz) -> np.ndarray:
+    """Chromaticity of tristimulus values (..., 3)."""
+    xyz = np.asarray(xyz, dtype=np.float64)
+    return xyz[..., :2] / xyz.sum(axis=-1, keepdims=True)

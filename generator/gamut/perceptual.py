@@ -41,7 +41,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import colour
 import numpy as np
 
 from generator.gamut.display import DisplayGamut, matrix_tuple, sanitize
@@ -56,7 +55,18 @@ CHROMA_BRACKET = 1.0
 _INSIDE_SLACK = 1e-12
 
 #: XYZ that Oklab maps to exactly (1, 0, 0): its implicit white.
-_OKLAB_WHITE_XYZ = colour.Oklab_to_XYZ(np.array([1.0, 0.0, 0.0]))
+
+
+def _colour():
+    """colour-science, imported when a perceptual mapping first runs (it is slow to import)."""
+    import colour
+
+    return colour
+
+
+def _oklab_white_xyz() -> np.ndarray:
+    """XYZ of Oklab's white (L = 1, a = b = 0)."""
+    return _colour().Oklab_to_XYZ(np.array([1.0, 0.0, 0.0]))
 
 
 @dataclass(frozen=True)
@@ -91,19 +101,19 @@ class PerceptualParams:
 
 def adapted_matrix(display: DisplayGamut) -> np.ndarray:
     """Display RGB to Oklab-white-adapted XYZ, shape (3, 3) (CAT02 von Kries)."""
-    cat = colour.adaptation.matrix_chromatic_adaptation_VonKries(
-        display.white_xyz, _OKLAB_WHITE_XYZ, transform="CAT02")
+    cat = _colour().adaptation.matrix_chromatic_adaptation_VonKries(
+        display.white_xyz, _oklab_white_xyz(), transform="CAT02")
     return cat @ display.matrix
 
 
 def display_to_oklab(rgb: np.ndarray, display: DisplayGamut) -> np.ndarray:
     """Finite linear display RGB (..., 3) to display-adapted Oklab (..., 3)."""
-    return colour.XYZ_to_Oklab(rgb @ adapted_matrix(display).T)
+    return _colour().XYZ_to_Oklab(rgb @ adapted_matrix(display).T)
 
 
 def oklab_to_display(lab: np.ndarray, display: DisplayGamut) -> np.ndarray:
     """Display-adapted Oklab (..., 3) to linear display RGB (..., 3)."""
-    return colour.Oklab_to_XYZ(lab) @ np.linalg.inv(adapted_matrix(display)).T
+    return _colour().Oklab_to_XYZ(lab) @ np.linalg.inv(adapted_matrix(display)).T
 
 
 def boundary_chroma(lightness, hue_cos, hue_sin, xyz_to_rgb: np.ndarray) -> np.ndarray:
@@ -127,7 +137,7 @@ def boundary_chroma(lightness, hue_cos, hue_sin, xyz_to_rgb: np.ndarray) -> np.n
     for _ in range(BISECTION_STEPS):
         middle = 0.5 * (inside_low + outside_high)
         lab = np.stack([lightness, middle * hue_cos, middle * hue_sin], axis=-1)
-        rgb = colour.Oklab_to_XYZ(lab) @ xyz_to_rgb.T
+        rgb = _colour().Oklab_to_XYZ(lab) @ xyz_to_rgb.T
         inside = np.all((rgb >= -_INSIDE_SLACK) & (rgb <= 1.0 + _INSIDE_SLACK), axis=-1)
         inside_low = np.where(inside, middle, inside_low)
         outside_high = np.where(inside, outside_high, middle)

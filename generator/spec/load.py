@@ -55,19 +55,24 @@ def default_text() -> str:
     return resources.files("generator.spec").joinpath("default.toml").read_text(encoding="utf-8")
 
 
-def load(path: str | Path | None = None) -> Spec:
-    """Read and validate the spec at ``path``, or the embedded default when None."""
+def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) -> Spec:
+    """Read and validate the spec at ``path``, or the embedded default when None.
+
+    With ``keep``, library colour spaces other than those named there, the scene
+    reference and the roles' targets are left out: commands that use one space
+    (bake) load faster, and never derive gamuts they do not use.
+    """
     if path is None:
-        return parse(default_text(), "<default>", Path.cwd())
+        return parse(default_text(), "<default>", Path.cwd(), keep)
     path = Path(path)
     try:
         text = path.read_text(encoding="utf-8")
     except OSError as error:
         raise SpecError(str(path), "-", f"cannot read the spec: {error.strerror}") from None
-    return parse(text, str(path), path.parent)
+    return parse(text, str(path), path.parent, keep)
 
 
-def parse(text: str, source: str, base: Path) -> Spec:
+def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = None) -> Spec:
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
@@ -77,9 +82,12 @@ def parse(text: str, source: str, base: Path) -> Spec:
     cat = raw.get("chromatic_adaptation", "Bradford")
     if cat not in CATS:
         raise SpecError(source, "chromatic_adaptation", f"unknown {cat!r}; allowed: {', '.join(CATS)}")
-    spaces = _spaces(raw, source, base)
-    names = {n.lower() for s in spaces for n in s.all_names}
     reference = _string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
+    if keep is not None:
+        roles = raw.get("roles", {})
+        keep = (*keep, reference, *DEFAULT_ROLES.values(), *(roles.values() if isinstance(roles, dict) else ()))
+    spaces = _spaces(raw, source, base, keep)
+    names = {n.lower() for s in spaces for n in s.all_names}
     if reference.lower() not in names:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
     inactive = tuple(_name_list(raw.get("inactive", []), source, "inactive", names))
@@ -170,16 +178,27 @@ def from_library(space: library.SpaceDef) -> ColourSpace:
     )
 
 
-def _spaces(raw: dict, source: str, base: Path) -> tuple[ColourSpace, ...]:
+def _spaces(raw: dict, source: str, base: Path, keep=None) -> tuple[ColourSpace, ...]:
     names = raw.get("colour_spaces", ["*"])
     if names == ["*"]:
-        spaces = [from_library(s) for s in library.SPACES]
-    else:
-        spaces = [library_space(n, source, f"colour_spaces[{i}]") for i, n in enumerate(_strings(names, source, "colour_spaces"))]
+        names = [s.name for s in library.SPACES]
+    if keep is not None and isinstance(names, list):
+        wanted = {str(k).lower() for k in keep}
+        names = [n for n in names if not isinstance(n, str) or _library_names(n) & wanted]
+    spaces = [library_space(n, source, f"colour_spaces[{i}]")
+              for i, n in enumerate(_strings(names, source, "colour_spaces"))]
     for i, table in enumerate(raw.get("custom_space", [])):
         spaces.append(_custom_space(table, source, f"custom_space[{i}]", base))
     _unique([n for s in spaces for n in s.all_names], source, "colour_spaces")
     return tuple(spaces)
+
+
+def _library_names(name: str) -> set[str]:
+    """Every name of the library space called ``name`` (lower case), or {name}."""
+    for space in library.SPACES:
+        if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
+            return {n.lower() for n in (space.name, *space.aliases)}
+    return {name.lower()}
 
 
 def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut:
