@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import tempfile
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -54,6 +55,13 @@ def view_transform(matrix, path: str):
 
     return ocio.GroupTransform([matrix_transform(np.asarray(matrix)),
                                 ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)])
+
+
+@lru_cache(maxsize=64)
+def bake_view_lut_cached(spec: Spec, display: Display, method: str) -> ViewLut:
+    """:func:`bake_view_lut` with default size and parameters, once per process for the same
+    spec, display and method (a view LUT does not depend on the target OCIO version)."""
+    return bake_view_lut(spec, display, method)
 
 
 def bake_view_lut(spec: Spec, display: Display, method: str, size: int = VIEW_SIZE, params=None) -> ViewLut:

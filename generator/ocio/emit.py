@@ -15,7 +15,7 @@ from generator.colorimetry import reference
 from generator.luts.curve1d import BakedCurve
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
-from generator.spec.load import DISPLAY_REFERENCE
+from generator.spec.load import DISPLAY_REFERENCE, VIEW_METHODS
 from generator.spec.schema import ColourSpace, Display, Spec
 
 SCENE = ocio.REFERENCE_SPACE_SCENE
@@ -32,8 +32,11 @@ CATEGORIES = {
 
 @dataclass(frozen=True)
 class Emitted:
+    """A config, the 1D curve LUTs it references, and the view LUT files (name -> bytes)."""
+
     config: ocio.Config
     luts: dict[str, BakedCurve]
+    view_luts: dict[str, bytes]
 
 
 def matrix_transform(matrix: np.ndarray, direction=ocio.TRANSFORM_DIR_FORWARD) -> ocio.MatrixTransform:
@@ -73,16 +76,7 @@ def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace
 
 def _display_space(spec: Spec, display: Display, bakes: dict) -> ocio.ColorSpace:
     """Display-referred space: XYZ-D65 -> display RGB -> clip to [0, peak] -> inverse EOTF."""
-    to_rgb = reference.display_matrix(spec, display)
-    steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high,
-                                                           minOutValue=0.0, maxOutValue=display.clip_high)]
-    if display.eotf_name == "HLG":
-        steps += [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN)]
-    else:
-        decode = curves.decode_transforms(_curve_label(display.name, display.eotf_name), display.eotf,
-                                          spec.ocio_version, bakes)
-        if decode:
-            steps.append(ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE))
+    steps = _display_steps(spec, display, bakes)
     cs = ocio.ColorSpace(DISPLAY, name=display.name, aliases=list(display.aliases), family="Display",
                          encoding=display.encoding, description=display.description, categories=["file-io"])
     cs.setTransform(ocio.GroupTransform(steps), ocio.COLORSPACE_DIR_FROM_REFERENCE)
@@ -95,7 +89,48 @@ def _display_reference_space() -> ocio.ColorSpace:
                            categories=["file-io"])
 
 
-def _views(spec: Spec, cfg: ocio.Config) -> None:
+def _display_steps(spec: Spec, display: Display, bakes: dict) -> list:
+    """CIE XYZ-D65 -> display RGB -> clip to [0, peak] -> display code values."""
+    to_rgb = reference.display_matrix(spec, display)
+    steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high,
+                                                           minOutValue=0.0, maxOutValue=display.clip_high)]
+    if display.eotf_name == "HLG":
+        return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN)]
+    decode = curves.decode_transforms(_curve_label(display.name, display.eotf_name), display.eotf,
+                                      spec.ocio_version, bakes)
+    return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
+
+
+def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict, view_luts: dict) -> ocio.ViewTransform:
+    """Scene reference -> display RGB (1 = peak) -> gamut mapping -> CIE XYZ-D65.
+
+    RGC is analytic (OCIO's FixedFunction ACES_GAMUT_COMP_13, in the display's RGB);
+    the other methods are a CLF lattice in the display's code values whose output
+    the display's own encoding is undone from, so the display space re-encodes it
+    exactly."""
+    from generator.gamut import RGCParams
+    from generator.luts.view import bake_view_lut_cached
+
+    method = VIEW_METHODS[view]
+    to_display = reference.scene_to_display_matrix(spec, display) / display.clip_high
+    to_xyz = np.linalg.inv(reference.display_matrix(spec, display)) * display.clip_high
+    if method == "rgc":
+        steps = [matrix_transform(to_display),
+                 ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, RGCParams().as_ocio_params()),
+                 matrix_transform(to_xyz)]
+    else:
+        lut = bake_view_lut_cached(spec, display, method)
+        view_luts[lut.filename] = lut.data
+        steps = [matrix_transform(np.asarray(lut.matrix)),
+                 ocio.FileTransform(src=lut.filename, interpolation=ocio.INTERP_TETRAHEDRAL),
+                 ocio.GroupTransform(_display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE)]
+    vt = ocio.ViewTransform(SCENE, name=f"{view} ({display.name})", family="Gamut mapped",
+                            description=f"{view} gamut mapping into {display.name}")
+    vt.setTransform(ocio.GroupTransform(steps), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    return vt
+
+
+def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict) -> None:
     vt = ocio.ViewTransform(SCENE, name=COLORIMETRIC, family="Colorimetric",
                             description="Scene reference to CIE XYZ-D65, no tone or gamut mapping; displays clip per channel")
     vt.setTransform(matrix_transform(reference.scene_to_display_reference(spec)), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
@@ -105,8 +140,12 @@ def _views(spec: Spec, cfg: ocio.Config) -> None:
         for view in display.views:
             if view == "Raw":
                 cfg.addDisplayView(display.name, view, raw)
-            else:
+            elif view == COLORIMETRIC:
                 cfg.addDisplayView(display.name, view, COLORIMETRIC, display.name, "", "", "")
+            else:
+                mapped = _mapped_view_transform(spec, display, view, bakes, view_luts)
+                cfg.addViewTransform(mapped)
+                cfg.addDisplayView(display.name, view, mapped.getName(), display.name, "", "", "")
     cfg.setActiveDisplays(", ".join(d.name for d in spec.displays))
     views = list(dict.fromkeys(v for d in spec.displays for v in d.views))
     cfg.setActiveViews(", ".join(views))
@@ -147,7 +186,8 @@ def emit(spec: Spec) -> Emitted:
     cfg.addColorSpace(_display_reference_space())
     for display in spec.displays:
         cfg.addColorSpace(_display_space(spec, display, bakes))
-    _views(spec, cfg)
+    view_luts: dict[str, bytes] = {}
+    _views(spec, cfg, bakes, view_luts)
     if spec.display_view_spaces:
         _display_view_spaces(spec, cfg)
     for role, target in spec.roles:
@@ -156,4 +196,4 @@ def emit(spec: Spec) -> Emitted:
     if spec.inactive:
         cfg.setInactiveColorSpaces(", ".join(spec.inactive))
     cfg.validate()
-    return Emitted(cfg, dict(sorted(bakes.items())))
+    return Emitted(cfg, dict(sorted(bakes.items())), dict(sorted(view_luts.items())))

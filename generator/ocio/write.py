@@ -38,15 +38,18 @@ def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None
 def write_files(spec: Spec, folder: Path) -> BuildResult:
     emitted = emit(spec)
     (folder / CONFIG_FILENAME).write_text(emitted.config.serialize(), encoding="utf-8")
-    if emitted.luts:
+    if emitted.luts or emitted.view_luts:
         (folder / LUT_FOLDER).mkdir()
     for name, lut in emitted.luts.items():
         (folder / LUT_FOLDER / name).write_text(format_spi1d(lut.values), encoding="utf-8")
+    for name, data in emitted.view_luts.items():
+        (folder / LUT_FOLDER / name).write_bytes(data)
     (folder / resolved.FILENAME).write_text(resolved.dumps(spec), encoding="utf-8")
     cfg = emitted.config
     views = sum(len(cfg.getViews(d)) for d in cfg.getDisplays())
     worst = max((lut.max_relative_error for lut in emitted.luts.values()), default=0.0)
-    return BuildResult(folder, len(cfg.getColorSpaceNames()), len(cfg.getDisplays()), views, len(emitted.luts) + 2, worst)
+    files = len(emitted.luts) + len(emitted.view_luts) + 2
+    return BuildResult(folder, len(cfg.getColorSpaceNames()), len(cfg.getDisplays()), views, files, worst)
 
 
 def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:

@@ -24,8 +24,16 @@ DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "white", "eotf
 FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension")
 ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "hdr-video", "data")
 
-#: Views every display may offer (gamut-mapped views extend this list).
-VIEWS = ("Colorimetric", "Raw")
+#: Views a display may offer: each scene-referred view names its gamut-mapping method
+#: (generator.gamut.METHODS); Raw shows data unchanged.
+VIEW_METHODS = {"Colorimetric": "clip", "Desaturate": "desaturate", "Scale": "scale", "Perceptual": "perceptual",
+                "RGC": "rgc"}
+VIEWS = (*VIEW_METHODS, "Raw")
+
+#: Views a display offers when the spec does not say: the lecture's desaturation and the
+#: perceptual compression on SDR displays, the ACES gamut compression (analytic) everywhere.
+DEFAULT_SDR_VIEWS = ("Colorimetric", "Desaturate", "Perceptual", "RGC", "Raw")
+DEFAULT_HDR_VIEWS = ("Colorimetric", "RGC", "Raw")
 
 #: Roles a config must set so hosts load it without warnings, with their default targets.
 DEFAULT_ROLES = {
@@ -251,14 +259,15 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
 
     _check_keys(table, DISPLAY_KEYS, source, f"{field}.")
     name = _string(table.get("name", ""), source, f"{field}.name")
-    views = _strings(table.get("views", list(VIEWS)), source, f"{field}.views")
-    for i, view in enumerate(views):
+    views = _strings(table["views"], source, f"{field}.views") if "views" in table else None
+    for i, view in enumerate(views or ()):
         if view not in VIEWS:
             raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}; allowed: {', '.join(VIEWS)}")
     known = {d.name.lower(): d for d in library.DISPLAYS}
     custom = any(k in table for k in ("gamut", "primaries", "eotf"))
     if name.lower() in known and not custom:
         d = known[name.lower()]
+        views = views or (DEFAULT_SDR_VIEWS if d.encoding == "sdr-video" else DEFAULT_HDR_VIEWS)
         return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
         raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
@@ -271,6 +280,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     if not (hdr and 100.0 <= peak <= 10000.0) and not (not hdr and peak == 100.0):
         raise SpecError(source, f"{field}.peak_luminance",
                         "allowed: 100 to 10000 cd/m² for ST 2084 displays, 100 for SDR (1.0 = 100 cd/m²)")
+    views = views or (DEFAULT_HDR_VIEWS if hdr else DEFAULT_SDR_VIEWS)
     return Display(name, _gamut(table, source, field, base, name), eotf, eotf_name, views,
                    _strings(table.get("aliases", []), source, f"{field}.aliases"), peak,
                    "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"))

@@ -1,4 +1,4 @@
-"""The Oklab chroma compression: hue, lightness, threshold, limit, monotonicity."""
+"""The Oklab chroma compression toward a lightness focus: hue, lines, threshold, limit, monotonicity."""
 
 from __future__ import annotations
 
@@ -11,13 +11,14 @@ from hypothesis.extra.numpy import arrays
 
 from generator.gamut import PerceptualParams, perceptual
 from generator.gamut.perceptual import (
-    adapted_matrix, boundary_chroma, compress_chroma, compress_ratio, display_to_oklab,
-    oklab_to_display)
+    adapted_matrix, boundary_chroma, compress_along_lines, compress_ratio, cusp_table, display_to_oklab,
+    focus_lightness, line_through, oklab_to_display)
 from generator.tolerances import (
-    GAMUT_BOUNDARY_ABSOLUTE, GAMUT_HUE_MIN_CHROMA, GAMUT_MONOTONE_ABSOLUTE, GAMUT_OKLAB_ABSOLUTE,
-    GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE)
+    GAMUT_BOUNDARY_ABSOLUTE, GAMUT_HUE_MIN_CHROMA, GAMUT_OKLAB_ABSOLUTE, GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE)
 from tests.gamut import cases
 
+SOFT = PerceptualParams(threshold=0.8, limit=1.25)
+EXACT = PerceptualParams(threshold=1.0)
 LIGHTNESSES = np.array([0.2, 0.4, 0.6, 0.8, 0.95])
 HUES = np.linspace(0.0, 2.0 * np.pi, 36, endpoint=False)
 
@@ -27,15 +28,34 @@ def lch(rgb, display):
     return lab[..., 0], np.hypot(lab[..., 1], lab[..., 2]), np.arctan2(lab[..., 2], lab[..., 1])
 
 
-def display_boundary(lightness, hue, display):
-    return boundary_chroma(lightness, np.cos(hue), np.sin(hue), np.linalg.inv(adapted_matrix(display)))
+def line_of(lightness, chroma, hue, display, params=SOFT):
+    """The grey and slope of each colour's line, and its focus lightness."""
+    focus = focus_lightness(np.cos(hue), np.sin(hue), display)
+    return (*line_through(lightness, chroma, focus, params.focus_distance), focus)
 
 
-def ramps(display, count=400, top=0.6):
+def display_boundary(axis, slope, hue, display):
+    return boundary_chroma(axis, slope, np.cos(hue), np.sin(hue), adapted_matrix(display))
+
+
+def ratios(rgb, display, params=SOFT):
+    """``C / C_d`` along each colour's line, and whether its grey is within [0, 1]."""
+    lightness, chroma, hue = lch(rgb, display)
+    axis, slope, _ = line_of(lightness, chroma, hue, display, params)
+    boundary = display_boundary(axis, slope, hue, display)
+    return chroma / np.maximum(boundary, 1e-300), (axis >= 0.0) & (axis <= 1.0)
+
+
+def constant_lightness_ramps(display, count=400, top=0.6):
     """Constant-L, constant-hue chroma ramps from 0 to `top`: RGB (L, h, C, 3) and the grid."""
     lightness, hue, chroma = np.meshgrid(LIGHTNESSES, HUES, np.linspace(0, top, count), indexing="ij")
     lab = np.stack([lightness, chroma * np.cos(hue), chroma * np.sin(hue)], axis=-1)
     return oklab_to_display(lab, display), lightness, hue, chroma
+
+
+def edge_distance(rgb):
+    """Distance of each colour from the cube's surface (0 on it)."""
+    return np.minimum(rgb.min(axis=-1), 1.0 - rgb.max(axis=-1))
 
 
 @pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
@@ -52,24 +72,40 @@ def test_display_white_and_greys_are_oklab_neutral(display_name):
 
 
 @pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
-def test_boundary_chroma_brackets_the_cube_surface(display_name):
+def test_the_focus_is_at_the_lightness_of_each_hue_s_most_chromatic_colour(display_name):
     d = cases.display(display_name)
-    lightness, hue = np.meshgrid(LIGHTNESSES, HUES, indexing="ij")
-    chroma = display_boundary(lightness, hue, d)
+    hue = np.radians(np.arange(360.0))  # whole degrees miss the blue primary's 0.15-degree fold
+    focus = focus_lightness(np.cos(hue), np.sin(hue), d)
+    level = np.zeros_like(hue)
+    at_focus = display_boundary(focus, level, hue, d)
+    for step in (-1e-3, 1e-3):
+        assert np.all(display_boundary(focus + step, level, hue, d) < at_focus)
+    table_hue, table_lightness = cusp_table(d)
+    assert np.all(np.diff(table_hue[np.argsort(table_hue)]) > 0) and not table_lightness.flags.writeable
+
+
+@pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
+def test_boundary_chroma_brackets_the_cube_surface_along_each_line(display_name):
+    d = cases.display(display_name)
+    axis, hue = np.meshgrid(LIGHTNESSES, HUES, indexing="ij")
+    focus = focus_lightness(np.cos(hue), np.sin(hue), d)
+    slope = (axis - focus) / SOFT.focus_distance
+    chroma = display_boundary(axis, slope, hue, d)
     for factor, inside in ((1.0, True), (1.0 + 1e-9, False)):
         c = chroma * factor + (0.0 if inside else 1e-12)
-        rgb = oklab_to_display(np.stack([lightness, c * np.cos(hue), c * np.sin(hue)], -1), d)
-        in_cube = np.all((rgb >= -1e-12) & (rgb <= 1 + 1e-12), axis=-1)
-        assert np.all(in_cube == inside)
+        lab = np.stack([axis + slope * c, c * np.cos(hue), c * np.sin(hue)], -1)
+        rgb = oklab_to_display(lab, d)
+        assert np.all(np.all((rgb >= -1e-12) & (rgb <= 1 + 1e-12), axis=-1) == inside)
 
 
 def test_compression_curve():
     x = np.linspace(0.0, 3.0, 3001)
-    for threshold, limit in ((0.8, 1.25), (0.5, 2.0), (0.9, 1.0)):
+    for threshold, limit in ((0.8, 1.25), (0.5, 2.0), (0.9, 1.0), (1.0, 1.25)):
         y = compress_ratio(x, threshold, np.float64(limit))
         assert np.array_equal(y[x <= threshold], x[x <= threshold])
         assert np.all(np.diff(y) >= 0.0) and np.all(y <= 1.0) and np.all(y <= x)
         assert np.all(y[x >= limit] == 1.0)
+    for threshold, limit in ((0.8, 1.25), (0.5, 2.0)):
         # Slope 1 at the threshold (C1): one-sided difference quotient.
         h = 1e-7
         slope = (compress_ratio(np.array(threshold + h), threshold, np.float64(limit)) - threshold) / h
@@ -80,53 +116,59 @@ def test_compression_curve():
 def test_inside_threshold_unchanged_and_in_gamut_rest_moves_inwards(display_name):
     d = cases.display(display_name)
     rgb = cases.display_colours()
-    lightness, chroma, hue = lch(rgb, d)
-    ratio = chroma / np.maximum(display_boundary(np.clip(lightness, 0, 1), hue, d), 1e-300)
-    out = perceptual(rgb, d)
-    inside = ratio <= PerceptualParams().threshold
-    assert inside.mean() > 0.5
+    ratio, _ = ratios(rgb, d)
+    out = perceptual(rgb, d, SOFT)
+    inside = ratio <= SOFT.threshold
+    assert inside.mean() > 0.6  # measured 0.62 of the cube's volume
     assert np.array_equal(out[inside], rgb[inside])
+    _, chroma, _ = lch(rgb[~inside], d)
     _, out_chroma, _ = lch(out[~inside], d)
-    assert np.all(out_chroma <= chroma[~inside] + GAMUT_MONOTONE_ABSOLUTE)
+    assert np.all(out_chroma <= chroma + GAMUT_OKLAB_ABSOLUTE)
 
 
 @pytest.mark.parametrize("display_name, source", cases.PAIRS)
-def test_keeps_oklab_lightness_and_hue(display_name, source):
+@pytest.mark.parametrize("params", [SOFT, EXACT], ids=["soft", "exact"])
+def test_keeps_hue_and_moves_along_the_line_toward_the_focus(display_name, source, params):
     d = cases.display(display_name)
     rgb = cases.source_colours(source, display_name)
-    lightness, _, hue = lch(rgb, d)
-    out_lightness, out_chroma, out_hue = lch(perceptual(rgb, d), d)
-    assert np.max(np.abs(out_lightness - lightness)) <= GAMUT_OKLAB_ABSOLUTE
-    coloured = out_chroma >= GAMUT_HUE_MIN_CHROMA
+    lightness, chroma, hue = lch(rgb, d)
+    axis, _, focus = line_of(lightness, chroma, hue, d, params)
+    out_lightness, out_chroma, out_hue = lch(perceptual(rgb, d, params), d)
+    on_axis = (axis >= 0.0) & (axis <= 1.0)
+    coloured = on_axis & (out_chroma >= GAMUT_HUE_MIN_CHROMA)
     assert coloured.mean() > 0.95
     turn = np.angle(np.exp(1j * (out_hue - hue)))[coloured]
     assert np.max(np.abs(turn)) <= GAMUT_OKLAB_ABSOLUTE
+    # The focus (L_f, -D), the colour and its image are collinear, and lightness moves toward L_f.
+    distance = params.focus_distance
+    cross = (lightness - focus) * (out_chroma + distance) - (out_lightness - focus) * (chroma + distance)
+    assert np.max(np.abs(cross[on_axis])) <= GAMUT_OKLAB_ABSOLUTE
+    toward = np.abs(out_lightness - focus) <= np.abs(lightness - focus) + GAMUT_OKLAB_ABSOLUTE
+    assert np.all(toward[on_axis])
 
 
 @pytest.mark.parametrize("display_name, source", cases.PAIRS)
-def test_compressed_chroma_is_exactly_monotone_at_fixed_lightness_and_hue(display_name, source):
+def test_compressed_chroma_is_exactly_monotone_along_each_line(display_name, source):
     d = cases.display(display_name)
-    lightness, hue, chroma = np.meshgrid(LIGHTNESSES, HUES, np.linspace(0, 0.6, 400), indexing="ij")
-    for params in (PerceptualParams(), PerceptualParams(source_to_display=cases.source_to_display(
-            source, display_name))):
-        out, ratio = compress_chroma(lightness, chroma, np.cos(hue), np.sin(hue), d, params)
+    axis, hue, chroma = np.meshgrid(LIGHTNESSES, HUES, np.linspace(0, 0.6, 400), indexing="ij")
+    slope = (axis - focus_lightness(np.cos(hue), np.sin(hue), d)) / SOFT.focus_distance
+    for params in (SOFT, EXACT, PerceptualParams(source_to_display=cases.source_to_display(source, display_name))):
+        out, ratio = compress_along_lines(chroma, axis, slope, np.cos(hue), np.sin(hue), d, params)
         assert np.all(np.diff(out, axis=-1) >= 0.0) and np.all(out <= chroma)
         assert np.array_equal(out[ratio <= params.threshold], chroma[ratio <= params.threshold])
 
 
 @pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
-def test_chroma_ramps_are_monotone_and_end_on_the_boundary(display_name):
+@pytest.mark.parametrize("params", [SOFT, EXACT], ids=["soft", "exact"])
+def test_constant_lightness_chroma_ramps_are_monotone_and_end_on_the_boundary(display_name, params):
     d = cases.display(display_name)
-    rgb, lightness, hue, chroma = ramps(d)
-    out = perceptual(rgb, d)
-    out_lightness, out_chroma, _ = lch(out, d)
-    assert np.max(np.abs(out_lightness - lch(rgb, d)[0])) <= GAMUT_OKLAB_ABSOLUTE
+    rgb, lightness, hue, chroma = constant_lightness_ramps(d)
+    out = perceptual(rgb, d, params)
+    _, out_chroma, _ = lch(out, d)
     assert np.min(np.diff(out_chroma, axis=-1)) >= -GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE
-    # Beyond limit x boundary the colour sits on the display boundary: a channel at 0 or 1.
-    limit = PerceptualParams().limit * display_boundary(lightness[..., 0], hue[..., 0], d)
-    beyond = chroma >= limit[..., None]
-    edge = np.minimum(out.min(axis=-1), 1.0 - out.max(axis=-1))
-    assert beyond.mean() > 0.3 and np.max(edge[beyond]) <= GAMUT_BOUNDARY_ABSOLUTE
+    ratio, on_axis = ratios(rgb, d, params)
+    beyond = (ratio >= params.limit) & on_axis
+    assert beyond.mean() > 0.3 and np.max(edge_distance(out[beyond])) <= GAMUT_BOUNDARY_ABSOLUTE
 
 
 @pytest.mark.parametrize("display_name, source", cases.PAIRS)
@@ -139,27 +181,68 @@ def test_source_gamut_surface_lands_on_the_display_boundary(display_name, source
     rgb = surface @ matrix.T
     outside = np.any((rgb < 0.0) | (rgb > 1.0), axis=-1)
     out = perceptual(rgb[outside], d, params)
-    edge = np.minimum(out.min(axis=-1), 1.0 - out.max(axis=-1))
-    assert outside.mean() > 0.3 and np.max(edge) <= GAMUT_BOUNDARY_ABSOLUTE
+    assert outside.mean() > 0.3 and np.max(edge_distance(out)) <= GAMUT_BOUNDARY_ABSOLUTE
 
 
-@pytest.mark.parametrize("bad", [dict(threshold=1.0), dict(threshold=-0.1), dict(limit=0.9),
-                                 dict(limit=float("inf")), dict(source_to_display=np.zeros((3, 3)))])
+@pytest.mark.parametrize("display_name, source", cases.PAIRS)
+def test_threshold_one_leaves_the_cube_and_clips_the_rest_onto_its_boundary(display_name, source):
+    d = cases.display(display_name)
+    inside = cases.display_colours()
+    assert np.array_equal(perceptual(inside, d, EXACT), inside)
+    rgb = cases.source_colours(source, display_name)
+    rgb = rgb[np.any((rgb < 0.0) | (rgb > 1.0), axis=-1)]
+    out = perceptual(rgb, d, EXACT)
+    assert np.max(edge_distance(out)) <= GAMUT_BOUNDARY_ABSOLUTE
+    _, _, hue = lch(rgb, d)
+    _, out_chroma, out_hue = lch(out, d)
+    coloured = out_chroma >= GAMUT_HUE_MIN_CHROMA
+    assert np.max(np.abs(np.angle(np.exp(1j * (out_hue - hue)))[coloured])) <= GAMUT_OKLAB_ABSOLUTE
+
+
+@pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
+def test_threshold_one_leaves_the_display_cube_untouched(display_name):
+    """Threshold 1 clips onto the boundary along the lines: the cube itself is the identity."""
+    rgb = cases.display_colours()
+    assert PerceptualParams().threshold == 0.8
+    assert np.array_equal(perceptual(rgb, cases.display(display_name), PerceptualParams(threshold=1.0)), rgb)
+
+
+@pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
+def test_displacement_vanishes_to_second_order_at_the_threshold(display_name):
+    """C1 at the edge of the untouched region: just beyond it a colour moves by O(excess^2)."""
+    d = cases.display(display_name)
+    axis, hue = np.meshgrid(LIGHTNESSES, HUES, indexing="ij")
+    slope = (axis - focus_lightness(np.cos(hue), np.sin(hue), d)) / SOFT.focus_distance
+    edge = SOFT.threshold * display_boundary(axis, slope, hue, d)
+    moves = []
+    for excess in (1e-3, 1e-4):
+        chroma = edge * (1.0 + excess)
+        out, _ = compress_along_lines(chroma, axis, slope, np.cos(hue), np.sin(hue), d, SOFT)
+        moves.append((chroma - out) / (chroma - edge))
+    assert np.all(moves[0] > 0.0)
+    assert np.all(moves[1] <= 0.11 * moves[0])  # relative move proportional to the excess: order 2
+
+
+@pytest.mark.parametrize("bad", [dict(threshold=1.1), dict(threshold=-0.1), dict(limit=0.9),
+                                 dict(limit=float("inf")), dict(focus_distance=0.0),
+                                 dict(focus_distance=float("inf")), dict(source_to_display=np.zeros((3, 3)))])
 def test_invalid_parameters_are_refused(bad):
     with pytest.raises(ValueError):
         PerceptualParams(**bad)
 
 
-def test_brighter_than_white_is_white_and_below_black_is_black():
+@pytest.mark.parametrize("params", [SOFT, EXACT], ids=["soft", "exact"])
+def test_brighter_than_white_is_white_and_below_black_is_black(params):
     d = cases.display("ITU-R BT.709")
     rgb = np.array([[65504.0, 0.0, 0.0], [1.5, 1.5, 1.5], [-1.0, -1.0, -1.0], [-65504.0, 0.0, 0.0]])
-    assert np.array_equal(perceptual(rgb, d), [[1.0] * 3, [1.0] * 3, [0.0] * 3, [0.0] * 3])
+    assert np.array_equal(perceptual(rgb, d, params), [[1.0] * 3, [1.0] * 3, [0.0] * 3, [0.0] * 3])
 
 
 @settings(deadline=None, max_examples=60)
 @given(arrays(np.float64, (8, 3), elements=st.one_of(
-    st.floats(-65504.0, 65504.0), st.sampled_from([np.nan, np.inf, -np.inf]))))
-def test_with_a_source_gamut_any_input_maps_into_the_cube(rgb):
-    params = PerceptualParams(source_to_display=cases.source_to_display("ACEScg", "P3-D65"))
+    st.floats(-65504.0, 65504.0), st.sampled_from([np.nan, np.inf, -np.inf]))),
+    st.sampled_from([0.0, 0.8, 1.0]))
+def test_with_a_source_gamut_any_input_maps_into_the_cube(rgb, threshold):
+    params = PerceptualParams(threshold=threshold, source_to_display=cases.source_to_display("ACEScg", "P3-D65"))
     out = perceptual(rgb, cases.display("P3-D65"), params)
     assert np.all(np.isfinite(out)) and np.all((out >= 0.0) & (out <= 1.0))

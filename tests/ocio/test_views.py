@@ -1,0 +1,59 @@
+"""Every view of every display in the built config, through OCIO, against the reference.
+
+Targets (33³ lattices): in-gamut colours within LUT_CLF_IN_GAMUT_CODES ten-bit codes
+(ANALYTIC_DELTA_E_ITP for HDR) for every view but Perceptual (PERCEPTUAL_VIEW_IN_GAMUT_CODES,
+an open gap), and every probe set within LUT_CLF_SCALE_CODES for the views that clip or scale.
+HLG displays leave out the dark set: OCIO's HLG builtin departs from BT.2100 below
+HLG_BUILTIN_BLACK (see tests/ocio/test_emit.py).
+"""
+
+import numpy as np
+import PyOpenColorIO as ocio
+import pytest
+
+from generator import tolerances
+from generator.luts import probes
+from generator.spec import resolved
+from generator.spec.load import VIEW_METHODS
+
+
+@pytest.fixture(scope="module")
+def built(build_config):
+    path = build_config((2, 1))
+    return ocio.Config.CreateFromFile(str(path)), resolved.read_beside(path)
+
+
+def view_apply(cfg, spec, display, view):
+    processor = cfg.getProcessor(spec.scene_reference, display.name, view, ocio.TRANSFORM_DIR_FORWARD)
+    cpu = processor.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS)
+
+    def apply(rgb):
+        pixels = np.ascontiguousarray(rgb, dtype=np.float32)
+        cpu.applyRGB(pixels)
+        return pixels.astype(np.float64)
+
+    return apply
+
+
+def cases(spec):
+    return [(d, v) for d in spec.displays for v in d.views if v in VIEW_METHODS]
+
+
+def test_every_view_meets_its_targets(built):
+    cfg, spec = built
+    failures = []
+    for display, view in cases(spec):
+        method = VIEW_METHODS[view]
+        figures = probes.measure(spec, None, display, method, view_apply(cfg, spec, display, view),
+                                 gamut_source=spec.space("ACEScg"), count=1024)
+        if display.eotf_name == "HLG":
+            figures.pop("dark")
+        in_gamut = tolerances.ANALYTIC_DELTA_E_ITP if display.is_hdr else tolerances.LUT_CLF_IN_GAMUT_CODES
+        if method == "perceptual":
+            in_gamut = tolerances.PERCEPTUAL_VIEW_IN_GAMUT_CODES
+        if figures["in_gamut"].maximum > in_gamut:
+            failures.append((display.name, view, "in_gamut", figures["in_gamut"].maximum))
+        if method in ("clip", "scale"):
+            limit = tolerances.ANALYTIC_DELTA_E_ITP if display.is_hdr else tolerances.LUT_CLF_SCALE_CODES
+            failures += [(display.name, view, name, f.maximum) for name, f in figures.items() if f.maximum > limit]
+    assert not failures, failures
