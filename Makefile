@@ -15,12 +15,16 @@ $(STAMP): pyproject.toml
 
 run: $(STAMP)
 	$(BIN)/ocioforge build -o $(CONFIG) --force
+	$(BIN)/ocioforge verify $(CONFIG)/config.ocio --summary --report build/verify
 
 test: $(STAMP)
 	$(BIN)/pytest -n 2 -p no:warnings
 
 bench: $(STAMP)
 	$(BIN)/python bench/build.py
+	$(BIN)/python bench/verify.py
+	$(BIN)/python bench/lut_accuracy.py
+	$(BIN)/python bench/lut_bake.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache

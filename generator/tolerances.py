@@ -139,7 +139,7 @@ PERCEPTUAL_VIEW_IN_GAMUT_CODES = 45.0
 LUT_CLF_EXACT_CODES = 0.05
 
 #: CLF of clip or scale into HLG, 33³, every probe set, ΔE ITP: HLG's inverse EOTF is not
-#: per channel, so the lattice interpolates its luminance factor (measured 0.18).
+#: per channel, so the lattice interpolates its luminance factor (measured 0.22).
 LUT_CLF_HLG_DELTA_E_ITP = 0.25
 
 #: ociobakelut's (OCIO 2.1) best 33³ Resolve .cube of ACEScg to sRGB - Display with clip
@@ -155,3 +155,9 @@ LUT_CUBE_P99_RATIO = 2.0
 #: interpolation takes greys from the diagonal's nodes, kept at their sampled values, and the
 #: shaper is linear in code values between nodes (measured 0.2: the uniform shaper table).
 LUT_CUBE_GREY_CODES = 0.5
+
+#: CLF of clip or scale, 33³, every probe set, ten-bit codes, when the file decodes the source
+#: itself: OCIO's float32 Log operator is within about 3e-6 of the curve, which the matrix and
+#: a steep encoding can amplify (measured 0.09, ACEScct to sRGB, brightest over-range colours;
+#: the issue's target).
+LUT_CLF_EVERY_SET_CODES = 1.0

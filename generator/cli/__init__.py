@@ -13,6 +13,8 @@ COMMANDS = {
     "init": "Write the embedded default spec, commented, to a file.",
     "matrix": "Print the 3x3 matrix from one colour space's linear RGB to another's.",
     "bake": "Bake a transform from a colour space to a display into a LUT file (.cube, .spi3d, .clf).",
+    "verify": "Verify a built config: images through OCIO engines against the spec's own evaluation.",
+    "plot": "Draw the CIE 1931 chromaticity diagram of a built config's colour spaces.",
     "info": "Describe a library colour space: gamut, white, curve, matrices.",
     "list": "List the library's colour spaces, displays and curves.",
 }

@@ -69,7 +69,9 @@ def display_encode(display: Display, rgb) -> np.ndarray:
     if display.eotf_name == "HLG":
         from colour.models import eotf_inverse_BT2100_HLG
 
-        return np.asarray(eotf_inverse_BT2100_HLG(rgb * 100.0, L_B=0.0, L_W=display.peak), dtype=np.float64)
+        # A display signal ends at code 1: saturated colours near the peak would need more.
+        code = eotf_inverse_BT2100_HLG(rgb * 100.0, L_B=0.0, L_W=display.peak)
+        return np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
     return display.eotf.encode(rgb)
 
 

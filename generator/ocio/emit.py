@@ -95,7 +95,9 @@ def _display_steps(spec: Spec, display: Display, bakes: dict) -> list:
     steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high,
                                                            minOutValue=0.0, maxOutValue=display.clip_high)]
     if display.eotf_name == "HLG":
-        return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN)]
+        # The signal ends at code 1 (OCIO 2.1's builtin clamps there, later versions do not).
+        return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),
+                        ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0)]
     decode = curves.decode_transforms(_curve_label(display.name, display.eotf_name), display.eotf,
                                       spec.ocio_version, bakes)
     return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])

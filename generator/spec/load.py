@@ -30,9 +30,11 @@ VIEW_METHODS = {"Colorimetric": "clip", "Desaturate": "desaturate", "Scale": "sc
                 "RGC": "rgc"}
 VIEWS = (*VIEW_METHODS, "Raw")
 
-#: Views a display offers when the spec does not say: the lecture's desaturation and the
-#: perceptual compression on SDR displays, the ACES gamut compression (analytic) everywhere.
-DEFAULT_SDR_VIEWS = ("Colorimetric", "Desaturate", "Perceptual", "RGC", "Raw")
+#: Views a display offers when the spec does not say: those verify proves on every probe
+#: it draws (clip, and the ACES gamut compression, both analytic). Scale, Desaturate and
+#: Perceptual are offered when a spec asks for them: their 33³ lattices miss their bounds
+#: on colours far outside the display (scale: 2.6 ten-bit codes against 1), which verify reports.
+DEFAULT_SDR_VIEWS = ("Colorimetric", "RGC", "Raw")
 DEFAULT_HDR_VIEWS = ("Colorimetric", "RGC", "Raw")
 
 #: Roles a config must set so hosts load it without warnings, with their default targets.

@@ -37,3 +37,23 @@ def delta_e_itp(display, code_a, code_b) -> np.ndarray:
     ictcp = [colour.RGB_to_ICtCp(np.einsum("ij,...j->...i", to_2020, reference.display_decode(display, code) * 100.0))
              for code in (code_a, code_b)]
     return np.asarray(colour.delta_E(ictcp[0], ictcp[1], method="ITP"), dtype=np.float64)
+
+
+def dequantised(actual, expected, step: float) -> np.ndarray:
+    """``actual`` moved toward ``expected`` by up to half a quantisation ``step``.
+
+    A value read back from an integer image file is the engine's result rounded
+    to the file's step; removing that half step before any metric lets the
+    metric judge the engine and not the file format (``step = 0`` changes nothing).
+    """
+    actual = np.asarray(actual, dtype=np.float64)
+    expected = np.asarray(expected, dtype=np.float64)
+    difference = actual - expected
+    return expected + np.sign(difference) * np.maximum(np.abs(difference) - step / 2.0, 0.0)
+
+
+def percentile_99(errors) -> float:
+    """The 99th percentile of ``errors``, NaN left out (NaN when nothing is left)."""
+    errors = np.asarray(errors, dtype=np.float64)
+    kept = errors[~np.isnan(errors)]
+    return float(np.percentile(kept, 99.0)) if kept.size else float("nan")

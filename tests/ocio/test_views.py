@@ -57,3 +57,18 @@ def test_every_view_meets_its_targets(built):
             limit = tolerances.ANALYTIC_DELTA_E_ITP if display.is_hdr else tolerances.LUT_CLF_SCALE_CODES
             failures += [(display.name, view, name, f.maximum) for name, f in figures.items() if f.maximum > limit]
     assert not failures, failures
+
+
+def test_every_gamut_mapped_view_a_spec_can_ask_for(tmp_path):
+    """Views beyond the defaults (Scale, Desaturate, Perceptual: baked lattices) on an SDR display.
+    (HDR displays' baked views are measured by bench/lut_accuracy.py; no ΔE ITP bound is set for them yet.)"""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    text = load.default_text().split("[[display]]")[0] + (
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Desaturate", "Scale", "Perceptual", "RGC", "Raw"]\n'
+        '[[display]]\nname = "Rec.2100-PQ - Display"\nviews = ["Colorimetric", "RGC", "Raw"]\n')
+    folder = tmp_path / "all-views"
+    build(for_folder(load.parse(text, "all-views.toml", tmp_path), folder), folder)
+    test_every_view_meets_its_targets((ocio.Config.CreateFromFile(str(folder / "config.ocio")),
+                                       resolved.read_beside(folder / "config.ocio")))

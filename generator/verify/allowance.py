@@ -1,0 +1,109 @@
+"""The float32 limit of a check: how far an engine computing in float32 may land from
+the float64 reference for reasons no config can change, per sample and channel.
+
+Float32 keeps 24 bits of each value; a 3x3 matrix product adds rounding in
+proportion to |M||x| (Higham 2002, 3.5), so a channel near zero beside large
+ones carries an absolute error, and a display or camera curve that is steep
+there (a pure power law at 0) turns it into a visible code difference. The
+verifier takes exactly that much off before its metric, computed here from
+the reference evaluation; tolerances are never widened for it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from generator import tolerances
+from generator.colorimetry import reference
+from generator.colorimetry.matrices import apply_matrix
+from generator.spec.schema import Display
+from generator.verify import paths
+
+
+def _input_side(linear, codes: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """|c f'(c)| of a decoding curve (a forward difference of 1e-7 relative): u of it is
+    the change of linear a rounding of the code makes."""
+    step = 1e-7 * np.maximum(np.abs(codes), 1e-3)
+    with np.errstate(all="ignore"):
+        slope = (linear(codes + step) - values) / step
+    return np.nan_to_num(np.abs(codes * slope), nan=0.0, posinf=0.0)
+
+
+def float32_shift(src: paths.Endpoint, dst_matrix, codes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The reference values of ``codes`` and how far float32 evaluation alone may move
+    the destination's linear values, per sample and channel.
+
+    The source curve is a few float32 operations: its linear values carry
+    FLOAT32_MATRIX_ROUNDINGS u of both the input side (|c f'(c)|, what a code's
+    rounding becomes) and the output side (the value), and one more u for storing it;
+    each matrix product adds FLOAT32_MATRIX_ROUNDINGS u of |M||x|.
+    """
+    u, k = tolerances.FLOAT32_UNIT_ROUNDOFF, tolerances.FLOAT32_MATRIX_ROUNDINGS
+    with np.errstate(all="ignore"):
+        linear = src.linear(codes)
+        ref = apply_matrix(src.matrix, linear)
+        source = u * ((1.0 + k) * np.abs(linear) + k * _input_side(src.linear, codes, linear))
+        to_dst = np.abs(np.linalg.inv(dst_matrix))
+        return ref, apply_matrix(to_dst, apply_matrix(np.abs(src.matrix), source) + k * u * np.abs(ref))
+
+
+def float32_allowance(src: paths.Endpoint, dst_matrix, encode, codes: np.ndarray) -> np.ndarray | None:
+    """The code difference float32 evaluation alone may make, per sample and channel:
+    the destination's linear values moved by :func:`float32_shift` either way, and
+    encoded. Where the destination curve is steep (a power law near zero) this is far
+    more than the tolerance, and no float32 engine can do better."""
+    if src.matrix is None or src.linear is None or dst_matrix is None or encode is None:
+        return None
+    ref, shift = float32_shift(src, dst_matrix, codes)
+    with np.errstate(all="ignore"):
+        moved = [encode(ref + sign * apply_matrix(dst_matrix, shift)) for sign in (1.0, -1.0)]
+        base = encode(ref)
+        allowance = np.maximum(np.abs(moved[0] - base), np.abs(moved[1] - base))
+    return np.where(np.isfinite(allowance), allowance, 0.0)
+
+
+def determinate(src: paths.Endpoint, dst: paths.Endpoint, codes: np.ndarray) -> np.ndarray:
+    """Samples whose destination linear values (ADX: exposures) all stand clear of their
+    float32 noise: a bounded encoding has no code for a non-positive exposure, so one
+    that float32 may move through zero has no determinate code."""
+    ref, shift = float32_shift(src, dst.matrix, codes)
+    with np.errstate(invalid="ignore"):
+        return np.all(np.abs(apply_matrix(np.linalg.inv(dst.matrix), ref)) > shift, axis=-1)
+
+
+def _operator_shift(display: Display, view: str, linear: np.ndarray) -> np.ndarray:
+    """The departure OCIO's own operator for a view's mapping may make, in display-linear
+    RGB: for the ACES gamut compression (a fixed function), RGC_OCIO_SCALED of
+    max(1, largest component) of the normalised display RGB; 0 for the others."""
+    if paths.view_method(view) != "rgc":
+        return np.zeros_like(linear)
+    scale = np.maximum(1.0, np.max(np.abs(linear / display.clip_high), axis=-1, keepdims=True))
+    return tolerances.RGC_OCIO_SCALED * scale * display.clip_high * np.ones_like(linear)
+
+
+def mapped_allowance(src: paths.Endpoint, back: np.ndarray, display: Display, view: str, codes: np.ndarray,
+                     expected: np.ndarray) -> np.ndarray | None:
+    """:func:`float32_allowance` for a gamut-mapped view: the float32 shift of the display's
+    linear values (and the mapping operator's own departure) applied to the mapped light,
+    which the display encoding then meets where it is: a mapping can move a channel from
+    below 0 to just above it, where a power law is steepest."""
+    if src.matrix is None or src.linear is None:
+        return None
+    ref, shift = float32_shift(src, back, codes)
+    with np.errstate(all="ignore"):
+        shift = shift + _operator_shift(display, view, apply_matrix(np.linalg.inv(back), ref))
+        light = np.clip(reference.display_decode(display, expected), 0.0, display.clip_high)
+        moved = [reference.display_encode(display, np.clip(light + sign * shift, 0.0, display.clip_high))
+                 for sign in (1.0, -1.0)]
+        allowance = np.maximum(np.abs(moved[0] - expected), np.abs(moved[1] - expected))
+    return np.where(np.isfinite(allowance), allowance, 0.0)
+
+
+def view_allowance(src, back, display, view, codes, expected, clip_encode):
+    """The allowance of a view check: :func:`float32_allowance` through the Colorimetric
+    view for clip, :func:`mapped_allowance` for the gamut-mapped views."""
+    if expected is None:
+        return None
+    if paths.view_method(view) == "clip":
+        return float32_allowance(src, back, clip_encode, codes)
+    return mapped_allowance(src, back, display, view, codes, expected)

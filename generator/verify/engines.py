@@ -1,0 +1,126 @@
+"""PyOpenColorIO in this process: the engine hosts embed, with their default
+optimisation flags, and a lossless one.
+
+OCIO's default flags (what hosts use) add, to the lossless set, fast
+approximations of log, exp and pow, a fast inverse of 1D LUTs, and LUT
+composition; where a default-flags check exceeds its tolerance while the
+lossless one passes, :func:`explain_default_flags` names the flag and the
+operator responsible, measured, rather than widening any tolerance.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from generator.verify.checks import KINDS, LUT, VIEW, Check
+from generator.verify.judge import Output
+
+ENGINE_NAMES = ("ocio", "oiiotool", "ocioconvert", "blender")
+
+
+def load_config(config_path: str | Path):
+    import PyOpenColorIO as ocio
+
+    return ocio.Config.CreateFromFile(str(config_path))
+
+
+def processor(cfg, check: Check, config_dir: Path):
+    """The OCIO processor ``check`` exercises."""
+    import PyOpenColorIO as ocio
+
+    if check.kind == VIEW:
+        return cfg.getProcessor(check.src, check.display, check.view, ocio.TRANSFORM_DIR_FORWARD)
+    if check.kind == LUT:
+        path = config_dir / check.lut
+        if not path.is_file():
+            raise FileNotFoundError(f"missing LUT file {check.lut}")
+        interpolation = {"linear": ocio.INTERP_LINEAR, "tetrahedral": ocio.INTERP_TETRAHEDRAL}[check.interpolation]
+        return cfg.getProcessor(ocio.FileTransform(src=str(path), interpolation=interpolation))
+    return cfg.getProcessor(check.src, check.dst)
+
+
+def apply(cpu, values: np.ndarray) -> np.ndarray:
+    """``values`` (n, 3) through a CPU processor, in float32 as hosts run it."""
+    pixels = np.ascontiguousarray(values, dtype=np.float32).copy()
+    cpu.applyRGB(pixels)
+    return pixels.astype(np.float64)
+
+
+@dataclass(frozen=True)
+class OcioEngine:
+    """PyOpenColorIO's CPU processor with the given optimisation flags."""
+
+    name: str
+    flags: str
+    kinds: tuple = KINDS
+
+    def missing(self, config_path: Path) -> str:
+        return ""
+
+    def version(self) -> str:
+        import PyOpenColorIO as ocio
+
+        return f"PyOpenColorIO {ocio.__version__}, {self.flags}"
+
+    def optimisation(self):
+        import PyOpenColorIO as ocio
+
+        return getattr(ocio, self.flags)
+
+    def run(self, config_path: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
+        cfg = load_config(config_path)
+        out = []
+        for check in checks:
+            try:
+                cpu = processor(cfg, check, config_path.parent).getOptimizedCPUProcessor(self.optimisation())
+                out.append([Output(apply(cpu, check.probes.values))])
+            except Exception as error:  # OCIO raises its own types; each names the problem
+                out.append([Output(None, error=f"{type(error).__name__}: {error}")])
+        return out
+
+
+#: The flags OCIO's default set adds to the lossless one, each a possible cause of a difference.
+DEFAULT_EXTRAS = ("OPTIMIZATION_FAST_LOG_EXP_POW", "OPTIMIZATION_LUT_INV_FAST", "OPTIMIZATION_COMP_LUT1D",
+                  "OPTIMIZATION_COMP_SEPARABLE_PREFIX")
+
+
+def _culprit(cfg, transforms: list, values: np.ndarray, fast, exact, error_of) -> tuple[float, str]:
+    """The transform of a chain that alone, run with the ``fast`` flags while every other
+    runs with the ``exact`` ones, gives the check's largest error; and that error."""
+    import PyOpenColorIO as ocio
+
+    processors = [cfg.getProcessor(t) for t in transforms]
+    worst = (-1.0, "")
+    for index, transform in enumerate(transforms):
+        current = values
+        for position, proc in enumerate(processors):
+            current = apply(proc.getOptimizedCPUProcessor(fast if position == index else exact), current)
+        direction = "inverse" if getattr(transform, "getDirection", lambda: None)() == ocio.TRANSFORM_DIR_INVERSE else ""
+        worst = max(worst, (error_of(current), f"{type(transform).__name__} {direction}".strip()))
+    return worst
+
+
+def explain_default_flags(config_path: Path, check: Check, error_of) -> str:
+    """Why the default flags miss ``check``'s tolerance: the default flag whose removal
+    brings the error within it, and the operator of the chain whose fast evaluation alone
+    gives the largest error. ``error_of(values)`` is the check's worst error for an engine
+    output. "" when no single flag explains it (the failure is then the config's)."""
+    import PyOpenColorIO as ocio
+
+    cfg = load_config(config_path)
+    proc = processor(cfg, check, config_path.parent)
+    default = ocio.OPTIMIZATION_DEFAULT
+    for name in DEFAULT_EXTRAS:
+        without = ocio.OptimizationFlags(int(default) & ~int(getattr(ocio, name)))
+        error = error_of(apply(proc.getOptimizedCPUProcessor(without), check.probes.values))
+        if error <= check.tolerance:
+            transforms = list(proc.createGroupTransform())
+            alone, op = _culprit(cfg, transforms, check.probes.values, default, without, error_of)
+            return f"OCIO default flags: {name} in {op} (alone: {alone:.2g}); without the flag: {error:.2g}"
+    return ""
+
+
+IN_PROCESS = (OcioEngine("ocio default", "OPTIMIZATION_DEFAULT"), OcioEngine("ocio lossless", "OPTIMIZATION_LOSSLESS"))

@@ -1,0 +1,165 @@
+"""Figures for the verify report and ``ocioforge plot``: matplotlib, colour-science's diagram.
+
+* the CIE 1931 xy chromaticity diagram with the spectral locus, the gamut
+  triangle of every display (or every colour space), the probe colours and
+  where each gamut-mapping method of :data:`generator.gamut.METHODS` sends
+  them on one display (the lecture's picture: desaturation moves a colour
+  toward white, scaling keeps its chromaticity);
+* ramps from grey to spectral colours before and after each mapping;
+* heatmaps of each engine's worst error over each probe family, per check kind.
+"""
+
+from __future__ import annotations
+
+import io
+
+import numpy as np
+
+from generator.colorimetry import reference
+from generator.colorimetry.matrices import apply_matrix
+from generator.spec.schema import Display, Spec
+from generator.verify import probes
+
+#: Wavelengths (nm) of the spectral colours the mapping ramps run toward.
+RAMP_WAVELENGTHS = (450.0, 480.0, 500.0, 520.0, 560.0, 590.0, 620.0)
+
+
+def _pyplot():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def png(figure, fmt: str = "png") -> bytes:
+    """The figure as PNG (or ``fmt``: svg, pdf) bytes; the figure is closed."""
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format=fmt, dpi=110, bbox_inches="tight")
+    _pyplot().close(figure)
+    return buffer.getvalue()
+
+
+def _xy(xyz: np.ndarray) -> np.ndarray:
+    total = np.sum(xyz, axis=-1, keepdims=True)
+    return xyz[..., :2] / np.where(total == 0.0, 1.0, total)
+
+
+def _triangle(axes, primaries, label: str, colour=None, style="-") -> None:
+    points = np.asarray(primaries, dtype=np.float64)
+    closed = np.vstack([points, points[:1]])
+    axes.plot(closed[:, 0], closed[:, 1], style, color=colour, linewidth=1.2, label=label)
+
+
+def _mapped(spec: Spec, display: Display, scene: np.ndarray) -> dict[str, np.ndarray]:
+    """Display-linear RGB of ``scene`` colours after each mapping method, in [0, 1] of peak."""
+    from generator.gamut import METHODS, DisplayGamut
+
+    gamut = DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
+    linear = apply_matrix(reference.display_matrix(spec, display) @ reference.scene_to_display_reference(spec), scene)
+    return {name: method(linear / display.clip_high, gamut) for name, method in METHODS.items()}
+
+
+def chromaticity(spec: Spec, display: Display | None = None, spaces: bool = False):
+    """The xy diagram: locus, display triangles (and every space's with ``spaces``),
+    probe colours and, for ``display``, where each mapping method sends them."""
+    from generator.colour_science import plotting
+
+    plt = _pyplot()
+    figure, axes = plt.subplots(figsize=(9, 9))
+    plotting().plot_chromaticity_diagram_CIE1931(axes=axes, show=False, title=f"{spec.name}: CIE 1931 chromaticity")
+    gamuts = {s.gamut.name: s.gamut for s in spec.colour_spaces if s.gamut is not None} if spaces else {}
+    for gamut in gamuts.values():
+        _triangle(axes, gamut.primaries, gamut.name, style=":")
+    for d in spec.displays:
+        _triangle(axes, d.gamut.primaries, d.name)
+    if display is not None:
+        sizes = probes.SIZES["quick"]
+        scene = np.concatenate([probes.monochromatic(spec, sizes.wavelength_step).values,
+                                probes.camera_gamut(spec).values, probes.colorchecker(spec, "D65").values])
+        source = _xy(apply_matrix(reference.scene_to_display_reference(spec), scene))
+        axes.scatter(source[:, 0], source[:, 1], s=8, c="black", label="probe colours")
+        for index, (name, rgb) in enumerate(_mapped(spec, display, scene).items()):
+            xy = _xy(apply_matrix(display.gamut.rgb_to_xyz, rgb))
+            axes.scatter(xy[:, 0], xy[:, 1], s=10, marker="osD^v"[index % 5], label=f"{name} on {display.name}")
+    axes.set_xlim(-0.1, 0.9)
+    axes.set_ylim(-0.1, 0.95)
+    axes.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7)
+    return figure
+
+
+def mapping_ramps(spec: Spec, display: Display):
+    """Ramps from grey (Y = 0.3) to spectral colours of the same luminance, each method's result
+    shown with the display's own encoding (one row per wavelength, one panel per method)."""
+    import colour
+
+    plt = _pyplot()
+    steps = np.linspace(0.0, 1.0, 96)
+    cmfs = colour.MSDS_CMFS[probes.OBSERVER]
+    spectral = np.array([cmfs[w] / cmfs[w][1] * 0.3 for w in RAMP_WAVELENGTHS])
+    grey = np.asarray(colour.xy_to_XYZ(display.gamut.whitepoint)) * 0.3
+    xyz = grey + steps[None, :, None] * (spectral[:, None, :] - grey)
+    scene = apply_matrix(np.linalg.inv(reference.scene_to_display_reference(spec)), xyz)
+    mapped = _mapped(spec, display, scene)
+    figure, panels = plt.subplots(len(mapped), 1, figsize=(8, 1.2 * len(mapped)), squeeze=False)
+    for axes, (name, rgb) in zip(panels[:, 0], mapped.items()):
+        codes = np.clip(reference.display_encode(display, rgb * display.clip_high), 0.0, 1.0)
+        axes.imshow(codes, aspect="auto", extent=(0, 1, len(RAMP_WAVELENGTHS), 0), interpolation="nearest")
+        axes.set_yticks(np.arange(len(RAMP_WAVELENGTHS)) + 0.5, [f"{w:g} nm" for w in RAMP_WAVELENGTHS], fontsize=6)
+        axes.set_ylabel(name, rotation=0, ha="right", fontsize=8)
+        axes.set_xticks([])
+    panels[-1, 0].set_xlabel(f"grey -> spectral colour at equal luminance, mapped onto {display.name}")
+    return figure
+
+
+def family_errors(outcome) -> dict[str, float]:
+    """The worst error over tolerance of each probe family in an outcome."""
+    out = {}
+    if outcome.errors is None:
+        return out
+    index = outcome.check.probes.family_index
+    for number, family in enumerate(outcome.check.probes.families):
+        values = outcome.errors[index == number]
+        values = values[~np.isnan(values)]
+        if values.size:
+            out[family.name] = max(out.get(family.name, 0.0), float(values.max()) / outcome.check.tolerance)
+    return out
+
+
+def error_heatmaps(verification):
+    """Per check kind: engines x probe families, log10 of the worst error over tolerance."""
+    plt = _pyplot()
+    from matplotlib.colors import TwoSlopeNorm
+
+    kinds = list(dict.fromkeys(o.check.kind for o in verification.outcomes))
+    figure, panels = plt.subplots(len(kinds), 1, figsize=(10, 2.2 * len(kinds) + 1), squeeze=False)
+    for axes, kind in zip(panels[:, 0], kinds):
+        cells: dict[tuple[str, str], float] = {}
+        for o in (o for o in verification.outcomes if o.check.kind == kind):
+            for family, value in family_errors(o).items():
+                cells[(o.engine, family)] = max(cells.get((o.engine, family), 0.0), value)
+        engines = list(dict.fromkeys(e for e, _ in cells))
+        families = list(dict.fromkeys(f for _, f in cells))
+        grid = np.full((len(engines), len(families)), np.nan)
+        for (engine, family), value in cells.items():
+            grid[engines.index(engine), families.index(family)] = np.log10(max(value, 1e-6))
+        norm = TwoSlopeNorm(vmin=-4.0, vcenter=0.0, vmax=2.0)
+        image = axes.imshow(grid, cmap="RdYlGn_r", norm=norm, aspect="auto")
+        axes.set_xticks(range(len(families)), families, rotation=30, ha="right", fontsize=7)
+        axes.set_yticks(range(len(engines)), engines, fontsize=7)
+        axes.set_title(f"{kind}: log10(worst error / tolerance); above 0 exceeds it", fontsize=9)
+        figure.colorbar(image, ax=axes)
+    figure.tight_layout()
+    return figure
+
+
+def report_figures(verification) -> dict[str, bytes]:
+    """The report's figures as PNG bytes, by title."""
+    spec = verification.spec
+    display = next((d for d in spec.displays if not d.is_hdr), spec.displays[0] if spec.displays else None)
+    out = {"Chromaticity diagram and gamut mapping": png(chromaticity(spec, display))}
+    if display is not None:
+        out[f"Ramps before and after gamut mapping ({display.name})"] = png(mapping_ramps(spec, display))
+    out["Error heatmaps"] = png(error_heatmaps(verification))
+    return out

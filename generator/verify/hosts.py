@@ -1,0 +1,161 @@
+"""Command-line hosts: oiiotool and ocioconvert, through real image files.
+
+Every check's probes are written as a float32 OpenEXR file; the host converts
+it and the verifier reads the result back. oiiotool is the one the openimageio
+package installs beside this Python (it brings its own OCIO; any oiiotool on
+PATH otherwise): every check in float EXR, and every display/view a second
+time into a 16-bit TIFF. ocioconvert is the system's (Debian's, OCIO 2.1), not
+the one the opencolorio wheel installs beside this Python.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass
+from pathlib import Path
+
+from generator.verify import images
+from generator.verify.checks import KINDS, LUT, VIEW, Check
+from generator.verify.judge import Output
+
+#: What OCIO prints when a library is older than the config it is asked to read.
+TOO_NEW = "not able to load that config version"
+#: Seconds one host process may take before it is stopped (a hung host fails its checks).
+HOST_TIMEOUT = 600
+
+
+class NotRunnable(RuntimeError):
+    """The host is there but cannot run this config (e.g. its OCIO predates the config version)."""
+
+
+def _beside_python(name: str) -> str | None:
+    beside = Path(sys.executable).parent / name
+    return str(beside) if beside.is_file() else shutil.which(name)
+
+
+def _outside_python(name: str) -> str | None:
+    here = Path(sys.executable).parent.resolve()
+    dirs = [d for d in os.environ.get("PATH", "").split(os.pathsep) if d and Path(d).resolve() != here]
+    return shutil.which(name, path=os.pathsep.join(dirs))
+
+
+def run_host(command: list[str], env: dict | None = None) -> subprocess.CompletedProcess:
+    """Run a host program, output captured; a time-out is reported as a failed run."""
+    try:
+        return subprocess.run(command, capture_output=True, text=True, env=env, timeout=HOST_TIMEOUT, check=False)
+    except subprocess.TimeoutExpired:
+        return subprocess.CompletedProcess(command, -1, "", f"timed out after {HOST_TIMEOUT} s")
+
+
+def _message(result: subprocess.CompletedProcess) -> str:
+    text = (result.stderr + "\n" + result.stdout).strip()
+    lines = [line for line in text.splitlines() if "error" in line.lower()] or text.splitlines() or ["no output"]
+    return lines[0]
+
+
+def write_inputs(checks: list[Check], workdir: Path, prefix: str) -> list[Path]:
+    paths = []
+    for index, check in enumerate(checks):
+        path = workdir / f"{prefix}-{index:04d}-in.exr"
+        images.write(path, check.probes.values)
+        paths.append(path)
+    return paths
+
+
+def read_output(path: Path, check: Check, variant: str, failure: str) -> Output:
+    if not path.is_file():
+        return Output(None, variant, error=failure or f"no output written ({path.name})")
+    try:
+        values, step = images.read(path, len(check.probes.values))
+    except OSError as error:
+        return Output(None, variant, error=str(error))
+    return Output(values, variant, step)
+
+
+@dataclass(frozen=True)
+class OiiotoolEngine:
+    name: str = "oiiotool"
+    kinds: tuple = KINDS
+
+    def executable(self) -> str | None:
+        return _beside_python("oiiotool")
+
+    def missing(self, config: Path) -> str:
+        return "" if self.executable() else "oiiotool is not installed (pip package openimageio or Debian's openimageio-tools)"
+
+    def version(self) -> str:
+        result = run_host([self.executable(), "--colorconfiginfo"])
+        ocio_version = next((line for line in result.stdout.splitlines() if "OpenColorIO" in line), "")
+        return f"{run_host([self.executable(), '--version']).stdout.strip()} {ocio_version.strip()}".strip()
+
+    def _ops(self, check: Check, stem: Path) -> list[str]:
+        if check.kind == VIEW:
+            return ["--iscolorspace", check.src, "--ociodisplay", check.display, check.view, "-o", f"{stem}.exr",
+                    "-o:datatype=uint16", f"{stem}.tif"]
+        if check.kind == LUT:
+            return ["--ociofiletransform", Path(check.lut).name, "-o", f"{stem}.exr"]
+        return ["--colorconvert", check.src, check.dst, "-o", f"{stem}.exr"]
+
+    def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
+        loaded = run_host([self.executable(), "--colorconfig", str(config), "--echo", "ok"])
+        if TOO_NEW in loaded.stdout + loaded.stderr:
+            raise NotRunnable(_message(loaded))
+        inputs = write_inputs(checks, workdir, "oiiotool")
+        stems = [workdir / f"oiiotool-{i:04d}-out" for i in range(len(checks))]
+        failures = {}
+        start = 0
+        while start < len(checks):
+            command = [self.executable(), "--colorconfig", str(config)]
+            for index in range(start, len(checks)):
+                command += [str(inputs[index]), *self._ops(checks[index], stems[index])]
+            result = run_host(command)
+            done = next((i for i in range(start, len(checks)) if not Path(f"{stems[i]}.exr").is_file()), len(checks))
+            if done < len(checks):
+                failures[done] = _message(result)
+            start = done + 1
+        out = []
+        for index, check in enumerate(checks):
+            found = [read_output(Path(f"{stems[index]}.exr"), check, "EXR float", failures.get(index, ""))]
+            if check.kind == VIEW:
+                found.append(read_output(Path(f"{stems[index]}.tif"), check, "TIFF uint16", failures.get(index, "")))
+            out.append(found)
+        return out
+
+
+@dataclass(frozen=True)
+class OcioconvertEngine:
+    name: str = "ocioconvert"
+    kinds: tuple = KINDS
+
+    def executable(self) -> str | None:
+        return _outside_python("ocioconvert")
+
+    def missing(self, config: Path) -> str:
+        return "" if self.executable() else "ocioconvert is not installed (Debian's opencolorio-tools)"
+
+    def version(self) -> str:
+        return f"{self.executable()} (the system's, outside this Python environment)"
+
+    def _command(self, check: Check, source: Path, target: Path, config: Path) -> list[str]:
+        exe = self.executable()
+        if check.kind == VIEW:
+            return [exe, "--view", str(source), check.src, str(target), check.display, check.view]
+        if check.kind == LUT:
+            return [exe, "--lut", str(config.parent / check.lut), str(source), str(target)]
+        return [exe, str(source), check.src, str(target), check.dst]
+
+    def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
+        inputs = write_inputs(checks, workdir, "ocioconvert")
+        targets = [workdir / f"ocioconvert-{i:04d}-out.exr" for i in range(len(checks))]
+        env = {**os.environ, "OCIO": str(config)}
+        commands = [self._command(c, s, t, config) for c, s, t in zip(checks, inputs, targets)]
+        with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
+            results = list(pool.map(lambda command: run_host(command, env), commands))
+        if results and all(TOO_NEW in r.stdout + r.stderr for r in results):
+            raise NotRunnable(_message(results[0]))
+        return [[read_output(t, c, "EXR float", _message(r) if r.returncode else "")]
+                for c, t, r in zip(checks, targets, results)]

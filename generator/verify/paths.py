@@ -1,0 +1,227 @@
+"""What every name in a built config should do, evaluated from the spec alone.
+
+An :class:`Endpoint` is one colour space of the config as the resolved spec
+describes it: how its code values decode to the scene reference and how the
+scene reference encodes to them, both through
+:mod:`generator.colorimetry.reference` (the one reference evaluation). The
+verifier composes two endpoints, or an endpoint and a view, into the expected
+result of an OCIO conversion; it never reads the config for this.
+
+Two documented policies of the generated configs enter the expectation:
+
+* a curve baked into a 1D LUT (:func:`generator.ocio.curves.is_baked`) is
+  defined on its domain only: codes outside it are clamped to it, and encoded
+  values are clamped to it (:class:`generator.colorimetry.transfer.Function`);
+* a display space decodes its code values, clips display light to
+  [0, peak] (OCIO's range clamp runs both ways) and goes to CIE XYZ-D65; OCIO
+  reaches the scene reference from there through the config's default view
+  transform, Colorimetric, so the inverse of the scene-to-XYZ matrix.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from generator.colorimetry import reference
+from generator.colorimetry.matrices import apply_matrix
+from generator.ocio.curves import is_baked
+from generator.spec.load import DISPLAY_REFERENCE
+from generator.spec.schema import ColourSpace, Display, Spec
+
+#: Output kinds, which choose the metric: scene or display light, code values, a display's codes.
+LINEAR, CODE, DISPLAY, DATA = "linear", "code", "display", "data"
+COLORIMETRIC = "Colorimetric"
+RAW = "Raw"
+
+Evaluate = Callable[[np.ndarray], np.ndarray]
+
+
+@dataclass(frozen=True)
+class Endpoint:
+    """One colour space of a config, as the spec defines it.
+
+    ``decode`` takes code values to the scene reference (None where the config
+    offers only the forward direction); ``encode`` the reverse (None where the
+    reference evaluation has nothing for a view the config offers: the verifier
+    fails such a check rather than pass it unchecked). ``output`` is
+    one of LINEAR, CODE, DISPLAY, DATA; ``display`` is set for display spaces
+    and display-view spaces; ``baked`` names the curve of a space whose curve
+    is a baked LUT ("" otherwise). ``matrix`` takes the space's linear RGB to
+    the reference and ``linear`` its codes to that linear RGB (for ADX, relative
+    exposure): the float32 limit of a check is computed from them. ``valid`` is
+    set for bounded encodings (ADX, 10- or 16-bit integer density): the codes it
+    accepts; the verifier compares only those, inside ``code_range``, and only
+    colours the encoding represents.
+    """
+
+    name: str
+    decode: Evaluate | None
+    encode: Evaluate | None
+    code_range: tuple[float, float]
+    output: str
+    display: Display | None = None
+    baked: str = ""
+    matrix: np.ndarray | None = None
+    linear: Evaluate | None = None
+    curve: object = None
+    valid: Callable[[np.ndarray], np.ndarray] | None = None
+    view: str = ""
+
+
+def space_is_baked(spec: Spec, space: ColourSpace) -> bool:
+    """Whether the config expresses ``space``'s curve as a baked 1D LUT file."""
+    return not (space.is_data or space.special) and is_baked(space.curve_name, space.curve, spec.ocio_version)
+
+
+def code_range(spec: Spec, space: ColourSpace) -> tuple[float, float]:
+    """The code values ``space`` represents: a baked curve's domain, ADX16 up to the code
+    that decodes to half-float max (where OCIO's builtin clamps), otherwise [0, 1]."""
+    if space.special == "adx16":
+        from generator.colorimetry.curves import HALF_MAX
+
+        top = float(np.min(reference.from_reference(spec, space, np.full(3, HALF_MAX))))
+        return (0.0, min(1.0, top))
+    if space_is_baked(spec, space):
+        return tuple(float(v) for v in space.curve.domain)
+    return (0.0, 1.0)
+
+
+def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
+    lo, hi = code_range(spec, space)
+    output = DATA if space.is_data else LINEAR if space.encoding == "scene-linear" else CODE
+    if space.special:
+        return _adx_endpoint(spec, space)
+    if space.is_data:
+        return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
+                        lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
+                        matrix=np.eye(3), linear=space.curve.decode)
+    matrix = reference.space_matrix(spec, space)
+    if not space_is_baked(spec, space):
+        return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
+                        lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
+                        matrix=matrix, linear=space.curve.decode)
+
+    def decode(codes):
+        return reference.to_reference(spec, space, np.clip(codes, lo, hi))
+
+    def encode(ref):
+        return np.clip(reference.from_reference(spec, space, ref), lo, hi)
+
+    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=space.curve_name, matrix=matrix,
+                    linear=lambda c: space.curve.decode(np.clip(c, lo, hi)), curve=space.curve)
+
+
+def _adx_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
+    """ADX: codes -> printing density -> relative exposure (its "linear"), then a matrix to ACES.
+
+    Codes are valid where every channel's exposure stays within half-float range
+    up to the next half-float density above it: OCIO's builtin looks the exposure
+    up in a half-domain LUT whose entries are clamped at half-float max, so an
+    input one half-float step below the clamp already interpolates toward it.
+    """
+    from generator.colorimetry import adx
+    from generator.colorimetry.curves import HALF_MAX
+
+    bits = int(space.special[3:])
+
+    def density(codes):
+        return apply_matrix(adx.CDD_TO_CID, adx.adx_to_cdd(codes, bits))
+
+    def exposure(codes):
+        return 10.0 ** adx.cid_to_log_exposure(density(codes))
+
+    def valid(codes):
+        with np.errstate(all="ignore"):
+            above = np.nextafter(density(codes).astype(np.float16), np.float16(np.inf)).astype(np.float64)
+            return np.all(10.0 ** adx.cid_to_log_exposure(above) <= HALF_MAX, axis=-1)
+
+    return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
+                    lambda r: reference.from_reference(spec, space, r), code_range(spec, space), CODE,
+                    matrix=reference._adx_reference_matrix(spec) @ adx.EXP_TO_ACES, linear=exposure, valid=valid)
+
+
+def _display_endpoint(spec: Spec, display: Display) -> Endpoint:
+    to_display = reference.display_matrix(spec, display) @ reference.scene_to_display_reference(spec)
+    back = np.linalg.inv(to_display)
+
+    def light(codes):
+        return np.clip(reference.display_decode(display, codes), 0.0, display.clip_high)
+
+    return Endpoint(display.name, lambda c: apply_matrix(back, light(c)),
+                    lambda r: reference.colorimetric_view(spec, display, r), (0.0, 1.0), DISPLAY, display,
+                    matrix=back, linear=light)
+
+
+def _xyz_endpoint(spec: Spec) -> Endpoint:
+    matrix = reference.scene_to_display_reference(spec)
+    inverse = np.linalg.inv(matrix)
+    return Endpoint(DISPLAY_REFERENCE, lambda c: apply_matrix(inverse, c), lambda r: apply_matrix(matrix, r),
+                    (0.0, 1.0), LINEAR, matrix=inverse, linear=lambda c: np.asarray(c, dtype=np.float64))
+
+
+#: Gamut-mapping methods the config expresses analytically; the others are a baked
+#: 3D LUT (CLF) over normalised display-linear RGB (see generator.ocio.emit).
+ANALYTIC_METHODS = ("clip", "rgc")
+
+
+def view_method(view: str) -> str | None:
+    """The gamut-mapping method of a view: the spec's VIEW_METHODS (Colorimetric is clip)."""
+    from generator.spec import load
+
+    methods = getattr(load, "VIEW_METHODS", {COLORIMETRIC: "clip"})
+    return methods.get(view)
+
+
+def lut_range(display: Display) -> tuple[float, float] | None:
+    """Display-linear range (1.0 = 100 cd/m²) a baked view LUT covers; it clamps beyond."""
+    try:
+        from generator.luts.lattice import DISPLAY_RANGE
+    except ImportError:
+        return None
+    return (DISPLAY_RANGE[0] * display.clip_high, DISPLAY_RANGE[1] * display.clip_high)
+
+
+def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
+    """Scene reference to ``display``'s codes through ``view``; None when the spec's
+    evaluation offers nothing for it (Raw is handled by the caller: no conversion).
+
+    Colorimetric is :func:`reference.colorimetric_view`; a gamut-mapped view is
+    ``reference.mapped_view`` with the view's method. A baked view clamps
+    display-linear RGB to the range its LUT covers before mapping, as the LUT does.
+    """
+    method = view_method(view)
+    if method == "clip":
+        return lambda ref: reference.colorimetric_view(spec, display, ref)
+    if method is None or not hasattr(reference, "map_display_linear"):
+        return None
+    to_display = reference.scene_to_display_matrix(spec, display)
+    bounds = None if method in ANALYTIC_METHODS else lut_range(display)
+
+    def mapped(ref):
+        linear = apply_matrix(to_display, ref)
+        return reference.map_display_linear(display, method, linear if bounds is None else np.clip(linear, *bounds))
+
+    return mapped
+
+
+def display_view_spaces(spec: Spec) -> list[Endpoint]:
+    """The "<view> - <display>" spaces a config holds when the spec asks for them."""
+    if not spec.display_view_spaces:
+        return []
+    back = {d.name: np.linalg.inv(reference.display_matrix(spec, d) @ reference.scene_to_display_reference(spec))
+            for d in spec.displays}
+    return [Endpoint(f"{view} - {display.name}", None, view_function(spec, display, view), (0.0, 1.0), DISPLAY,
+                     display, matrix=back[display.name], view=view) for display in spec.displays for view in display.views
+            if view != RAW]
+
+
+def endpoints(spec: Spec) -> dict[str, Endpoint]:
+    """Every colour space of the config built from ``spec``, by name, in config order."""
+    out = [_scene_endpoint(spec, s) for s in spec.colour_spaces]
+    out.append(_xyz_endpoint(spec))
+    out += [_display_endpoint(spec, d) for d in spec.displays]
+    out += display_view_spaces(spec)
+    return {e.name: e for e in out}

@@ -1,0 +1,187 @@
+"""Probe colours: what the verifier feeds every engine, each family named.
+
+Code families sample one colour space's encoding directly: neutral ramps over
+its code range, a 3D lattice offset by half a cell (so no probe sits on a node
+of a LUT an engine may build), random codes, and for a baked curve its LUT's
+nodes and the points between them. Scene families are colours given in the
+scene reference, encoded into whichever space a check starts from: the
+ColorChecker computed from reflectance spectra (ISO 17321-1) under D65 and
+under illuminant A (CIE 1931 2° observer; the A-lit chart is not adapted, so it
+stays a warm, chromatic set), monochromatic light from 380 to 780 nm (outside
+every display's gamut), the primaries and secondaries of every camera gamut of
+the spec, negatives, over-range values up to half-float max, and NaN / ±Inf.
+
+Every value is rounded to float32 when the family is made: engines see float32,
+and the reference is evaluated on exactly what they see. Random families use
+fixed seeds, so a run is repeatable.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from generator.colorimetry.curves import HALF_MAX
+from generator.colorimetry.matrices import apply_matrix, rgb_to_rgb
+from generator.spec.schema import Spec
+
+NON_FINITE = "non-finite"
+SEED = 20240601
+OBSERVER = "CIE 1931 2 Degree Standard Observer"
+COLORCHECKER = "ISO 17321-1"
+
+
+@dataclass(frozen=True)
+class Sizes:
+    """How densely the families sample: ``full`` for verify, ``quick`` for tests."""
+
+    ramp: int
+    lattice: int
+    random: int
+    wavelength_step: float
+
+
+SIZES = {"full": Sizes(1025, 17, 4096, 1.0), "quick": Sizes(33, 4, 128, 20.0)}
+
+
+def _f32(values) -> np.ndarray:
+    return np.asarray(values, dtype=np.float32).astype(np.float64).reshape(-1, 3)
+
+
+@dataclass(frozen=True, eq=False)
+class Family:
+    """A named set of probe colours, (n, 3) float64, with optional per-sample notes."""
+
+    name: str
+    values: np.ndarray
+    notes: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "values", _f32(self.values))
+
+
+@dataclass(frozen=True, eq=False)
+class Probes:
+    """The families a check feeds an engine, concatenated in order."""
+
+    families: tuple[Family, ...]
+
+    @cached_property
+    def values(self) -> np.ndarray:
+        return np.concatenate([f.values for f in self.families]) if self.families else np.zeros((0, 3))
+
+    @cached_property
+    def family_index(self) -> np.ndarray:
+        """For each sample, the index of its family."""
+        return np.repeat(np.arange(len(self.families)), [len(f.values) for f in self.families])
+
+    @property
+    def finite(self) -> np.ndarray:
+        """Samples outside the non-finite family (those compared with the reference)."""
+        special = np.array([f.name == NON_FINITE for f in self.families], dtype=bool)
+        return ~special[self.family_index] if self.families else np.zeros(0, dtype=bool)
+
+    def describe(self, index: int) -> str:
+        """The sample at ``index``: its family, position, note and value."""
+        family = self.families[int(self.family_index[index])]
+        start = sum(len(f.values) for f in self.families[: int(self.family_index[index])])
+        note = f" {family.notes[index - start]}" if family.notes else ""
+        rgb = ", ".join(f"{v:.6g}" for v in self.values[index])
+        return f"{family.name}[{index - start}]{note} ({rgb})"
+
+
+def code_families(lo: float, hi: float, sizes: Sizes, lut: tuple[int, float] | None = None) -> list[Family]:
+    """Ramps, offset lattice and random codes over [lo, hi]; for a baked curve whose
+    LUT has ``lut = (nodes, shaper)``, its nodes and the midpoints between them."""
+    ramp = np.linspace(lo, hi, sizes.ramp)
+    zeros = np.zeros_like(ramp)
+    ramps = [np.stack([ramp] * 3, axis=-1)] + [np.stack(np.roll([ramp, zeros, zeros], k, axis=0), -1) for k in range(3)]
+    n = sizes.lattice
+    axis = lo + (hi - lo) * (np.arange(n) + 0.5) / n
+    lattice = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
+    rng = np.random.default_rng(SEED)
+    out = [Family("ramp", np.concatenate(ramps)), Family("lattice", lattice),
+           Family("random", rng.uniform(lo, hi, (sizes.random, 3)))]
+    if lut is not None:
+        nodes, shaper = lut
+        u = np.arange(2 * nodes - 1) / (2.0 * (nodes - 1))
+        out.append(Family("LUT nodes and midpoints", np.repeat((lo + (hi - lo) * u ** shaper)[:, None], 3, axis=1)))
+    return out
+
+
+def colorchecker(spec: Spec, illuminant: str) -> Family:
+    """The ColorChecker's 24 patches lit by ``illuminant`` ("D65" or "A"), XYZ relative to the
+    illuminant (Y = 1 for a perfect white), taken as XYZ-D65 into the scene reference."""
+    import colour
+
+    from generator.colorimetry import reference
+
+    cmfs = colour.MSDS_CMFS[OBSERVER]
+    light = colour.SDS_ILLUMINANTS[illuminant]
+    patches = colour.SDS_COLOURCHECKERS[COLORCHECKER]
+    xyz = np.array([colour.sd_to_XYZ(sd, cmfs, light, method="Integration") for sd in patches.values()]) / 100.0
+    to_ref = np.linalg.inv(reference.scene_to_display_reference(spec))
+    return Family(f"ColorChecker {illuminant}", apply_matrix(to_ref, xyz), tuple(patches))
+
+
+def monochromatic(spec: Spec, step: float) -> Family:
+    """Monochromatic light of unit radiance every ``step`` nm from 380 to 780 nm (Y = ȳ(λ))."""
+    import colour
+
+    from generator.colorimetry import reference
+
+    wavelengths = np.arange(380.0, 780.0 + step / 2, step)
+    xyz = colour.MSDS_CMFS[OBSERVER][wavelengths]
+    to_ref = np.linalg.inv(reference.scene_to_display_reference(spec))
+    return Family("monochromatic", apply_matrix(to_ref, xyz), tuple(f"{w:g} nm" for w in wavelengths))
+
+
+def camera_gamut(spec: Spec) -> Family:
+    """Primaries and secondaries, at 0.18 and 1.0, of every distinct gamut of the spec's spaces."""
+    corners = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1], [0, 1, 1], [1, 0, 1], [1, 1, 0]], dtype=np.float64)
+    labels = ("red", "green", "blue", "cyan", "magenta", "yellow")
+    gamuts = {s.gamut.name: s.gamut for s in spec.colour_spaces if s.gamut is not None}
+    values, notes = [], []
+    for name, gamut in gamuts.items():
+        matrix = rgb_to_rgb(gamut, spec.reference.gamut, spec.chromatic_adaptation)
+        for level in (0.18, 1.0):
+            values.append(apply_matrix(matrix, corners * level))
+            notes += [f"{name} {label} x{level:g}" for label in labels]
+    return Family("camera gamut", np.concatenate(values), tuple(notes))
+
+
+def negatives(count: int) -> Family:
+    rng = np.random.default_rng(SEED + 1)
+    all_negative = rng.uniform(-0.5, 0.0, (count // 4, 3))
+    mixed = rng.uniform(-0.5, 1.0, (count - count // 4, 3))
+    return Family("negative", np.concatenate([all_negative, mixed]))
+
+
+def over_range(checker: Family) -> Family:
+    """Neutrals from 1 to half-float max, and the ColorChecker scaled by 2**4, 2**8, 2**12."""
+    neutral = np.repeat(np.geomspace(1.0, HALF_MAX, 33)[:, None], 3, axis=1)
+    scaled = np.concatenate([checker.values * 2.0**k for k in (4, 8, 12)])
+    return Family("over-range", np.concatenate([neutral, scaled]))
+
+
+def non_finite() -> Family:
+    """NaN, +Inf and -Inf in each channel beside mid grey, and in all three."""
+    values, notes = [], []
+    for special, label in ((np.nan, "NaN"), (np.inf, "+Inf"), (-np.inf, "-Inf")):
+        for channel in range(3):
+            rgb = np.full(3, 0.18)
+            rgb[channel] = special
+            values.append(rgb)
+            notes.append(f"{label} in channel {channel}")
+        values.append(np.full(3, special))
+        notes.append(f"{label} in every channel")
+    return Family(NON_FINITE, np.array(values), tuple(notes))
+
+
+def scene_families(spec: Spec, sizes: Sizes) -> tuple[Family, ...]:
+    """The scene-referred families, in the scene reference (non-finite last)."""
+    checker = colorchecker(spec, "D65")
+    return (checker, colorchecker(spec, "A"), monochromatic(spec, sizes.wavelength_step), camera_gamut(spec),
+            negatives(max(16, sizes.random // 16)), over_range(checker), non_finite())

@@ -1,0 +1,154 @@
+"""What a verify run prints and writes: the table, the summary, JSON, a self-contained HTML page.
+
+Every file is written to a temporary name beside its target and renamed into
+place, so an interrupted run never leaves a half-written report.
+"""
+
+from __future__ import annotations
+
+import base64
+import html
+import json
+import os
+import tempfile
+from collections import defaultdict
+from pathlib import Path
+
+import numpy as np
+
+from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS
+from generator.verify.run import Verification
+
+COLUMNS = ("check", "item", "engine", "max", "p99", "tolerance", "verdict")
+
+
+def _figure(value: float) -> str:
+    return "-" if not np.isfinite(value) and not np.isinf(value) else f"{value:.3g}"
+
+
+def rows(verification: Verification, everything: bool = True) -> list[tuple[str, ...]]:
+    """One row per check and engine (only those not passing unless ``everything``)."""
+    return [(o.check.kind, o.check.title, o.engine, _figure(o.worst), _figure(o.p99), f"{o.check.tolerance:g}"
+             + (f" {o.check.metric}" if o.check.metric != "relative" else ""), o.verdict)
+            for o in verification.outcomes if everything or o.verdict != PASS]
+
+
+def table(verification: Verification, everything: bool = True) -> str:
+    """The rows as aligned plain text."""
+    body = rows(verification, everything)
+    widths = [max([len(c)] + [len(r[i]) for r in body]) for i, c in enumerate(COLUMNS)]
+    lines = ["  ".join(c.ljust(w) for c, w in zip(COLUMNS, widths))]
+    lines += ["  ".join(v.ljust(w) for v, w in zip(r, widths)) for r in body]
+    return "\n".join(lines)
+
+
+def groups(verification: Verification) -> dict:
+    """(engine, kind, metric) -> counts by verdict, worst error and largest p99."""
+    out = defaultdict(lambda: {"checks": 0, PASS: 0, FAIL: 0, APPROX: 0, NOT_RUN: 0, "max": 0.0, "p99": 0.0,
+                               "tolerance": 0.0})
+    for o in verification.outcomes:
+        entry = out[(o.engine, o.check.kind, o.check.metric)]
+        entry["checks"] += 1
+        entry[o.verdict] += 1
+        entry["tolerance"] = max(entry["tolerance"], o.check.tolerance)
+        if o.verdict != NOT_RUN and np.isfinite(o.worst) | np.isinf(o.worst):
+            entry["max"] = max(entry["max"], float(o.worst))
+            entry["p99"] = max(entry["p99"], float(o.p99) if np.isfinite(o.p99) else 0.0)
+    return dict(out)
+
+
+def summary(verification: Verification) -> str:
+    """Per engine and check type: counts, worst max and p99; then engines, failures, explanations."""
+    lines = [f"{verification.config}: {len(verification.checks)} checks, "
+             f"{len(verification.outcomes)} results in {verification.seconds:.1f} s"]
+    for run in verification.engines:
+        state = f"not run: {run.skipped}" if run.skipped else f"{run.seconds:.1f} s, {run.version}"
+        lines.append(f"  engine {run.name}: {state}")
+    lines.append(f"  {'engine':<24} {'check':<15} {'metric':<16} {'n':>4} {'pass':>5} {'approx':>6} {'FAIL':>5} "
+                 f"{'max':>9} {'p99':>9} {'tolerance':>9}")
+    for (engine, kind, metric), g in groups(verification).items():
+        lines.append(f"  {engine:<24} {kind:<15} {metric:<16} {g['checks']:>4} {g[PASS]:>5} {g[APPROX]:>6} "
+                     f"{g[FAIL]:>5} {g['max']:>9.3g} {g['p99']:>9.3g} {g['tolerance']:>9.3g}")
+    for o in verification.outcomes:
+        if o.verdict in (FAIL, APPROX):
+            where = f"; worst input {o.worst_input}" if o.worst_input else ""
+            lines.append(f"{o.verdict}: {o.check.kind} {o.check.title} [{o.engine}]: {_figure(o.worst)} > "
+                         f"{o.check.tolerance:g}{where}{'; ' + o.note if o.note else ''}")
+    verdict = "passed" if verification.passed else "FAILED"
+    missing = [e.name for e in verification.engines if e.skipped]
+    lines.append(f"verify {verdict}: {len(verification.failures)} failing, "
+                 f"{sum(o.verdict == APPROX for o in verification.outcomes)} explained by OCIO's default flags"
+                 + (f", not run: {', '.join(missing)}" if missing else ""))
+    return "\n".join(lines)
+
+
+def to_json(verification: Verification) -> dict:
+    def number(value):
+        return None if not np.isfinite(value) else float(value)
+
+    return {
+        "config": str(verification.config),
+        "spec": verification.spec.name,
+        "ocio_version": ".".join(map(str, verification.spec.ocio_version)),
+        "passed": verification.passed,
+        "seconds": verification.seconds,
+        "engines": [{"name": e.name, "version": e.version, "seconds": e.seconds, "not_run": e.skipped or None}
+                    for e in verification.engines],
+        "groups": [{"engine": k[0], "check": k[1], "metric": k[2], **{n: (number(v) if isinstance(v, float) else v)
+                                                                     for n, v in g.items()}}
+                   for k, g in groups(verification).items()],
+        "results": [{"check": o.check.kind, "item": o.check.item, "title": o.check.title, "engine": o.engine,
+                     "metric": o.check.metric, "max": number(o.worst), "p99": number(o.p99),
+                     "tolerance": o.check.tolerance, "verdict": o.verdict, "worst_input": o.worst_input,
+                     "compared": o.compared, "undefined": o.undefined, "policy_violations": o.violations,
+                     "note": o.note} for o in verification.outcomes],
+    }
+
+
+def write_atomic(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary sibling and a rename."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(handle, "wb") as out:
+            out.write(data)
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.unlink(temporary)
+
+
+def _html_table(header, body) -> str:
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in header)
+    cells = "".join("<tr>" + "".join(f'<td class="{html.escape(str(c))}">{html.escape(str(c))}</td>' for c in r)
+                    + "</tr>" for r in body)
+    return f"<table><tr>{head}</tr>{cells}</table>"
+
+
+STYLE = ("body{font-family:sans-serif;margin:2em;max-width:80em}table{border-collapse:collapse;font-size:90%}"
+         "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}.FAIL{background:#f6c0c0}"
+         ".approx{background:#f6e6b0}.pass{background:#d8f0d8}img{max-width:100%}")
+
+
+def html_page(verification: Verification, figures: dict[str, bytes]) -> str:
+    """The report: summary, engines, explanations, figures (inline PNG) and every result."""
+    images = "".join(f"<h2>{html.escape(title)}</h2><img alt=\"{html.escape(title)}\" "
+                     f"src=\"data:image/png;base64,{base64.b64encode(png).decode()}\">" for title, png in figures.items())
+    notes = [(o.verdict, o.check.title, o.engine, o.worst_input, o.note) for o in verification.outcomes
+             if o.verdict in (FAIL, APPROX)]
+    return (f"<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>ocioforge verify: "
+            f"{html.escape(verification.spec.name)}</title><style>{STYLE}</style></head><body>"
+            f"<h1>ocioforge verify: {html.escape(str(verification.config))}</h1>"
+            f"<pre>{html.escape(summary(verification))}</pre>"
+            f"<h2>Failures and explained departures</h2>"
+            f"{_html_table(('verdict', 'check', 'engine', 'worst input', 'note'), notes)}{images}"
+            f"<h2>Every result</h2>{_html_table(COLUMNS, rows(verification))}</body></html>")
+
+
+def write_report(verification: Verification, folder: str | Path, figures: dict[str, bytes]) -> list[Path]:
+    """Write summary.json and report.html into ``folder``; returns their paths."""
+    folder = Path(folder)
+    written = [folder / "summary.json", folder / "report.html"]
+    write_atomic(written[0], (json.dumps(to_json(verification), indent=1) + "\n").encode())
+    write_atomic(written[1], html_page(verification, figures).encode())
+    return written

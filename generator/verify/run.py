@@ -1,0 +1,169 @@
+"""A verify run: the spec beside a config, its checks, each engine, the verdicts.
+
+The reference is the resolved spec stored beside the config by the build
+(:func:`generator.spec.resolved.read_beside`), evaluated in float64; the config
+is only ever run, never read to decide what it should do.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import time
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from generator.spec import resolved
+from generator.spec.schema import Spec, SpecError
+from generator.verify import checks as checks_module
+from generator.verify.checks import Check
+from generator.verify.engines import IN_PROCESS, apply, explain_default_flags, load_config, processor
+from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, Outcome, judge, sample_errors
+
+ON_CI = os.environ.get("CI") == "true"
+
+
+@dataclass(frozen=True)
+class EngineRun:
+    """How one engine fared: its version, the time it took, or why it did not run."""
+
+    name: str
+    version: str = ""
+    seconds: float = 0.0
+    skipped: str = ""
+
+
+@dataclass(frozen=True, eq=False)
+class Verification:
+    config: Path
+    spec: Spec = field(repr=False)
+    checks: tuple[Check, ...] = field(repr=False)
+    outcomes: tuple[Outcome, ...] = field(repr=False)
+    engines: tuple[EngineRun, ...] = ()
+    seconds: float = 0.0
+    timings: dict = field(default_factory=dict)
+
+    @property
+    def failures(self) -> list[Outcome]:
+        return [o for o in self.outcomes if o.verdict == FAIL]
+
+    @property
+    def passed(self) -> bool:
+        return not self.failures and not (ON_CI and any(e.skipped for e in self.engines))
+
+
+def engine_registry() -> dict:
+    """Engine family name -> engines, in table order."""
+    from generator.verify.blender import BlenderEngine
+    from generator.verify.hosts import OcioconvertEngine, OiiotoolEngine
+
+    return {"ocio": IN_PROCESS, "oiiotool": (OiiotoolEngine(),), "ocioconvert": (OcioconvertEngine(),),
+            "blender": (BlenderEngine(),)}
+
+
+def load(config_path: str | Path) -> tuple[Path, Spec]:
+    """The config path and the spec it was built from; SpecError when either is missing or unreadable."""
+    path = Path(config_path)
+    if not path.is_file():
+        raise SpecError(str(path), "-", "no such config file")
+    spec = resolved.read_beside(path)
+    try:
+        load_config(path)
+    except Exception as error:  # PyOpenColorIO.Exception and friends
+        raise SpecError(str(path), "-", f"OpenColorIO cannot load it: {str(error).splitlines()[0]}") from None
+    return path.absolute(), spec
+
+
+def _worst(check: Check, values: np.ndarray, step: float = 0.0) -> float:
+    errors, _ = sample_errors(check, values, step)
+    return float(np.nanmax(errors)) if not np.all(np.isnan(errors)) else 0.0
+
+
+def _approx(outcome: Outcome, why: str) -> Outcome:
+    return replace(outcome, verdict=APPROX, note=why, values=None)
+
+
+def _explain(config: Path, outcome: Outcome) -> Outcome:
+    """A default-flags failure the flags explain becomes APPROX, with the flag and operator named."""
+    if outcome.violations or outcome.errors is None:
+        return outcome
+    why = explain_default_flags(config, outcome.check, lambda values: _worst(outcome.check, values))
+    return _approx(outcome, why) if why else outcome
+
+
+def _inherit(config: Path, outcome: Outcome, explained: dict) -> Outcome:
+    """A host's failure on a check the in-process default flags explain becomes APPROX when
+    the host computed what those flags compute (hosts run OCIO with its default flags):
+    its output judged against the in-process default-flags output meets the tolerance."""
+    default = explained.get(id(outcome.check))
+    if outcome.verdict != FAIL or default is None or outcome.values is None or outcome.violations:
+        return outcome
+    cfg = load_config(config)
+    proc = processor(cfg, outcome.check, config.parent)
+    import PyOpenColorIO as ocio
+
+    ours = apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT), outcome.check.probes.values)
+    against = replace(outcome.check, expected=ours)
+    gap = _worst(against, outcome.values, outcome.step)
+    if gap > outcome.check.tolerance:
+        return outcome
+    return _approx(outcome, f"as in-process default flags (within {gap:.2g}): {default.note.split(': ', 1)[-1]}")
+
+
+def run_engine(engine, config: Path, spec: Spec, checks: list[Check], workdir: Path) -> tuple[EngineRun, list[Outcome]]:
+    """Run ``engine`` on the checks it supports and judge every output."""
+    from generator.verify.hosts import NotRunnable
+
+    supports = getattr(engine, "supports", lambda check, spec: True)
+    supported = [c for c in checks if c.kind in engine.kinds and supports(c, spec)]
+    started = time.perf_counter()
+    reason = engine.missing(config)
+    if not reason:
+        try:
+            outputs = engine.run(config, supported, workdir)
+        except NotRunnable as error:
+            reason = str(error)
+    if reason:
+        return EngineRun(engine.name, skipped=reason), [Outcome(c, engine.name, NOT_RUN, note=reason) for c in supported]
+    outcomes = [judge(check, engine.name, out) for check, outs in zip(supported, outputs) for out in outs]
+    return EngineRun(engine.name, engine.version(), time.perf_counter() - started), outcomes
+
+
+def _explained(config: Path, outcomes: list[Outcome]) -> list[Outcome]:
+    """Default-flags failures on checks the lossless engine passes, explained (APPROX) when
+    one default flag accounts for them; then hosts' failures that match those."""
+    default, lossless = (e.name for e in IN_PROCESS)
+    exact = {id(o.check) for o in outcomes if o.engine == lossless and o.verdict == PASS}
+    outcomes = [_explain(config, o) if o.engine == default and o.verdict == FAIL and id(o.check) in exact else o
+                for o in outcomes]
+    explained = {id(o.check): o for o in outcomes if o.engine == default and o.verdict == APPROX}
+    return [_inherit(config, o, explained) if o.engine not in (default, lossless) else o for o in outcomes]
+
+
+def verify(config_path: str | Path, engines=("ocio",), density: str = "full", kinds=checks_module.KINDS,
+           workdir: str | Path | None = None, only: str = "") -> Verification:
+    """Verify the config at ``config_path`` through the named engine families: the checks
+    of the given ``kinds`` whose title contains ``only`` (every one when empty)."""
+    import PyOpenColorIO as ocio
+
+    started = time.perf_counter()
+    ocio.ClearAllCaches()  # OCIO caches LUT files by path: read them as they are now
+    config, spec = load(config_path)
+    registry = engine_registry()
+    unknown = [e for e in engines if e not in registry]
+    if unknown:
+        raise SpecError("--engines", ",".join(unknown), f"unknown engine; allowed: {', '.join(registry)}")
+    checks = [c for c in checks_module.build_checks(spec, density, kinds) if only in c.title]
+    timings = {"checks": time.perf_counter() - started}
+    runs, outcomes = [], []
+    with tempfile.TemporaryDirectory(prefix="ocioforge-verify-", dir=workdir) as tmp:
+        for family in engines:
+            for engine in registry[family]:
+                run, found = run_engine(engine, config, spec, checks, Path(tmp))
+                runs.append(run)
+                outcomes += found
+    outcomes = _explained(config, outcomes)
+    return Verification(config, spec, tuple(checks), tuple(outcomes), tuple(runs),
+                        time.perf_counter() - started, timings)

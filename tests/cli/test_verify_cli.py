@@ -1,0 +1,73 @@
+"""ocioforge verify and ocioforge plot, driven in-process through click."""
+
+from __future__ import annotations
+
+import json
+import shutil
+
+import pytest
+from click.testing import CliRunner
+
+from generator.cli.plot import command as plot
+from generator.cli.verify import command as verify
+
+
+@pytest.fixture
+def config(build_config, tmp_path):
+    source = build_config((2, 1)).parent
+    shutil.copytree(source, tmp_path / source.name)
+    return tmp_path / source.name / "config.ocio"
+
+
+def run(command, *args):
+    return CliRunner().invoke(command, [str(a) for a in args])
+
+
+def test_verify_prints_a_row_per_check_and_a_summary(config, tmp_path):
+    result = run(verify, config, "--engines", "ocio", "--quick", "--only", " -> ACES2065-1", "--report", tmp_path / "report")
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert lines[0].split() == ["check", "item", "engine", "max", "p99", "tolerance", "verdict"]
+    assert any("to reference" in line and "ACEScct" in line and "ocio lossless" in line for line in lines)
+    assert "verify passed" in result.output
+    summary = json.loads((tmp_path / "report" / "summary.json").read_text())
+    assert summary["passed"] and {e["name"] for e in summary["engines"]} == {"ocio default", "ocio lossless"}
+    page = (tmp_path / "report" / "report.html").read_text()
+    assert page.count("data:image/png;base64,") == 3 and "<script" not in page
+    assert not [p for p in (tmp_path / "report").iterdir() if p.name.startswith(".")]
+
+
+def test_verify_fails_and_names_the_broken_lut(config):
+    (config.parent / "luts" / "n_log_to_linear.spi1d").write_text("Version 1\nFrom 0 1\nLength 2\nComponents 1\n{\n 0\n 1\n}\n")
+    result = run(verify, config, "--engines", "ocio", "--quick", "--summary")
+    assert result.exit_code == 1
+    assert "FAIL: LUT file luts/n_log_to_linear.spi1d" in result.output
+    assert "worst input" in result.output
+
+
+@pytest.mark.parametrize("args, message", [
+    (["missing/config.ocio"], "no such config file"),
+    (["{config}", "--engines", "ocio,nuke"], "unknown engine"),
+])
+def test_verify_bad_input_is_one_line_and_exit_2(config, args, message):
+    result = CliRunner().invoke(verify, [a.format(config=config) for a in args])
+    assert result.exit_code == 2
+    assert result.stderr.count("\n") == 1 and result.stderr.startswith("error: ") and message in result.stderr
+
+
+def test_verify_without_the_stored_spec_is_a_clear_error(config):
+    (config.parent / "ocioforge-spec.json").unlink()
+    result = CliRunner().invoke(verify, [str(config), "--engines", "ocio", "--quick"])
+    assert result.exit_code == 2 and "no resolved spec beside the config" in result.stderr
+
+
+def test_plot_draws_the_chromaticity_diagram(config, tmp_path):
+    result = run(plot, config, "-o", tmp_path / "diagram.png")
+    assert result.exit_code == 0, result.output
+    assert (tmp_path / "diagram.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_plot_refuses_an_unknown_format_and_writes_nothing(config, tmp_path):
+    result = CliRunner().invoke(plot, [str(config), "-o", str(tmp_path / "diagram.bmp")])
+    assert result.exit_code == 2 and result.stderr.startswith("error: ")
+    assert not list(tmp_path.glob("diagram*"))

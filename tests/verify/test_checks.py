@@ -1,0 +1,97 @@
+"""What verify checks: coverage from the spec, probe families, the float32 allowance, metrics."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from generator import tolerances
+from generator.colorimetry import reference
+from generator.spec import resolved
+from generator.verify import checks, paths, probes
+from generator.verify.allowance import float32_allowance
+from generator.verify.metrics import dequantised, percentile_99
+
+
+@pytest.fixture(scope="module")
+def spec(build_config):
+    return resolved.read_beside(build_config((2, 1)))
+
+
+@pytest.fixture(scope="module")
+def built(spec):
+    return checks.build_checks(spec, "quick")
+
+
+def test_every_space_is_checked_both_ways(spec, built):
+    to_ref = {c.item for c in built if c.kind == checks.TO_REFERENCE}
+    from_ref = {c.item for c in built if c.kind == checks.FROM_REFERENCE}
+    names = {s.name for s in spec.colour_spaces} | {d.name for d in spec.displays}
+    assert names <= to_ref and names <= from_ref
+    assert {f"Colorimetric - {d.name}" for d in spec.displays} <= from_ref
+
+
+def test_every_view_is_checked_from_three_inputs(spec, built):
+    views = [c for c in built if c.kind == checks.VIEW]
+    sources = {c.src for c in views}
+    assert sources == {"ACEScg", "ACEScct", spec.displays[0].name}
+    assert len(views) == 3 * sum(len(d.views) for d in spec.displays)
+
+
+def test_every_baked_lut_file_is_checked(build_config, built):
+    on_disk = {f"luts/{p.name}" for p in (build_config((2, 1)).parent / "luts").iterdir()}
+    assert {c.lut for c in built if c.kind == checks.LUT} == on_disk
+
+
+def test_probe_families_are_float32_and_named(spec):
+    families = probes.scene_families(spec, probes.SIZES["quick"])
+    names = [f.name for f in families]
+    assert names == ["ColorChecker D65", "ColorChecker A", "monochromatic", "camera gamut", "negative", "over-range",
+                     probes.NON_FINITE]
+    for family in families:
+        assert np.array_equal(family.values, family.values.astype(np.float32).astype(np.float64), equal_nan=True)
+    assert np.nanmax(families[5].values) == 65504.0
+    special = families[-1].values
+    assert np.isnan(special).any() and np.isposinf(special).any() and np.isneginf(special).any()
+
+
+def test_the_tungsten_lit_chart_is_warmer(spec):
+    to_xyz = reference.scene_to_display_reference(spec)
+    white = [probes.colorchecker(spec, light).values[18] @ to_xyz.T for light in ("D65", "A")]
+    x = [w[0] / w.sum() for w in white]
+    assert x[1] > x[0]
+
+
+#: ITU-R BT.2020's primaries are monochromatic light of 630 and 532 nm (and 467 nm); the
+#: published xy, rounded to three decimals, sit a hair outside the spectral locus.
+ON_PRIMARIES = {"Rec.2020": {"532 nm", "630 nm"}}
+
+
+def test_monochromatic_light_is_outside_every_display(spec):
+    family = probes.monochromatic(spec, 1.0)
+    for display in spec.displays:
+        rgb = family.values @ (reference.display_matrix(spec, display) @ reference.scene_to_display_reference(spec)).T
+        inside = {family.notes[i] for i in np.flatnonzero(rgb.min(axis=1) > 0.0)}
+        assert inside <= ON_PRIMARIES.get(display.gamut.name, set()), display.name
+
+
+def test_a_probe_describes_itself(spec):
+    family = probes.monochromatic(spec, 100.0)
+    assert probes.Probes((family,)).describe(1).startswith("monochromatic[1] 480 nm (")
+
+
+def test_the_float32_allowance_is_large_only_where_a_power_curve_is_steep(spec):
+    ends = paths.endpoints(spec)
+    ref, gamma = ends["ACES2065-1"], ends["Gamma 2.2 Encoded Rec.709"]
+    rec709 = np.array([[0.18, 0.18, 0.18], [0.0, 1.0, 1.0]])
+    allowance = float32_allowance(ref, gamma.matrix, gamma.encode, rec709 @ gamma.matrix.T)
+    # mid grey: float32 noise far below the tolerance; cyan's zero red: x ** (1 / 2.2) is steep at 0
+    assert np.all(allowance[0] < tolerances.ANALYTIC_RELATIVE * tolerances.RELATIVE_FLOOR)
+    assert allowance[1, 0] > tolerances.ANALYTIC_RELATIVE
+    assert np.all(allowance[1, 1:] < tolerances.ANALYTIC_RELATIVE * tolerances.RELATIVE_FLOOR)
+
+
+def test_dequantised_takes_off_half_a_step_and_no_more():
+    got = dequantised([0.5 + 0.4 / 65535, 0.5 - 2.0 / 65535], [0.5, 0.5], 1.0 / 65535)
+    assert got[0] == 0.5 and got[1] == pytest.approx(0.5 - 1.5 / 65535, abs=1e-15)
+    assert percentile_99([np.nan, 1.0, 2.0]) == pytest.approx(1.99)

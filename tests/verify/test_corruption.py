@@ -1,0 +1,132 @@
+"""verify catches a broken config and names the broken item (PyOpenColorIO engines, small probe sets).
+
+Each corruption is judged against the same config unbroken: exactly the broken
+items must fail in addition to whatever fails there already."""
+
+from __future__ import annotations
+
+import PyOpenColorIO as ocio
+import pytest
+
+from generator.spec.schema import SpecError
+from generator.verify.checks import FROM_REFERENCE, LUT, TO_REFERENCE, VIEW
+from generator.verify.judge import FAIL
+from generator.verify.run import verify
+
+
+KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
+
+
+def _failing_items(config_path, kinds) -> set[str]:
+    result = verify(config_path, ("ocio",), density="quick", kinds=kinds)
+    return {o.check.item for o in result.outcomes if o.verdict == FAIL}
+
+
+def _rewrite(config_path, change) -> None:
+    cfg = ocio.Config.CreateFromFile(str(config_path))
+    change(cfg)
+    config_path.write_text(cfg.serialize(), encoding="utf-8")
+
+
+_BEFORE: dict[tuple, set[str]] = {}
+
+
+def _newly_failing(config_path, corrupt, kinds=KINDS) -> set[str]:
+    """The items that fail once ``corrupt(config_path)`` has run, and did not before
+    (the unbroken copy is verified once per set of kinds)."""
+    if kinds not in _BEFORE:
+        _BEFORE[kinds] = _failing_items(config_path, kinds)
+    corrupt(config_path)
+    return _failing_items(config_path, kinds) - _BEFORE[kinds]
+
+
+def _edit_space(name: str, edit):
+    def change(cfg):
+        space = cfg.getColorSpace(name)
+        transform = space.getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE)
+        space.setTransform(edit(transform), ocio.COLORSPACE_DIR_TO_REFERENCE)
+        cfg.addColorSpace(space)
+
+    return change
+
+
+def test_the_default_config_passes(config_copy):
+    result = verify(config_copy, ("ocio",), density="quick")
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
+
+
+def test_a_matrix_entry_off_by_a_thousandth_is_named(config_copy):
+    def nudge(matrix_transform):
+        values = list(matrix_transform.getMatrix())
+        values[0] += 1e-3
+        matrix_transform.setMatrix(values)
+        return matrix_transform
+
+    corrupt = lambda path: _rewrite(path, _edit_space("Linear P3-D65", nudge))  # noqa: E731
+    assert _newly_failing(config_copy, corrupt, (TO_REFERENCE, FROM_REFERENCE)) == {"Linear P3-D65"}
+
+
+def test_a_wrong_exponent_is_named(config_copy):
+    def steeper(group):
+        exponent = group[0]
+        exponent.setValue([2.25, 2.25, 2.25, 1.0])
+        return group
+
+    corrupt = lambda path: _rewrite(path, _edit_space("Gamma 2.2 Encoded Rec.709", steeper))  # noqa: E731
+    assert _newly_failing(config_copy, corrupt, (TO_REFERENCE, FROM_REFERENCE)) == {"Gamma 2.2 Encoded Rec.709"}
+
+
+def test_a_mislabelled_transfer_function_is_named(config_copy):
+    def mislabel(cfg):
+        srgb, video = cfg.getColorSpace("sRGB Encoded Rec.709 (sRGB)"), cfg.getColorSpace("Camera Rec.709")
+        srgb.setTransform(video.getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE), ocio.COLORSPACE_DIR_TO_REFERENCE)
+        cfg.addColorSpace(srgb)
+
+    corrupt = lambda path: _rewrite(path, mislabel)  # noqa: E731
+    assert _newly_failing(config_copy, corrupt, (TO_REFERENCE, FROM_REFERENCE)) == {"sRGB Encoded Rec.709 (sRGB)"}
+
+
+def test_swapped_lut_files_are_named(config_copy):
+    def swap(path):
+        first, second = path.parent / "luts" / "canon_log_2_to_linear.spi1d", path.parent / "luts" / "canon_log_3_to_linear.spi1d"
+        a, b = first.read_bytes(), second.read_bytes()
+        first.write_bytes(b)
+        second.write_bytes(a)
+
+    failing = _newly_failing(config_copy, swap, (TO_REFERENCE, FROM_REFERENCE, LUT))
+    assert {"luts/canon_log_2_to_linear.spi1d", "luts/canon_log_3_to_linear.spi1d"} <= failing
+    assert {"CanonLog2 CinemaGamut D55", "CanonLog3 CinemaGamut D55"} <= failing
+
+
+def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
+    missing = config_copy.parent / "luts" / "mi_log_to_linear.spi1d"
+    assert _newly_failing(config_copy, lambda path: missing.unlink(), (TO_REFERENCE, LUT)) == {
+        "Mi-Log Rec.2020", "luts/mi_log_to_linear.spi1d"}
+    result = verify(config_copy, ("ocio",), density="quick", kinds=(TO_REFERENCE, LUT), only="Mi-Log")
+    notes = {o.check.item: o.note for o in result.failures}
+    assert notes and all("mi_log_to_linear.spi1d" in note for note in notes.values())
+    result = verify(config_copy, ("ocio",), density="quick", kinds=(LUT,), only="mi_log")
+    assert {o.note for o in result.failures} == {"FileNotFoundError: missing LUT file luts/mi_log_to_linear.spi1d"}
+
+
+def test_a_wrong_view_transform_fails_every_colorimetric_view(config_copy):
+    def nudge(cfg):
+        view = cfg.getViewTransform("Colorimetric")
+        matrix = view.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+        values = list(matrix.getMatrix())
+        values[5] *= 1.001
+        matrix.setMatrix(values)
+        view.setTransform(matrix, ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+        cfg.addViewTransform(view)
+
+    failing = _newly_failing(config_copy, lambda path: _rewrite(path, nudge), (VIEW,))
+    displays = ocio.Config.CreateFromFile(str(config_copy)).getDisplays()
+    assert {f"{d} / Colorimetric" for d in displays} <= failing
+    assert all(" / " in item for item in failing)
+
+
+@pytest.mark.parametrize("missing", ["config.ocio", "ocioforge-spec.json"])
+def test_a_missing_file_is_a_clear_error(config_copy, missing):
+    (config_copy.parent / missing).unlink()
+    with pytest.raises(SpecError, match="no such config file|no resolved spec beside the config"):
+        verify(config_copy, ("ocio",), density="quick")
