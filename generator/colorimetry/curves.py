@@ -390,6 +390,8 @@ def _curves() -> dict[str, TransferFunction]:
     return {
         "linear": Linear(),
         "sRGB": PiecewisePower(2.4, 0.055),
+        # Extended sRGB (EDR): mirrored below zero and unbounded above one.
+        "sRGB extended": PiecewisePower(2.4, 0.055, mirror=True),
         # BT.709 OETF as a moncurve: break 0.01795 and slope 4.514 from continuity (BT.709 prints 0.018, 4.5).
         "Rec.709": PiecewisePower(1.0 / 0.45, 0.099),
         "Gamma 1.8": Power(1.8),

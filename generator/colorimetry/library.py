@@ -176,6 +176,9 @@ DISPLAYS: tuple[DisplayDef, ...] = (
     DisplayDef("Rec.1886 Rec.709 - Display", "Rec.709", "Gamma 2.4", ("rec1886_rec709_display", "g24_rec709_display"),
                description="ITU-R BT.1886 with black at zero: a pure 2.4 power"),
     DisplayDef("Display P3 - Display", "P3-D65", "sRGB", ("displayp3_display", "srgb_p3d65_display")),
+    DisplayDef("Display P3 HDR - Display", "P3-D65", "sRGB extended", ("displayp3_hdr_display", "srgbe_p3d65_display"),
+               1000.0, "edr-video", "Display P3 with the extended sRGB encoding of EDR screens: 1.0 = 100 cd/m², "
+               "values above 1 up to the peak"),
     DisplayDef("Gamma 2.6 P3-D65 - Display", "P3-D65", "Gamma 2.6", ("g26_p3d65_display", "P3-D65 - Display", "p3d65_display")),
     DisplayDef("Gamma 2.6 DCI-P3 - Display", "DCI-P3", "Gamma 2.6", ("g26_dcip3_display", "p3dci_display"),
                description="DCI-P3 primaries and DCI white, gamma 2.6 (SMPTE RP 431-2)"),

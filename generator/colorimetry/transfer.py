@@ -60,12 +60,14 @@ class PiecewisePower:
     straight line through the origin below it, the break and slope chosen so the
     curve and its first derivative are continuous (IEC 61966-2-1 for sRGB with
     gamma 2.4, offset 0.055; ITU-R BT.709 with gamma 1/0.45, offset 0.099).
-    The linear segment continues below zero. This is exactly OCIO's
-    ExponentWithLinearTransform.
+    The linear segment continues below zero, or with ``mirror`` the curve is
+    mirrored there (``f(-x) = -f(x)``, the extended sRGB of EDR displays). This
+    is exactly OCIO's ExponentWithLinearTransform (negative style linear or mirror).
     """
 
     gamma: float
     offset: float
+    mirror: bool = False
 
     @property
     def break_code(self) -> float:
@@ -84,11 +86,15 @@ class PiecewisePower:
 
     def decode(self, code):
         c = _array(code)
+        if self.mirror:
+            return np.sign(c) * PiecewisePower(self.gamma, self.offset).decode(np.abs(c))
         power = ((np.maximum(c, self.break_code) + self.offset) / (1.0 + self.offset)) ** self.gamma
         return np.where(c > self.break_code, power, c * self.slope)
 
     def encode(self, linear):
         v = _array(linear)
+        if self.mirror:
+            return np.sign(v) * PiecewisePower(self.gamma, self.offset).encode(np.abs(v))
         power = (1.0 + self.offset) * np.maximum(v, self.break_linear) ** (1.0 / self.gamma) - self.offset
         return np.where(v > self.break_linear, power, v / self.slope)
 

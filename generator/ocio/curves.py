@@ -63,7 +63,9 @@ def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[st
     if isinstance(curve, transfer.Power):
         return [ocio.ExponentTransform(value=[curve.exponent] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_MIRROR)]
     if isinstance(curve, transfer.PiecewisePower):
-        return [ocio.ExponentWithLinearTransform(gamma=[curve.gamma] * 3 + [1.0], offset=[curve.offset] * 3 + [0.0])]
+        style = ocio.NEGATIVE_MIRROR if curve.mirror else ocio.NEGATIVE_LINEAR
+        return [ocio.ExponentWithLinearTransform(gamma=[curve.gamma] * 3 + [1.0], offset=[curve.offset] * 3 + [0.0],
+                                                 negativeStyle=style)]
     if isinstance(curve, transfer.LogCamera):
         return [_log(curve)]
     if is_baked(name, curve, version):

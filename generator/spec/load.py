@@ -22,7 +22,7 @@ CUSTOM_SPACE_KEYS = ("name", "aliases", "family", "encoding", "description", "ga
                      "primaries_spectra", "white", "transfer")
 DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "white", "eotf", "peak_luminance", "description")
 FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension")
-ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "hdr-video", "data")
+ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "edr-video", "hdr-video", "data")
 
 #: Views a display may offer: each scene-referred view names its gamut-mapping method
 #: (generator.gamut.METHODS); Raw shows data unchanged.

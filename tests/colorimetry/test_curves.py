@@ -20,7 +20,7 @@ LOG_CAMERA = {
 FUNCTION = {
     "ACEScc", "Canon Log 2", "Canon Log 3", "Apple Log", "N-Log", "Samsung Log", "Mi-Log", "ST 2084", "HLG",
 }
-OTHER = {"linear", "sRGB", "Rec.709", "Gamma 1.8", "Gamma 2.2", "Gamma 2.4", "Gamma 2.6"}
+OTHER = {"linear", "sRGB", "sRGB extended", "Rec.709", "Gamma 1.8", "Gamma 2.2", "Gamma 2.4", "Gamma 2.6"}
 
 
 def relative(actual, expected) -> np.ndarray:

@@ -164,9 +164,7 @@ def test_studio_config_names_and_aliases_are_all_present(build_config):
     for cs in studio.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL):
         names = [cs.getName(), *(a for a in cs.getAliases() if not a.startswith("ocio:"))]
         missing += [n for n in names if ours.getColorSpace(n) is None]
-    # Display P3 HDR (extended-range sRGB encoding for EDR screens) is not offered yet.
-    known_gaps = {"Display P3 HDR - Display", "displayp3_hdr_display", "srgbe_p3d65_display"}
-    assert set(missing) <= known_gaps, sorted(set(missing) - known_gaps)
+    assert not missing, sorted(missing)
 
 
 def test_same_spec_builds_byte_identical_files(tmp_path, default_spec):
