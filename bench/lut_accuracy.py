@@ -2,12 +2,24 @@
 
 For each transform (source colour space to display, gamut mapping clip, the
 only one a config's display colour space expresses for ociobakelut) this bakes
-ocioforge's CLF and Resolve .cube, and ociobakelut's Resolve .cube from a config
-built by ocioforge (OCIO 2.1) with every shaper it accepts, then reads all of
-them back through PyOpenColorIO and measures them against the reference
-evaluation on the probe sets of generator.luts.probes (ten-bit codes for SDR,
-ΔE ITP for HDR). It prints max and p99 per set, and the ratio of ociobakelut's
-best p99 to ours. The other gamut mappings are measured for ocioforge alone.
+ocioforge's CLF and Resolve .cube, and ociobakelut's Resolve .cube, then reads
+all of them back through PyOpenColorIO, tetrahedral and trilinear, and
+measures them against the reference evaluation on the probe sets of
+generator.luts.probes (ten-bit codes for SDR, ΔE ITP for HDR).
+
+ociobakelut refuses a shaper space whose conversion from the input space has
+channel crosstalk, which any space is when both go through a matrix to the
+scene reference (the product of a matrix and its computed inverse is not
+exactly diagonal). So its config is built with the source's own linear space
+as the scene reference (the same transform, the matrices rounded differently),
+and every per-channel space with the source's primaries is tried as a shaper,
+as well as none.
+
+Per probe set it prints max/p99 for every bake, then two ratios of p99,
+theirs over ours (above 1: ours is better): against ociobakelut's best bake
+(the one whose p99 over all four sets pooled is lowest) and against the best
+of all its bakes for that set alone; "overall" is the pooled p99. The other
+gamut mappings are measured for ocioforge alone (CLF).
 
 Run: .venv/bin/python bench/lut_accuracy.py [--size 33]
 """
@@ -15,45 +27,130 @@ Run: .venv/bin/python bench/lut_accuracy.py [--size 33]
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import shutil
 import subprocess
 import sys
 import tempfile
 from pathlib import Path
 
+import numpy as np
+
 PAIRS = (("ACEScg", "sRGB - Display"), ("ACEScct", "sRGB - Display"), ("ARRI LogC4", "Rec.1886 Rec.709 - Display"),
          ("Linear Rec.2020", "Gamma 2.6 P3-D65 - Display"), ("ACEScg", "Rec.2100-PQ - Display"))
-#: Shaper spaces tried for ociobakelut (None: no shaper); those it refuses are skipped.
-OCIO_SHAPERS = (None, "ACEScct", "ACEScc", "sRGB Encoded AP1", "Gamma 2.2 Encoded AP1")
 METHODS = ("clip", "scale", "desaturate", "rgc", "perceptual")
+#: Displays whose CLF is also measured for every method (HLG has no ociobakelut comparison here).
+EXTRA_DISPLAYS = ("Rec.2100-HLG - Display",)
+OVERALL = "overall"
+
+
+def _figures(errors: dict) -> dict:
+    """Set name (and "overall", all sets pooled) to (max, p99)."""
+    out = {name: (float(e.max()), float(np.percentile(e, 99))) for name, e in errors.items()}
+    pooled = np.concatenate(list(errors.values()))
+    out[OVERALL] = (float(pooled.max()), float(np.percentile(pooled, 99)))
+    return out
 
 
 def _fmt(figures: dict) -> str:
-    return "  ".join(f"{name} {f.maximum:8.3f}/{f.p99:7.3f}" for name, f in figures.items())
+    return "  ".join(f"{name} {mx:8.3f}/{p99:7.3f}" for name, (mx, p99) in figures.items())
 
 
-def _worst_p99(figures: dict) -> float:
-    return max(f.p99 for f in figures.values())
+def linear_twin(spec, source):
+    """The linear colour space with ``source``'s primaries (``source`` itself when linear)."""
+    from generator.colorimetry.transfer import Linear
+
+    for space in spec.colour_spaces:
+        if space.gamut is not None and space.gamut.name == source.gamut.name and isinstance(space.curve, Linear):
+            return space
+    return None
 
 
-def ocio_bakes(config: Path, source: str, display: str, size: int, folder: Path):
+def shaper_spaces(spec, source) -> list[str]:
+    """Per-channel encodings of ``source``'s primaries other than itself."""
+    from generator.colorimetry.transfer import Linear
+
+    return [s.name for s in spec.colour_spaces if s.gamut is not None and s.gamut.name == source.gamut.name
+            and not isinstance(s.curve, Linear) and s.name != source.name and not s.special]
+
+
+def ocio_bakes(spec, source, display: str, size: int, folder: Path):
     """ociobakelut's Resolve cubes of source -> display, one per accepted shaper."""
-    for number, shaper in enumerate(OCIO_SHAPERS):
+    from generator.ocio.write import build, for_folder
+
+    twin = linear_twin(spec, source)
+    config = folder / ("config_" + "".join(c if c.isalnum() else "_" for c in twin.name))
+    if not config.exists():
+        build(for_folder(dataclasses.replace(spec, scene_reference=twin.name), config, (2, 1)), config)
+    for number, shaper in enumerate([None, *shaper_spaces(spec, source)]):
         out = folder / f"ociobakelut_{number}.cube"
-        args = ["ociobakelut", "--iconfig", str(config), "--inputspace", source, "--outputspace", display,
-                "--format", "resolve_cube", "--cubesize", str(size), str(out)]
+        args = ["ociobakelut", "--iconfig", str(config / "config.ocio"), "--inputspace", source.name,
+                "--outputspace", display, "--format", "resolve_cube", "--cubesize", str(size), str(out)]
         if shaper:
             args[-1:-1] = ["--shaperspace", shaper]
-        done = subprocess.run(args, capture_output=True, text=True)
-        if done.returncode == 0:
+        if subprocess.run(args, capture_output=True, text=True).returncode == 0:
             yield shaper or "none", out
 
 
-def main(argv=None) -> None:
+def _measure(spec, req, path: Path, method: str, interpolation) -> dict:
     import PyOpenColorIO as ocio
 
-    from generator.luts import bake, probes
-    from generator.ocio.write import build, for_folder
+    from generator.luts import probes
+
+    apply = probes.ocio_apply(ocio.FileTransform(str(path), interpolation=interpolation))
+    return _figures(probes.set_errors(spec, req.source, req.display, method, apply)[0])
+
+
+def _ratios(ours: dict, theirs: dict[str, dict]) -> tuple[str, str]:
+    """Lines of p99 ratios (theirs / ours) against the best bake and the per-set best."""
+    best = min(theirs, key=lambda shaper: theirs[shaper][OVERALL][1])
+    against_best = "  ".join(f"{name} {theirs[best][name][1] / max(p99, 1e-12):6.2f}x"
+                             for name, (_, p99) in ours.items())
+    per_set = "  ".join(f"{name} {min(t[name][1] for t in theirs.values()) / max(p99, 1e-12):6.2f}x"
+                        for name, (_, p99) in ours.items())
+    return f"vs best bake (shaper {best}): {against_best}", f"vs per-set best: {per_set}"
+
+
+def compare(spec, source: str, display: str, size: int, folder: Path) -> None:
+    import PyOpenColorIO as ocio
+
+    from generator.luts import bake
+
+    interpolations = (("tetrahedral", ocio.INTERP_TETRAHEDRAL), ("trilinear", ocio.INTERP_LINEAR))
+    print(f"\n== {source} -> {display}, clip, {size}^3, max/p99 per probe set")
+    ours = {}
+    for fmt in ("clf", "resolve_cube"):
+        req = bake.request(spec, source, display, "clip", fmt, size)
+        path = folder / f"ours{bake.FORMATS[fmt].suffix}"
+        path.write_bytes(bake.bake(req)[""])
+        for label, interpolation in interpolations:
+            ours[(fmt, label)] = _measure(spec, req, path, "clip", interpolation)
+            print(f"  ocioforge {fmt:12s} {label:11s} {_fmt(ours[(fmt, label)])}")
+    theirs = {label: {} for label, _ in interpolations}
+    for shaper, path in ocio_bakes(spec, req.source, display, size, folder):
+        for label, interpolation in interpolations:
+            theirs[label][shaper] = _measure(spec, req, path, "clip", interpolation)
+            print(f"  ociobakelut {shaper[:22]:22s} {label:11s} {_fmt(theirs[label][shaper])}")
+    for label, _ in interpolations:
+        for fmt in ("resolve_cube", "clf"):
+            for line in _ratios(ours[(fmt, label)], theirs[label]):
+                print(f"  ratio {fmt:12s} {label:11s} {line}")
+
+
+def methods(spec, source: str, display: str, size: int, folder: Path) -> None:
+    import PyOpenColorIO as ocio
+
+    from generator.luts import bake
+
+    for method in METHODS:
+        req = bake.request(spec, source, display, method, "clf", size)
+        path = folder / "method.clf"
+        path.write_bytes(bake.bake(req)[""])
+        figures = _measure(spec, req, path, method, ocio.INTERP_TETRAHEDRAL)
+        print(f"  ocioforge clf {method:11s} {_fmt(figures)}")
+
+
+def main(argv=None) -> None:
     from generator.spec import load
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -62,42 +159,14 @@ def main(argv=None) -> None:
     if shutil.which("ociobakelut") is None:
         sys.exit("ociobakelut is not installed")
     spec = load.load()
-    tetra = ocio.INTERP_TETRAHEDRAL
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
-        config = folder / "ocioforge-bench"
-        build(for_folder(spec, config, (2, 1)), config)
         for source, display in PAIRS:
-            print(f"\n== {source} -> {display}, {args.size}^3, max/p99 per probe set")
-            ours = {}
-            for fmt in ("clf", "resolve_cube"):
-                req = bake.request(spec, source, display, "clip", fmt, args.size)
-                path = folder / f"ours{bake.FORMATS[fmt].suffix}"
-                path.write_bytes(bake.bake(req)[""])
-                for interp, label in ((tetra, "tetrahedral"), (ocio.INTERP_LINEAR, "trilinear")):
-                    figures = probes.measure(spec, req.source, req.display, "clip",
-                                             probes.ocio_apply(ocio.FileTransform(str(path), interpolation=interp)))
-                    ours[(fmt, label)] = figures
-                    print(f"  ocioforge {fmt:12s} {label:11s} {_fmt(figures)}")
-            best = {}
-            for shaper, path in ocio_bakes(config / "config.ocio", source, display, args.size, folder):
-                for interp, label in ((tetra, "tetrahedral"), (ocio.INTERP_LINEAR, "trilinear")):
-                    figures = probes.measure(spec, req.source, req.display, "clip",
-                                             probes.ocio_apply(ocio.FileTransform(str(path), interpolation=interp)))
-                    print(f"  ociobakelut shaper {shaper:22s} {label:11s} {_fmt(figures)}")
-                    if label not in best or _worst_p99(figures) < _worst_p99(best[label][1]):
-                        best[label] = (shaper, figures)
-            for label, (shaper, figures) in best.items():
-                for fmt in ("resolve_cube", "clf"):
-                    ratio = _worst_p99(figures) / max(_worst_p99(ours[(fmt, label)]), 1e-12)
-                    print(f"  ratio ({label}) ociobakelut best p99 (shaper {shaper}) / ocioforge {fmt} p99: {ratio:.1f}x")
-            for method in METHODS[1:]:
-                req = bake.request(spec, source, display, method, "clf", args.size)
-                path = folder / "method.clf"
-                path.write_bytes(bake.bake(req)[""])
-                figures = probes.measure(spec, req.source, req.display, method,
-                                         probes.ocio_apply(ocio.FileTransform(str(path), interpolation=tetra)))
-                print(f"  ocioforge clf {method:11s} {_fmt(figures)}")
+            compare(spec, source, display, args.size, folder)
+            methods(spec, source, display, args.size, folder)
+        for display in EXTRA_DISPLAYS:
+            print(f"\n== ACEScg -> {display}, {args.size}^3, ocioforge CLF only")
+            methods(spec, "ACEScg", display, args.size, folder)
 
 
 if __name__ == "__main__":

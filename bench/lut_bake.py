@@ -50,7 +50,7 @@ def main() -> None:
                                str(folder / "theirs.cube")])
         ours, report = best_time([sys.executable, "-c", OCIOFORGE, "bake", "--from", "ACEScg", "--to", "sRGB - Display",
                                   "--gamut-map", "clip", "--size", str(SIZE), "-o", str(folder / "ours.cube"), "--force"])
-        imports, _ = best_time([sys.executable, "-c", "import generator.cli.bake as b; b._import_colour_without_plotting(); "
+        imports, _ = best_time([sys.executable, "-c", "import generator.colour_science as c; c.skip_plotting(); import colour; "
                                 "from generator.spec import load; load.load(); import generator.gamut"])
     print(f"65^3 Resolve cube, ACEScg -> sRGB - Display, best of {REPEATS} fresh processes:")
     print(f"  ociobakelut      {theirs:6.3f} s")

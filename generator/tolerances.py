@@ -113,9 +113,10 @@ LUT_NODE_ABSOLUTE = 1e-5
 #: in-gamut colours (the issue's target; measured 0.008, float32 processing).
 LUT_CLF_IN_GAMUT_CODES = 0.05
 
-#: CLF of the scale mapping, 33³, every probe set, ten-bit codes (target 1; measured
-#: 1.64 into sRGB: the largest channel's division bends inside lattice cells).
-LUT_CLF_SCALE_CODES = 2.0
+#: CLF of the clip and scale mappings, 33³, every probe set, ten-bit codes (the issue's
+#: target; measured 0.011 into sRGB and P3 since the lattice is uniform in log2(x + toe),
+#: where both mappings are linear inside every tetrahedron).
+LUT_CLF_SCALE_CODES = 1.0
 
 #: Resolve .cube of a clip view from a linear or log source, 33³, in-gamut p99, ten-bit
 #: codes: clipping planes are oblique to a source-axis lattice (measured 48 to 67).
@@ -151,10 +152,13 @@ OCIOBAKELUT_ACESCG_SRGB_P99 = {"in_gamut": 86.7, "dark": 73.4, "out_of_gamut": 1
 #: (the issue's target).
 LUT_CUBE_P99_RATIO = 2.0
 
-#: A Resolve .cube of a clip view against the reference on greys, ten-bit codes: tetrahedral
-#: interpolation takes greys from the diagonal's nodes, kept at their sampled values, and the
-#: shaper is linear in code values between nodes (measured 0.2: the uniform shaper table).
-LUT_CUBE_GREY_CODES = 0.5
+#: A Resolve .cube of ACEScg to sRGB (clip) against the reference on greys from 1e-4 to 16
+#: times white, ten-bit codes: tetrahedral interpolation takes greys from the diagonal's
+#: nodes, kept at their sampled values, and the shaper is linear in code values between
+#: nodes, but a linear source's shaper table is uniform in linear light, 1e-3 of white
+#: apart (measured 0.26, at 0.0036 of white; 0.12 from ARRI LogC4 into Rec.1886, but 13.7
+#: from ACEScg into Rec.1886, whose 2.4 power is steep in the table's first step).
+LUT_CUBE_GREY_CODES = 0.3
 
 #: CLF of clip or scale, 33³, every probe set, ten-bit codes, when the file decodes the source
 #: itself: OCIO's float32 Log operator is within about 3e-6 of the curve, which the matrix and

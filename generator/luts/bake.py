@@ -22,7 +22,7 @@ WHERE = "ocioforge bake"
 
 #: The gamut mapping of ``ocioforge bake`` and of the standalone pack: clip's result
 #: inside the gamut and for negative components, the chromaticity of over-range colours
-#: kept, and within about 2 ten-bit codes of the reference at 33³ (see luts/README.md).
+#: kept; its CLF is exact but for float32 (0.011 ten-bit codes at 33³, see luts/README.md).
 DEFAULT_METHOD = "scale"
 
 DEFAULT_SIZE = 33
@@ -124,13 +124,13 @@ def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: 
             raise SpecError(WHERE, "--shaper", f"{fmt} holds no shaper; allowed: auto, none")
         chosen = find_source(spec, shaper, "--shaper", "shaper")
     top = FORMATS[fmt].max_size
-    smallest = _smallest_size(dst, src, method, fmt, chosen)
+    smallest = _smallest_size(spec, dst, src, method, fmt, chosen)
     if not smallest <= size <= top:
         raise SpecError(WHERE, "--size", f"{size} is outside what {fmt} allows here: {smallest} to {top}")
     return Request(spec, src, dst, method, fmt, size, chosen)
 
 
-def _smallest_size(display: Display, source: ColourSpace, method: str, fmt: str, shaper) -> int:
+def _smallest_size(spec: Spec, display: Display, source: ColourSpace, method: str, fmt: str, shaper) -> int:
     """Fewest nodes a side the layout needs (2 without a shaper)."""
     if shaper == "none" or not FORMATS[fmt].shaper:
         return 2
@@ -139,7 +139,7 @@ def _smallest_size(display: Display, source: ColourSpace, method: str, fmt: str,
             if fmt == "clf" and shaper == "auto":
                 lattice.display_axis(display, size, method)
             else:
-                lattice.source_axis(source, display, size, method)
+                lattice.source_axis(spec, source, display, size)
             return size
         except ValueError:
             continue
@@ -163,8 +163,13 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     lines = [f"ocioforge: {describe(req)}.",
              f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).",
              f"Output: {req.display.name} code values (full range, 0 to 1)."]
-    if lat.shaper is not None:
-        lines.append("A 1D shaper puts the lattice nodes at the display's code values of the decoded input.")
+    if lat.pre is not None:
+        return lines
+    if lat.shaper is not None and req.shaper == "auto":
+        lines.append("A 1D shaper spaces the nodes in the display's code values of the decoded input "
+                     "(logarithmically above the peak), linear in code values between nodes.")
+    lines.append("Node values are fitted by least squares to colours of the source gamut; greys and colours "
+                 "with a zero channel keep the sampled values. Interpolate tetrahedrally.")
     return lines
 
 

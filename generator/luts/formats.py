@@ -9,8 +9,9 @@
 * ``spi3d``: Sony Pictures Imageworks 3D (``SPILUT 1.0``, explicit node indices,
   input [0, 1]); the shaper, where there is one, is a separate .spi1d.
 * ``clf``: Academy/ASC Common LUT Format v3 (S-2014-006, 2020 revision), all
-  32-bit float: source decoding, Matrix, pre-shaper, Range, LUT1D, LUT3D in one
-  ProcessList; the 3D array has blue fastest.
+  32-bit float: source decoding, Matrix, pre-shaper (Exponent, or Log for a
+  logarithmic lattice), Range, LUT1D, LUT3D and, after a logarithmic lattice,
+  the LUT1D to code values, in one ProcessList; the 3D array has blue fastest.
 
 Every writer returns text as bytes; the same lattice always gives the same bytes.
 """
@@ -21,6 +22,7 @@ import numpy as np
 
 from generator.colorimetry.transfer import Linear, LogCamera, PiecewisePower, Power
 from generator.luts import numbers
+from generator.luts.axes import LogAxis
 from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice
 from generator.luts.spi1d import format_spi1d
 
@@ -56,7 +58,7 @@ def resolve_cube(lattice: Lattice, title: str, notes=()) -> bytes:
         body.append(numbers.table(np.repeat(lattice.shaper[:, None], 3, axis=1), SHAPER_DECIMALS))
     else:
         head += [f"LUT_3D_SIZE {lattice.size}\n", f"LUT_3D_INPUT_RANGE {_n(lo)} {_n(hi)}\n"]
-    body.append(numbers.table(red_fastest(lattice.cube), CUBE_DECIMALS))
+    body.append(numbers.table(red_fastest(lattice.cube), lattice.decimals))
     return "".join(head).encode("ascii") + b"".join(body)
 
 
@@ -66,13 +68,13 @@ def iridas_cube(lattice: Lattice, title: str, notes=()) -> bytes:
     lo, hi = lattice.domain
     head = (f'TITLE "{title}"\n{_comments(notes)}LUT_3D_SIZE {lattice.size}\n'
             f"DOMAIN_MIN {_n(lo)} {_n(lo)} {_n(lo)}\nDOMAIN_MAX {_n(hi)} {_n(hi)} {_n(hi)}\n")
-    return head.encode("ascii") + numbers.table(red_fastest(lattice.cube), CUBE_DECIMALS)
+    return head.encode("ascii") + numbers.table(red_fastest(lattice.cube), lattice.decimals)
 
 
 def spi3d(lattice: Lattice) -> bytes:
     n = lattice.size
     index = np.indices((n, n, n)).reshape(3, -1).T
-    values = numbers.table(blue_fastest(lattice.cube), CUBE_DECIMALS).decode("ascii").splitlines()
+    values = numbers.table(blue_fastest(lattice.cube), lattice.decimals).decode("ascii").splitlines()
     rows = "".join(f"{i} {j} {k} {v}\n" for (i, j, k), v in zip(index.tolist(), values))
     return f"SPILUT 1.0\n3 3\n{n} {n} {n}\n{rows}".encode("ascii")
 
@@ -112,6 +114,15 @@ def _lut1d(values: np.ndarray, decimals: int) -> str:
     return _op("LUT1D", _array(values[:, None], f"{values.size} 1", decimals))
 
 
+def _log_axis(axis: LogAxis) -> str:
+    """The Log operator taking normalised display-linear x to the coordinate of ``axis``:
+    ``log2(x + toe) / span - log2(toe) / span``."""
+    params = dict(base=2.0, logSideSlope=1.0 / axis.span, logSideOffset=-np.log2(axis.toe) / axis.span,
+                  linSideSlope=1.0, linSideOffset=axis.toe)
+    attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
+    return _op("Log", f"<LogParams {attrs}/>\n", style="linToLog")
+
+
 def _log_camera(curve: LogCamera) -> str:
     params = dict(base=curve.base, logSideSlope=curve.log_side_slope, logSideOffset=curve.log_side_offset,
                   linSideSlope=curve.lin_side_slope, linSideOffset=curve.lin_side_offset,
@@ -148,27 +159,38 @@ def _matrix(matrix: np.ndarray) -> str:
     return _op("Matrix", f'<Array dim="3 3">\n{rows}</Array>\n')
 
 
+def _pre(lattice: Lattice, include_matrix: bool) -> list[str]:
+    """Operators before the Range of a display layout: decoding and Matrix (with
+    ``include_matrix``), then the Log or Exponent pre-shaper."""
+    ops = []
+    if include_matrix:
+        if lattice.decode is not None:
+            ops.append(decode_ops(lattice.source.name, lattice.decode))
+        ops.append(_matrix(lattice.matrix))
+    pre = lattice.pre
+    if isinstance(pre, LogAxis):
+        ops.append(_log_axis(pre))
+    else:
+        ops.append(_exponent("monCurveMirrorRev", pre.gamma, pre.offset) if pre.offset
+                   else _exponent("basicMirrorRev", pre.gamma))
+    return ops
+
+
 def clf(lattice: Lattice, identifier: str, description: str, include_matrix: bool = True,
         descriptors: tuple[str, str] = ("", "")) -> bytes:
     """A CLF v3 ProcessList of ``lattice``. Display layout: [decoding, Matrix,] pre-shaper,
-    Range, LUT1D, LUT3D; without ``include_matrix`` the file starts at the
+    Range, [LUT1D,] LUT3D, [LUT1D]; without ``include_matrix`` the file starts at the
     pre-shaper and its input is normalised display-linear RGB (the config keeps
     the matrix as a MatrixTransform). Source layout: Range, [LUT1D,] LUT3D."""
-    ops = []
-    if lattice.pre is not None:
-        if include_matrix:
-            if lattice.decode is not None:
-                ops.append(decode_ops(lattice.source.name, lattice.decode))
-            ops.append(_matrix(lattice.matrix))
-        pre = lattice.pre
-        ops.append(_exponent("monCurveMirrorRev", pre.gamma, pre.offset) if pre.offset
-                   else _exponent("basicMirrorRev", pre.gamma))
+    ops = _pre(lattice, include_matrix) if lattice.pre is not None else []
     ops.append(_range(*lattice.domain))
     if lattice.shaper is not None:
         ops.append(_lut1d(lattice.shaper, SHAPER_DECIMALS))
     n = lattice.size
-    ops.append(_op("LUT3D", _array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", CUBE_DECIMALS),
+    ops.append(_op("LUT3D", _array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", lattice.decimals),
                    interpolation=INTERPOLATION))
+    if lattice.post is not None:
+        ops.append(_lut1d(lattice.post, CUBE_DECIMALS))
     head = (f'<?xml version="1.0" encoding="UTF-8"?>\n<ProcessList compCLFversion="3" id="{_xml(identifier)}">\n'
             f"<Description>{_xml(description)}</Description>\n")
     if descriptors[0]:

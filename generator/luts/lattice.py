@@ -2,20 +2,25 @@
 
 * Display axes (:func:`display_lattice`): what is linear is applied exactly
   before the lattice (the source's decoding curve and the source-to-display
-  matrix), then an analytic pre-shaper and a 1D table take display-linear
-  RGB to the lattice coordinate of :class:`~generator.luts.axes.Axis`: the
-  display's code values with 0 and the peak on nodes. CLF and the config's
-  views use it.
+  matrix), then a per-channel shaper takes normalised display-linear RGB to
+  the lattice coordinate. For clip and scale the shaper is a CLF Log operator
+  (:class:`~generator.luts.axes.LogAxis`), the lattice holds the same
+  coordinate of the mapped colour and a 1D table (``post``) turns it into code
+  values; for the other methods an analytic pre-shaper and a 1D table lead to
+  an :class:`~generator.luts.axes.Axis` and the lattice holds code values.
+  CLF and the config's views use it.
 * Source axes (:func:`source_lattice`): formats that hold no matrix (.cube,
   .spi3d) sample the whole transform in the source's own values; a 1D shaper
-  table, uniform in source values, takes them to the lattice coordinate of the
-  same :class:`Axis` applied to the decoded source value, so that greys land on
-  the lattice diagonal exactly where the display would put them.
+  table, uniform in source values, takes them to the coordinate of a
+  :class:`~generator.luts.axes.SourceAxis`. A clipping plane of the display is
+  oblique to these axes and crosses cells, so the node values are then fitted
+  by least squares (:func:`fit`) to colours of the kinds the probes measure,
+  drawn from another seed; greys and colours with a zero channel stay exact.
 
-Node values are the reference evaluation (:func:`~generator.colorimetry.reference.mapped_view`)
-at the *exact* preimage of each node under the shaper as written (a
-piecewise-linear table, rounded as in the file), so the only error left is
-interpolation inside the cells.
+Node values start from the reference evaluation
+(:func:`~generator.colorimetry.reference.mapped_view`) at the *exact* preimage
+of each node under the shaper as written (a piecewise-linear table, rounded as
+in the file).
 """
 
 from __future__ import annotations
@@ -26,19 +31,25 @@ import numpy as np
 
 from generator.colorimetry import reference
 from generator.colorimetry.transfer import Linear, PiecewisePower, Power
-from generator.luts import numbers
-from generator.luts.axes import Axis, shares
+from generator.luts import numbers, probes
+from generator.luts.axes import (DEFAULT_SHARES, LOG_METHODS, SOURCE_SHAPER_SIZES, Axis, LogAxis, grey_code,
+                                 grey_linear, source_axis, source_domain)
 from generator.spec.schema import ColourSpace, Display, Spec
 
-#: Decimals written for lattice values (display code values): 5e-6 of a code at most
-#: (0.005 of a ten-bit code), which keeps the standalone pack under 30 MB.
+#: Decimals written for lattice values holding display code values: 5e-6 of a code at
+#: most (0.005 of a ten-bit code), which keeps the standalone pack under 30 MB.
 CUBE_DECIMALS = 5
+
+#: Decimals written for lattice values holding :class:`LogAxis` coordinates: a step of
+#: 1e-7 is about 3e-6 bits, a relative 2e-6 of display-linear light (0.001 ten-bit codes).
+LOG_DECIMALS = 7
 
 #: Decimals written for shaper tables (lattice coordinates).
 SHAPER_DECIMALS = 6
 
 #: Display axes: normalised display-linear range the lattice covers (values beyond are
-#: clamped): down to -16 and up to 32 times the display's peak.
+#: clamped): down to -16 and up to 32 times the display's peak (the over-range probes,
+#: 16 times the peak in the ACEScg gamut, reach 27 in sRGB).
 DISPLAY_RANGE = (-16.0, 32.0)
 
 #: Pre-shaper exponent for displays whose EOTF CLF cannot express (PQ, HLG): PQ is steep
@@ -49,12 +60,9 @@ DEFAULT_GAMMA = 6.0
 #: Display axes: 1D table entries per unit of the pre-shaped value (1 = the display's peak).
 ENTRIES_PER_UNIT = 64
 
-#: Source axes: range of linear sources, in units of display white (1.0 = 100 cd/m²).
-LINEAR_SOURCE_RANGE = (-1.0, 64.0)
-
-#: Source axes: entries of the 1D shaper table.
-SOURCE_SHAPER_SIZE = 2048
-
+#: Entries of the 1D table after a :class:`LogAxis` lattice (coordinate to code value):
+#: its linear interpolation is within 0.002 ten-bit codes of the display's encoding.
+POST_SIZE = 4096
 
 @dataclass(frozen=True)
 class PreShaper:
@@ -86,13 +94,16 @@ class PreShaper:
 
 @dataclass(frozen=True, eq=False)
 class Lattice:
-    """A sampled transform: optional exact steps, a shaper table, a 3D table.
+    """A sampled transform: optional exact steps, a shaper, a 3D table, an optional 1D table.
 
     ``decode`` and ``matrix`` (display axes only) are the source's curve and
     the source-to-normalised-display-linear matrix; ``pre`` the analytic
-    pre-shaper. ``domain`` is the input range of ``shaper`` (uniform entries
-    over it) or, without a shaper, of the cube itself. ``cube[r, g, b]`` holds
-    display code values at the nodes, rounded as written.
+    shaper (a :class:`PreShaper` before ``shaper``, or a :class:`LogAxis`
+    taking display-linear values to the lattice directly). ``domain`` is the
+    input range of ``shaper`` (uniform entries over it) or, without a shaper,
+    of the cube itself. ``cube[r, g, b]`` holds the values at the nodes,
+    rounded as written (``decimals``): display code values, or with ``post``
+    (a 1D table uniform over [0, 1]) the coordinates ``post`` turns into them.
     """
 
     source: ColourSpace | None
@@ -100,10 +111,12 @@ class Lattice:
     method: str
     decode: object | None
     matrix: np.ndarray | None
-    pre: PreShaper | None
+    pre: PreShaper | LogAxis | None
     domain: tuple[float, float]
     shaper: np.ndarray | None
     cube: np.ndarray
+    post: np.ndarray | None = None
+    decimals: int = CUBE_DECIMALS
 
     @property
     def size(self) -> int:
@@ -119,22 +132,36 @@ def _preimages(size: int, shaper: np.ndarray | None, domain: tuple[float, float]
     return np.interp(u, table[increasing], grid[increasing])
 
 
-def _evaluate(display: Display, method: str, linear_axis: np.ndarray, matrix: np.ndarray, params) -> np.ndarray:
-    """Mapped code values on the grid of per-axis linear values, ``[r, g, b]`` order."""
-    n = linear_axis.size
+def coordinates(lat: Lattice, code) -> np.ndarray:
+    """Lattice coordinates in [0, 1] of source-layout input values, as a reader computes them."""
+    code = np.clip(np.asarray(code, dtype=np.float64), *lat.domain)
+    if lat.shaper is None:
+        return (code - lat.domain[0]) / (lat.domain[1] - lat.domain[0])
+    return np.interp(code, np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size), lat.shaper)
+
+
+def _grid(axis: np.ndarray) -> np.ndarray:
+    n = axis.size
     grid = np.empty((n, n, n, 3))
-    grid[..., 0] = linear_axis[:, None, None]
-    grid[..., 1] = linear_axis[None, :, None]
-    grid[..., 2] = linear_axis[None, None, :]
+    grid[..., 0] = axis[:, None, None]
+    grid[..., 1] = axis[None, :, None]
+    grid[..., 2] = axis[None, None, :]
+    return grid
+
+
+def _evaluate(display: Display, method: str, linear_axis: np.ndarray, matrix: np.ndarray, params) -> np.ndarray:
+    """Mapped code values on the grid of per-axis linear values, ``[r, g, b]`` order.
+    Codes are not clipped above 1: HLG's inverse EOTF exceeds 1 for saturated colours."""
+    grid = _grid(linear_axis)
     with np.errstate(all="ignore"):
         linear = reference.apply_matrix(matrix, grid) if matrix is not None else grid
         code = reference.map_display_linear(display, method, linear, params)
-    return numbers.rounded(np.clip(np.nan_to_num(code), 0.0, 1.0), CUBE_DECIMALS)
+    return numbers.rounded(np.maximum(np.nan_to_num(code), 0.0), CUBE_DECIMALS)
 
 
 def display_table(axis: Axis, pre: PreShaper) -> tuple[tuple[float, float], np.ndarray]:
-    """The shaper table of the display layout: pre-shaped values on a uniform grid with
-    0 and 1 on entries, to lattice coordinates. Returns (domain, values)."""
+    """The shaper table of an :class:`Axis` layout: pre-shaped values on a uniform grid
+    with 0 and 1 on entries, to lattice coordinates. Returns (domain, values)."""
     w_low = -np.ceil(-pre.forward(axis.low) * ENTRIES_PER_UNIT) / ENTRIES_PER_UNIT
     w_high = np.ceil(pre.forward(axis.high) * ENTRIES_PER_UNIT) / ENTRIES_PER_UNIT
     count = int(round((w_high - w_low) * ENTRIES_PER_UNIT)) + 1
@@ -142,9 +169,35 @@ def display_table(axis: Axis, pre: PreShaper) -> tuple[tuple[float, float], np.n
     return (float(w_low), float(w_high)), numbers.rounded(axis.coordinate(pre.inverse(w)), SHAPER_DECIMALS)
 
 
-def display_axis(display: Display, size: int, method: str) -> Axis:
+def display_axis(display: Display, size: int, method: str) -> Axis | LogAxis:
     """The display layout's axis: normalised display-linear over :data:`DISPLAY_RANGE`."""
-    return Axis.layout(display, size, *DISPLAY_RANGE, shares(method))
+    if method in LOG_METHODS:
+        return LogAxis.layout(display, size, DISPLAY_RANGE[1])
+    return Axis.layout(display, size, *DISPLAY_RANGE, DEFAULT_SHARES)
+
+
+#: HLG: scale applied to mapped colours before encoding them for a :class:`LogAxis` lattice.
+#: BT.2100's HLG (no black lift) makes scene light homogeneous of degree 1 / gamma in
+#: display light, so the grey with the same code as a colour scales with it; below the
+#: code clip at 1 the lattice can hold the unclipped grey and leave the clip to the 1D
+#: table, per channel, exactly. A quarter keeps every colour of the cube below the clip
+#: (a channel's code reaches 1 at ``(1 / Y) ** (gamma - 1)``, 1.8 for Rec.2020 blue).
+HLG_UNCLIPPED_SCALE = 0.25
+
+
+def _log_lattice(display: Display, method: str, axis: LogAxis, params) -> tuple[np.ndarray, np.ndarray]:
+    """Cube of mapped coordinates (the coordinate of the grey of the same code) and the
+    1D table from coordinate to code value."""
+    from generator.gamut import METHODS
+
+    top = reference.display_encode(display, np.full(3, display.clip_high))[0]
+    scale = HLG_UNCLIPPED_SCALE if display.eotf_name == "HLG" else 1.0
+    with np.errstate(all="ignore"):
+        mapped = METHODS[method](_grid(axis.nodes()), None, params)  # clip and scale need no display gamut
+        code = reference.display_encode(display, mapped * display.clip_high * scale)
+        cube = axis.coordinate(grey_linear(display, np.nan_to_num(code) / top) / scale)
+    post = grey_code(display, axis.position(np.linspace(0.0, 1.0, POST_SIZE))) * top
+    return numbers.rounded(cube, LOG_DECIMALS), numbers.rounded(post, CUBE_DECIMALS)
 
 
 def display_lattice(spec: Spec, display: Display, method: str, size: int, source: ColourSpace | None = None,
@@ -152,15 +205,19 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
     """The display layout. With ``source``, the lattice's input is that space's code
     values (its curve and matrix come first); without, scene-reference linear RGB
     (the matrix is the caller's: :func:`view_matrix`)."""
-    pre = PreShaper.for_display(display)
-    axis = display_axis(display, size, method)
-    domain, table = display_table(axis, pre)
-    linear = pre.inverse(_preimages(size, table, domain)) * display.clip_high
-    cube = _evaluate(display, method, linear, None, params)
     matrix = view_matrix(spec, display)
     if source is not None:
         matrix = matrix @ reference.space_matrix(spec, source)
-    return Lattice(source, display, method, None if source is None else source.curve, matrix, pre, domain, table, cube)
+    decode = None if source is None else source.curve
+    axis = display_axis(display, size, method)
+    if isinstance(axis, LogAxis):
+        cube, post = _log_lattice(display, method, axis, params)
+        return Lattice(source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, post, LOG_DECIMALS)
+    pre = PreShaper.for_display(display)
+    domain, table = display_table(axis, pre)
+    linear = pre.inverse(_preimages(size, table, domain)) * display.clip_high
+    cube = _evaluate(display, method, linear, None, params)
+    return Lattice(source, display, method, decode, matrix, pre, domain, table, cube)
 
 
 def view_matrix(spec: Spec, display: Display) -> np.ndarray:
@@ -168,43 +225,107 @@ def view_matrix(spec: Spec, display: Display) -> np.ndarray:
     return reference.scene_to_display_matrix(spec, display) / display.clip_high
 
 
-def source_domain(source: ColourSpace, display: Display) -> tuple[float, float]:
-    """Input range of a source layout: code 0 to 1 for encoded sources; for linear ones
-    :data:`LINEAR_SOURCE_RANGE` times the display's peak (at least 16x display white)."""
-    if isinstance(source.curve, Linear):
-        low, high = LINEAR_SOURCE_RANGE
-        return low * display.clip_high, high * display.clip_high
-    return tuple(float(v) for v in getattr(source.curve, "domain", (0.0, 1.0)))
-
-
-def source_axis(source: ColourSpace, display: Display, size: int, method: str) -> Axis:
-    """The source layout's axis: the display's axis over the decoded source domain."""
-    lo, hi = source_domain(source, display)
+def _shaper_table(spec: Spec, source: ColourSpace, display: Display, size: int, shaper, domain) -> np.ndarray | None:
+    if shaper == "none":
+        return None
+    count = SOURCE_SHAPER_SIZES[isinstance(source.curve, Linear)]
     with np.errstate(all="ignore"):
-        low, high = (float(v) / display.clip_high for v in source.curve.decode(np.array([lo, hi])))
-    return Axis.layout(display, size, low, high, shares(method))
+        linear = source.curve.decode(np.linspace(domain[0], domain[1], count))
+        if shaper == "auto":
+            coordinate = source_axis(spec, source, display, size).coordinate(linear / display.clip_high)
+        else:
+            encoded = shaper.curve.encode(linear)
+            coordinate = (encoded - encoded[0]) / (encoded[-1] - encoded[0])
+    return numbers.rounded(coordinate, SHAPER_DECIMALS)
 
 
 def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: str, size: int,
                    shaper: str | ColourSpace = "auto", params=None) -> Lattice:
-    """The source layout. ``shaper``: "auto" (the display's axis on the decoded source),
+    """The source layout. ``shaper``: "auto" (:class:`SourceAxis` on the decoded source),
     "none" (the cube directly over the source domain) or a colour space whose
     curve, applied to the decoded source values, spaces the nodes."""
     domain = source_domain(source, display)
-    table = None
-    if shaper != "none":
-        codes = np.linspace(domain[0], domain[1], SOURCE_SHAPER_SIZE)
-        with np.errstate(all="ignore"):
-            linear = source.curve.decode(codes)
-        if shaper == "auto":
-            coordinate = source_axis(source, display, size, method).coordinate(linear / display.clip_high)
-        else:
-            encoded = shaper.curve.encode(linear)
-            coordinate = (encoded - encoded[0]) / (encoded[-1] - encoded[0])
-        table = numbers.rounded(coordinate, SHAPER_DECIMALS)
+    table = _shaper_table(spec, source, display, size, shaper, domain)
     codes = _preimages(size, table, domain)
     with np.errstate(all="ignore"):
         linear = source.curve.decode(codes)
     matrix = reference.scene_to_display_matrix(spec, display) @ reference.space_matrix(spec, source)
     cube = _evaluate(display, method, linear, matrix, params)
-    return Lattice(source, display, method, None, None, None, domain, table, cube)
+    lat = Lattice(source, display, method, None, None, None, domain, table, cube)
+    axis = source_axis(spec, source, display, size) if shaper == "auto" else None
+    zero = axis.zero if axis is not None and axis.values[axis.zero] == 0.0 else None
+    colours = probes.training(spec, source, display, method, FIT_COUNT, params)
+    return Lattice(source, display, method, None, None, None, domain, table, fit(lat, colours, zero))
+
+
+#: Colours per probe set in the least-squares fit of source-layout node values.
+FIT_COUNT = 16384
+
+#: Weight of in-gamut colours in the fit, against 1 for the other sets: an equal weight
+#: trades in-gamut accuracy for out-of-gamut accuracy (measured at 33³, Linear Rec.2020 to
+#: Gamma 2.6 P3, in-gamut p99: 35 sampled, 53 fitted with weight 1, 21 with 4).
+FIT_IN_GAMUT_WEIGHT = 3.0
+
+#: Pull of each node toward its sampled value, in units of one colour's weight: nodes
+#: few colours reach stay where they are.
+FIT_REGULARISATION = 1.0
+
+#: Relative residual at which the conjugate-gradient solve stops.
+FIT_RTOL = 1e-6
+
+
+def tetrahedral_weights(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """Flat node numbers (m, 4) and weights (m, 4) of tetrahedral interpolation at
+    fractional node indices ``index`` (m, 3), ``[r, g, b]`` order."""
+    base = np.clip(np.floor(index).astype(np.int64), 0, size - 2)
+    fraction = index - base
+    order = np.argsort(-fraction, axis=1, kind="stable")
+    sorted_fraction = np.take_along_axis(fraction, order, axis=1)
+    corner = base.copy()
+    nodes, weights = [], []
+    for k in range(4):
+        if k:
+            np.put_along_axis(corner, order[:, k - 1:k], np.take_along_axis(corner, order[:, k - 1:k], 1) + 1, 1)
+        nodes.append((corner[:, 0] * size + corner[:, 1]) * size + corner[:, 2])
+        upper = sorted_fraction[:, k - 1] if k else np.ones(len(index))
+        lower = sorted_fraction[:, k] if k < 3 else np.zeros(len(index))
+        weights.append(upper - lower)
+    return np.stack(nodes, axis=1), np.stack(weights, axis=1)
+
+
+def fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
+    """Node values minimising the weighted squared error of tetrahedral interpolation
+    on ``colours`` (set name to (input values, expected codes)), plus
+    :data:`FIT_REGULARISATION` times the squared change of each node. The
+    diagonal's nodes (greys) and, with ``zero``, the nodes of a zero channel are
+    kept at their sampled values."""
+    import scipy.sparse as sparse
+    from scipy.sparse.linalg import LinearOperator, cg
+
+    n, total = lat.size, lat.size**3
+    rows, expected = [], []
+    for name, (code, codes) in colours.items():
+        weight = FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0
+        nodes, w = tetrahedral_weights(coordinates(lat, code) * (n - 1), n)
+        rows.append((nodes, w * np.sqrt(weight)))
+        expected.append(np.nan_to_num(codes) * np.sqrt(weight))
+    nodes = np.concatenate([r[0] for r in rows])
+    weights = np.concatenate([r[1] for r in rows])
+    matrix = sparse.csr_matrix((weights.ravel(), (np.repeat(np.arange(len(nodes)), 4), nodes.ravel())),
+                               shape=(len(nodes), total))
+    index = np.indices((n, n, n)).reshape(3, -1)
+    kept = (index[0] == index[1]) & (index[1] == index[2])
+    if zero is not None:
+        kept |= np.any(index == zero, axis=0)
+    start = lat.cube.reshape(total, 3)
+    free = matrix[:, ~kept]
+    residual = np.concatenate(expected) - matrix[:, kept] @ start[kept]
+    normal = (free.T @ free + FIT_REGULARISATION * sparse.identity(free.shape[1])).tocsr()
+    right = free.T @ residual + FIT_REGULARISATION * start[~kept]
+    diagonal = normal.diagonal()
+    jacobi = LinearOperator(normal.shape, matvec=lambda v: v / diagonal)
+    values = start.copy()
+    for channel in range(3):
+        values[~kept, channel] = cg(normal, right[:, channel], x0=start[~kept, channel], rtol=FIT_RTOL,
+                                    maxiter=500, M=jacobi)[0]
+    return numbers.rounded(values.reshape(lat.cube.shape), CUBE_DECIMALS)

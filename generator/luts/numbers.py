@@ -18,37 +18,38 @@ def rounded(values, decimals: int) -> np.ndarray:
 
 
 def table(values, decimals: int) -> bytes:
-    """Rows of ``values`` (shape (rows, columns), each within [0, 10)) as text lines.
+    """Rows of ``values`` (shape (rows, columns), each within (-10, 10)) as text lines.
 
     Columns are separated by one space, rows end with a newline; each value
     has at most ``decimals`` decimals with trailing zeros (and a bare point)
-    removed, so 0.5 is written ``0.5`` and 1.0 ``1``.
+    removed, so 0.5 is written ``0.5``, 1.0 ``1`` and -0.25 ``-0.25``.
 
     Raises
     ------
     ValueError
-        If a value lies outside [0, 10) once rounded (or is not finite).
+        If a value lies outside (-10, 10) once rounded (or is not finite).
     """
     values = np.asarray(values, dtype=np.float64)
     rows, columns = values.shape
     scale = 10**decimals
     q = np.rint(values * scale)
-    if not np.all((q >= 0) & (q < 10 * scale)):
-        raise ValueError("table values must lie within [0, 10)")
-    rest = q.astype(np.int32)
-    width = decimals + 3  # digit, point, decimals, separator
+    if not np.all(np.abs(q) < 10 * scale):
+        raise ValueError("table values must lie within (-10, 10)")
+    rest = np.abs(q).astype(np.int64)
+    width = decimals + 4  # sign, digit, point, decimals, separator
     chars = np.empty((rows, columns, width), dtype=np.uint8)
     keep = np.ones((rows, columns, width), dtype=bool)
     significant = np.zeros(rest.shape, dtype=bool)  # a nonzero decimal at or right of this place
     for place in range(decimals, 0, -1):
         rest, digit = np.divmod(rest, 10)
-        chars[..., place + 1] = digit
+        chars[..., place + 2] = digit + ord("0")
         significant |= digit != 0
-        keep[..., place + 1] = significant
-    chars[..., 0] = rest
-    chars[..., :-1] += ord("0")
-    chars[..., 1] = ord(".")
-    keep[..., 1] = significant
+        keep[..., place + 2] = significant
+    chars[..., 0] = ord("-")
+    keep[..., 0] = q < 0
+    chars[..., 1] = rest + ord("0")
+    chars[..., 2] = ord(".")
+    keep[..., 2] = significant
     chars[..., -1] = ord(" ")
     chars[:, -1, -1] = ord("\n")
     return chars[keep].tobytes()

@@ -35,12 +35,17 @@ divide by the largest component when it exceeds the peak, so over-range colours
 keep their chromaticity). Inside the display's gamut it is the identity, as clip.
 
 * `.cube`: DaVinci Resolve format, a 1D shaper (uniform in the source values,
-  range in `LUT_1D_INPUT_RANGE`) then a {size}³ lattice. Linear sources cover
-  -1 to 64 times display white (the Rec.2100-PQ files: times the 1000 cd/m² peak).
-  Set the host's 3D interpolation to tetrahedral: the figures below are measured so.
+  range in `LUT_1D_INPUT_RANGE`) then a {size}³ lattice whose nodes are spaced in
+  the display's code values up to the peak and logarithmically above it, up to 16
+  times the peak (the Rec.2100-PQ files: times the 1000 cd/m² peak); linear sources
+  from -1 times the peak. Node values are fitted to colours of the source gamut
+  (greys and colours with a zero channel keep their sampled values), for
+  tetrahedral interpolation: set the host's 3D interpolation to tetrahedral, the
+  figures below are measured so.
 * `.clf`: Academy/ASC Common LUT Format v3, 32-bit float: the source curve and
-  the matrix as exact operators, then a shaper and a {size}³ lattice whose
-  nodes are the display's code values (0 and the peak on nodes).
+  the matrix as exact operators, then a Log operator, a {size}³ lattice uniform in
+  the logarithm of display light (0 and the peak on nodes) and a 1D table to code
+  values, on which clipping and the division by the largest channel are exact.
 
 Errors: read back through OpenColorIO {ocio} (CPU, float32) against the
 reference, on {count} probes per set: in-gamut colours, dark colours (largest

@@ -35,6 +35,9 @@ OVER_RANGE = 16.0
 
 SEED = 20240601
 
+#: Seed of :func:`training`: colours drawn as the probes but never the probes themselves.
+TRAINING_SEED = 20250117
+
 
 @dataclass(frozen=True)
 class Figures:
@@ -71,6 +74,22 @@ def probes(spec: Spec, source: ColourSpace, display: Display, count: int = COUNT
     return {name: reference.apply_matrix(to_reference, linear) for name, linear in sets.items()}
 
 
+def training(spec: Spec, source: ColourSpace, display: Display, method: str, count: int, params=None,
+             gamut_source: ColourSpace | None = None) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Colours of the four kinds the probes measure, from another seed: per set, the
+    source code values (n, 3) and the reference's display code values (n, 3)."""
+    rng = np.random.default_rng(TRAINING_SEED)
+    sets = _display_linear(spec, gamut_source or source, display, rng, count)
+    to_reference = np.linalg.inv(reference.scene_to_display_matrix(spec, display))
+    out = {}
+    for name, linear in sets.items():
+        ref = reference.apply_matrix(to_reference, linear)
+        with np.errstate(all="ignore"):
+            out[name] = (reference.from_reference(spec, source, ref),
+                         reference.mapped_view(spec, display, method, ref, params))
+    return out
+
+
 def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
     """Per-colour error of code values ``actual`` against ``expected``, and its unit."""
     actual, expected = np.asarray(actual, dtype=np.float64), np.asarray(expected, dtype=np.float64)
@@ -82,23 +101,29 @@ def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
     return np.abs(actual - expected).max(axis=-1) * 1023.0, "10-bit codes"
 
 
-def measure(spec: Spec, source: ColourSpace | None, display: Display, method: str, apply,
-            gamut_source: ColourSpace | None = None, count: int = COUNT) -> dict[str, Figures]:
-    """Figures of ``apply`` (source code values (n, 3) -> display code values) on every set.
-
-    ``source`` None means the input is scene-reference linear RGB. A set with no
-    colours (no out-of-gamut colours when the source gamut is the display's) is left out."""
+def set_errors(spec: Spec, source: ColourSpace | None, display: Display, method: str, apply,
+               gamut_source: ColourSpace | None = None, count: int = COUNT) -> tuple[dict[str, np.ndarray], str]:
+    """Per-colour errors of ``apply`` (source code values (n, 3) -> display code values)
+    on every set, and their unit. ``source`` None means the input is scene-reference
+    linear RGB. A set with no colours (no out-of-gamut colours when the source gamut
+    is the display's) is left out."""
     space = source or spec.reference
-    result = {}
+    result, unit = {}, ""
     for name, ref in probes(spec, space, display, count, gamut_source).items():
         if not len(ref):
             continue
         code = ref if source is None else reference.from_reference(spec, source, ref)
         with np.errstate(all="ignore"):
             expected = reference.mapped_view(spec, display, method, ref)
-        error, unit = errors(display, apply(code), expected)
-        result[name] = Figures(float(error.max()), float(np.percentile(error, 99)), unit)
-    return result
+        result[name], unit = errors(display, apply(code), expected)
+    return result, unit
+
+
+def measure(spec: Spec, source: ColourSpace | None, display: Display, method: str, apply,
+            gamut_source: ColourSpace | None = None, count: int = COUNT) -> dict[str, Figures]:
+    """Figures of ``apply`` on every set (see :func:`set_errors`)."""
+    sets, unit = set_errors(spec, source, display, method, apply, gamut_source, count)
+    return {name: Figures(float(e.max()), float(np.percentile(e, 99)), unit) for name, e in sets.items()}
 
 
 def ocio_apply(transform, interpolation=None):
