@@ -10,10 +10,9 @@ and the same inputs give the same bytes.
 
 from __future__ import annotations
 
-import shutil
-import tempfile
 from pathlib import Path
 
+from generator.files import staged_folder
 from generator.luts import bake, probes
 from generator.luts.curve1d import slug
 from generator.spec.schema import Spec
@@ -100,21 +99,8 @@ def build_pack(folder: str | Path, spec: Spec | None = None) -> Path:
 
     spec = spec or load.load()
     folder = Path(folder).absolute()
-    folder.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
-    try:
+    with staged_folder(folder) as staging:
         rows = write_pack(spec, staging)
         head = README_HEAD.format(method=bake.DEFAULT_METHOD, size=SIZE, ocio=ocio.__version__, count=probes.COUNT)
         (staging / "README.md").write_text(head + "".join(rows), encoding="utf-8")
-        staging.chmod(0o755)
-        if folder.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent))
-            folder.rename(old / "x")
-            staging.rename(folder)
-            shutil.rmtree(old)
-        else:
-            staging.rename(folder)
-    finally:
-        if staging.exists():
-            shutil.rmtree(staging)
     return folder

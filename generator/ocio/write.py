@@ -6,12 +6,10 @@ so a failed build never leaves a half-written folder behind.
 
 from __future__ import annotations
 
-import os
-import shutil
-import tempfile
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from generator.files import staged_folder
 from generator.luts.spi1d import format_spi1d
 from generator.ocio.emit import LUT_FOLDER, emit
 from generator.spec import resolved
@@ -57,19 +55,6 @@ def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
     out_dir = Path(out_dir).absolute()
     if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())) and not force:
         raise SpecError(str(out_dir), "-o", "exists and is not empty; pass --force to replace it")
-    out_dir.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.", dir=out_dir.parent))
-    try:
+    with staged_folder(out_dir) as staging:
         result = write_files(spec, staging)
-        os.chmod(staging, 0o755)
-        if out_dir.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{out_dir.name}.old.", dir=out_dir.parent))
-            out_dir.rename(old / "x")
-            staging.rename(out_dir)
-            shutil.rmtree(old)
-        else:
-            staging.rename(out_dir)
-    finally:
-        if staging.exists():
-            shutil.rmtree(staging)
     return replace(result, path=out_dir)
