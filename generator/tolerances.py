@@ -69,9 +69,6 @@ GAMUT_OKLAB_ABSOLUTE = 1e-9
 #: Oklab chroma below which a mapped colour's hue is not compared (hue is undefined at 0).
 GAMUT_HUE_MIN_CHROMA = 1e-3
 
-#: Decrease of output chroma tolerated along a ramp of increasing input chroma.
-GAMUT_MONOTONE_ABSOLUTE = 1e-12
-
 #: Distance of a channel from 0 or 1 for a colour mapped onto the display gamut boundary.
 GAMUT_BOUNDARY_ABSOLUTE = 1e-9
 
@@ -117,10 +114,6 @@ LUT_CLF_IN_GAMUT_CODES = 0.05
 #: target; measured 0.011 into sRGB and P3 since the lattice is uniform in log2(x + toe),
 #: where both mappings are linear inside every tetrahedron).
 LUT_CLF_SCALE_CODES = 1.0
-
-#: Resolve .cube of a clip view from a linear or log source, 33³, in-gamut p99, ten-bit
-#: codes: clipping planes are oblique to a source-axis lattice (measured 48 to 67).
-LUT_CUBE_IN_GAMUT_P99_CODES = 80.0
 
 #: As LUT_NODE_ABSOLUTE for a CLF whose source decoding, matrix and pre-shaper run in
 #: float32 before the lattice, moving node inputs by about 1e-7 relative where the

@@ -16,14 +16,20 @@ NEWEST = newest_ocio_version()
 VERSIONS = [(2, minor) for minor in range(1, NEWEST[1] + 1)]
 
 
+def host_missing(message: str) -> None:
+    """A host the test needs is absent: under CI=true that fails the test, elsewhere it is skipped
+    with ``message`` (reported as not run, never as passed)."""
+    message = f"{message} (CI installs it: see .ci/run)"
+    if ON_CI:
+        pytest.fail(message)
+    pytest.skip(message)
+
+
 def require_program(name: str) -> str:
-    """The path of a host program; under CI=true its absence fails the test, elsewhere skips it."""
+    """The path of a host program (see :func:`host_missing` when it is absent)."""
     path = shutil.which(name)
     if path is None:
-        message = f"{name} is not installed (CI installs it: see .ci/run)"
-        if ON_CI:
-            pytest.fail(message)
-        pytest.skip(message)
+        host_missing(f"{name} is not installed")
     return path
 
 

@@ -23,7 +23,7 @@ def space_matrix(spec: Spec, space: ColourSpace) -> np.ndarray:
     return rgb_to_rgb(space.gamut, spec.reference.gamut, spec.chromatic_adaptation)
 
 
-def _adx_reference_matrix(spec: Spec) -> np.ndarray:
+def adx_reference_matrix(spec: Spec) -> np.ndarray:
     from generator.colorimetry.gamuts import gamuts
 
     return rgb_to_rgb(gamuts()["AP0"], spec.reference.gamut, spec.chromatic_adaptation)
@@ -37,7 +37,7 @@ def to_reference(spec: Spec, space: ColourSpace, rgb) -> np.ndarray:
     if space.special:
         from generator.colorimetry.adx import adx_to_aces
 
-        return apply_matrix(_adx_reference_matrix(spec), adx_to_aces(rgb, int(space.special[3:])))
+        return apply_matrix(adx_reference_matrix(spec), adx_to_aces(rgb, int(space.special[3:])))
     return apply_matrix(space_matrix(spec, space), space.curve.decode(rgb))
 
 
@@ -49,7 +49,7 @@ def from_reference(spec: Spec, space: ColourSpace, ref) -> np.ndarray:
     if space.special:
         from generator.colorimetry.adx import aces_to_adx
 
-        return aces_to_adx(apply_matrix(np.linalg.inv(_adx_reference_matrix(spec)), ref), int(space.special[3:]))
+        return aces_to_adx(apply_matrix(np.linalg.inv(adx_reference_matrix(spec)), ref), int(space.special[3:]))
     return space.curve.encode(apply_matrix(np.linalg.inv(space_matrix(spec, space)), ref))
 
 

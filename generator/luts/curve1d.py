@@ -57,22 +57,15 @@ def slug(name: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
 
 
-def interpolation_error(curve, domain, size: int, jumps=()) -> float:
-    """Worst relative error of linear interpolation between ``size`` nodes, probed at 1/4, 1/2, 3/4.
-
-    Intervals holding one of ``jumps`` (the curve's own published discontinuities,
-    where no interpolation can do better than half the jump) are left out.
-    """
-    return _lut_errors(curve, domain, size, jumps)[0]
-
-
 def _lut_errors(curve, domain, size: int, jumps=()) -> tuple[float, float]:
     """(decode, encode) worst relative errors of a LUT of ``size`` nodes over ``domain``.
 
     Decoding interpolates between nodes; encoding inverts that interpolation, so a
     value interpolated at a fraction t of an interval maps back exactly to the
     input at t: its error is that input against the curve's own encoding (in
-    code values when ``curve`` is a shaped curve).
+    code values when ``curve`` is a shaped curve). Intervals holding one of ``jumps``
+    (the curve's own published discontinuities, where no interpolation can do better
+    than half the jump) are left out.
     """
     nodes = np.linspace(domain[0], domain[1], size)
     values = curve.decode(nodes)

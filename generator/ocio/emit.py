@@ -57,7 +57,7 @@ def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
     if space.is_data:
         return []
     if space.special:
-        ap0_to_ref = reference._adx_reference_matrix(spec)
+        ap0_to_ref = reference.adx_reference_matrix(spec)
         return [ocio.BuiltinTransform(SPACE_BUILTINS[space.special]), *_matrix_unless_identity(ap0_to_ref)]
     decode = curves.decode_transforms(_curve_label(space.name, space.curve_name), space.curve, spec.ocio_version, bakes)
     return decode + _matrix_unless_identity(reference.space_matrix(spec, space))

@@ -140,7 +140,7 @@ def _adx_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
 
     return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
                     lambda r: reference.from_reference(spec, space, r), code_range(spec, space), CODE,
-                    matrix=reference._adx_reference_matrix(spec) @ adx.EXP_TO_ACES, linear=exposure, valid=valid)
+                    matrix=reference.adx_reference_matrix(spec) @ adx.EXP_TO_ACES, linear=exposure, valid=valid)
 
 
 def _display_endpoint(spec: Spec, display: Display) -> Endpoint:
