@@ -15,6 +15,7 @@ $(STAMP): pyproject.toml
 
 run: $(STAMP)
 	$(BIN)/ocioforge build -o $(CONFIG) --force
+	$(BIN)/python -m generator.luts.pack luts
 	$(BIN)/ocioforge verify $(CONFIG)/config.ocio --summary --report build/verify
 
 test: $(STAMP)

@@ -110,6 +110,9 @@ LUT_NODE_ABSOLUTE = 1e-5
 #: in-gamut colours (the issue's target; measured 0.008, float32 processing).
 LUT_CLF_IN_GAMUT_CODES = 0.05
 
+#: The standalone pack (luts/), every file and its README, in bytes: the issue's limit (30 MB).
+LUT_PACK_BYTES = 30_000_000
+
 #: CLF of the clip and scale mappings, 33³, every probe set, ten-bit codes (the issue's
 #: target; measured 0.011 into sRGB and P3 since the lattice is uniform in log2(x + toe),
 #: where both mappings are linear inside every tetrahedron).

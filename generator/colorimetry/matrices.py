@@ -1,9 +1,11 @@
 """RGB <-> XYZ and RGB <-> RGB matrices, derived from primaries and white points.
 
 The normalised primary matrix follows SMPTE RP 177-1993; chromatic adaptation
-is a von Kries-type transform in the cone space of the chosen CAT
-(colour-science supplies the cone matrices). Nothing here is pasted: every
-matrix is computed from chromaticities.
+is a von Kries-type transform in the cone space of the chosen CAT, whose
+published matrices are held here as data (tests check them against
+colour-science's, value for value) so that deriving a matrix never imports
+colour-science, which takes a second to load. Every gamut matrix is computed
+from chromaticities.
 """
 
 from __future__ import annotations
@@ -21,6 +23,18 @@ CATS = {
     "von Kries": "Von Kries",
     "XYZ scaling": "XYZ Scaling",
     "none": None,
+}
+
+#: XYZ to cone-like responses of each transform, as published: Bradford (K. M. Lam, 1985,
+#: as in CIE 159:2004 annex and ICC.1), CAT02 (CIE 159:2004), CAT16 (C. Li et al., "Comprehensive
+#: color solutions: CAM16, CAT16, and CAM16-UCS", Color Res. Appl. 42, 2017), von Kries
+#: (the Hunt-Pointer-Estevez matrix normalised to equal-energy white) and XYZ scaling.
+CONE_MATRICES = {
+    "Bradford": ((0.8951, 0.2664, -0.1614), (-0.7502, 1.7135, 0.0367), (0.0389, -0.0685, 1.0296)),
+    "CAT02": ((0.7328, 0.4296, -0.1624), (-0.7036, 1.6975, 0.0061), (0.0030, 0.0136, 0.9834)),
+    "CAT16": ((0.401288, 0.650173, -0.051461), (-0.250268, 1.204414, 0.045854), (-0.002079, 0.048952, 0.953127)),
+    "von Kries": ((0.40024, 0.70760, -0.08081), (-0.22630, 1.16532, 0.04570), (0.0, 0.0, 0.91822)),
+    "XYZ scaling": ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0)),
 }
 
 
@@ -79,14 +93,9 @@ def adaptation_matrix(source_white, target_white, cat: str = "Bradford") -> np.n
         raise ValueError(f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
     if CATS[cat] is None or np.allclose(source_white, target_white, rtol=0, atol=1e-12):
         return np.eye(3)
-    from colour.adaptation import matrix_chromatic_adaptation_VonKries
-
-    return np.asarray(
-        matrix_chromatic_adaptation_VonKries(
-            xy_to_XYZ(source_white), xy_to_XYZ(target_white), transform=CATS[cat]
-        ),
-        dtype=np.float64,
-    )
+    cones = np.array(CONE_MATRICES[cat], dtype=np.float64)
+    gain = (cones @ xy_to_XYZ(target_white)) / (cones @ xy_to_XYZ(source_white))
+    return (np.linalg.inv(cones) * gain[np.newaxis, :]) @ cones
 
 
 def rgb_to_rgb(source: Gamut, target: Gamut, cat: str = "Bradford") -> np.ndarray:

@@ -1,6 +1,6 @@
 """Hue-preserving gamut mapping in Oklab along lines toward a lightness focus.
 
-A soft chroma compression (``threshold`` < 1) or, by default, its limit
+A soft chroma compression (``threshold`` < 1, by default 0.8) or its limit
 ``threshold = 1``: a hue-preserving clip that leaves the display cube alone.
 
 Method (this project's design, documented here):
@@ -58,7 +58,7 @@ Method (this project's design, documented here):
    (of order 1e-12). Colours not compressed (``x <= t`` and ``L_a`` in
    [0, 1]) are returned unchanged, bit for bit.
 
-Why the default is ``t = 1``: the config bakes this mapping into a 33³ LUT
+What ``t = 1`` buys: the config bakes this mapping into a 33³ LUT
 whose nodes lie on the display's code values, only 8 intervals across the
 cube (:mod:`generator.luts.axes`). Any ``t < 1`` moves the cube's surface
 nodes inward, lifting zero channels, where code values are steepest, and
@@ -332,7 +332,7 @@ def perceptual(rgb, display: DisplayGamut, params: PerceptualParams | None = Non
         Linear display RGB, any values (non-finite per the module policy).
     display : DisplayGamut
     params : PerceptualParams, optional
-        Defaults: threshold 1 (the cube untouched), limit 1.25, focus distance 0.5,
+        Defaults: threshold 0.8, limit 1.25, focus distance 0.5,
         no source gamut.
 
     Returns

@@ -17,11 +17,23 @@ from pathlib import Path
 import numpy as np
 
 from generator.luts import formats, lattice, probes
+from generator.luts.axes import LOG_METHODS
 from generator.luts.curve1d import slug
 from generator.spec.schema import Display, Spec
 
 #: Lattice size of the config's view LUTs.
 VIEW_SIZE = 33
+
+#: Lattice size of a view LUT for clip and scale on a :class:`~generator.luts.axes.LogAxis`
+#: (not HLG): the mapping is linear inside every tetrahedron, so 17³ measures as 33³
+#: (0.011 ten-bit codes at most into sRGB) in a seventh of the bytes. HLG's lattice
+#: interpolates a luminance factor and keeps :data:`VIEW_SIZE`.
+LOG_VIEW_SIZE = 17
+
+
+def view_size(display: Display, method: str) -> int:
+    """The lattice size of the config's view LUT of ``method`` on ``display``."""
+    return LOG_VIEW_SIZE if method in LOG_METHODS and display.eotf_name != "HLG" else VIEW_SIZE
 
 
 @dataclass(frozen=True)
@@ -43,8 +55,8 @@ class ViewLut:
     unit: str
 
 
-def view_filename(display: Display, method: str, size: int = VIEW_SIZE) -> str:
-    return f"view_{slug(display.name)}_{method}_{size}.clf"
+def view_filename(display: Display, method: str, size: int | None = None) -> str:
+    return f"view_{slug(display.name)}_{method}_{size or view_size(display, method)}.clf"
 
 
 def view_transform(matrix, path: str):
@@ -64,7 +76,7 @@ def bake_view_lut_cached(spec: Spec, display: Display, method: str) -> ViewLut:
     return bake_view_lut(spec, display, method)
 
 
-def bake_view_lut(spec: Spec, display: Display, method: str, size: int = VIEW_SIZE, params=None) -> ViewLut:
+def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = None, params=None) -> ViewLut:
     """Bake the view of ``display`` with gamut mapping ``method`` and measure it through OCIO.
 
     Parameters
@@ -73,11 +85,12 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int = VIEW_SI
     display : Display
     method : str
         A key of :data:`generator.gamut.METHODS`.
-    size : int
-        Lattice nodes a side (at most 129, OCIO's limit).
+    size : int, optional
+        Lattice nodes a side (at most 129, OCIO's limit); default :func:`view_size`.
     params : optional
         The method's parameters.
     """
+    size = size or view_size(display, method)
     lat = lattice.display_lattice(spec, display, method, size, params=params)
     name = view_filename(display, method, size)
     text = (f"ocioforge view LUT: normalised {display.name} linear RGB (1 = peak, after the config's matrix) "

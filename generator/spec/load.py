@@ -31,10 +31,11 @@ VIEW_METHODS = {"Colorimetric": "clip", "Desaturate": "desaturate", "Scale": "sc
 VIEWS = (*VIEW_METHODS, "Raw")
 
 #: Views a display offers when the spec does not say: those verify proves on every probe
-#: it draws (clip, and the ACES gamut compression, both analytic). Scale, Desaturate and
-#: Perceptual are offered when a spec asks for them: their 33³ lattices miss their bounds
-#: on colours far outside the display (scale: 2.6 ten-bit codes against 1), which verify reports.
-DEFAULT_SDR_VIEWS = ("Colorimetric", "RGC", "Raw")
+#: it draws. Colorimetric (clip) and RGC are analytic; Scale is a CLF lattice on which the
+#: mapping is linear inside every tetrahedron (0.03 ten-bit codes at most through verify).
+#: Desaturate and Perceptual are offered when a spec asks for them: their lattices miss
+#: colours far outside the display by tens to hundreds of codes, which verify reports.
+DEFAULT_SDR_VIEWS = ("Colorimetric", "Scale", "RGC", "Raw")
 DEFAULT_HDR_VIEWS = ("Colorimetric", "RGC", "Raw")
 
 #: Roles a config must set so hosts load it without warnings, with their default targets.

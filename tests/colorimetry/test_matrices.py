@@ -83,3 +83,21 @@ def test_no_adaptation_is_identity_and_unknown_cat_is_refused():
 def test_npm_maps_unit_rgb_to_white_with_unit_luminance():
     m = normalised_primary_matrix(((0.64, 0.33), (0.3, 0.6), (0.15, 0.06)), (0.3127, 0.329))
     assert np.allclose(m @ np.ones(3), [0.3127 / 0.329, 1.0, (1 - 0.3127 - 0.329) / 0.329], rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("cat", ["Bradford", "CAT02", "CAT16", "von Kries", "XYZ scaling"])
+def test_cone_matrices_are_colour_sciences_and_adaptation_agrees(cat):
+    """The cone matrices held as data are colour-science's, value for value, and the
+    adaptation built from them is its von Kries transform, bit for bit."""
+    from colour.adaptation import CHROMATIC_ADAPTATION_TRANSFORMS, matrix_chromatic_adaptation_VonKries
+
+    from generator.colorimetry.matrices import CATS, CONE_MATRICES, xy_to_XYZ
+
+    assert np.array_equal(np.array(CONE_MATRICES[cat]), CHROMATIC_ADAPTATION_TRANSFORMS[CATS[cat]])
+    whites = [(0.3127, 0.329), (0.32168, 0.33767), (0.3457, 0.3585), (1 / 3, 1 / 3), (0.314, 0.351)]
+    for source in whites:
+        for target in whites:
+            if source != target:
+                theirs = matrix_chromatic_adaptation_VonKries(xy_to_XYZ(source), xy_to_XYZ(target),
+                                                              transform=CATS[cat])
+                assert np.array_equal(adaptation_matrix(source, target, cat), theirs)

@@ -34,3 +34,18 @@ def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
     rows = [line for line in (first / "README.md").read_text().splitlines() if line.startswith("| acescct")]
     assert len(rows) == 2 and all("scale" in row for row in rows)
     assert np.isfinite([float(cell) for row in rows for cell in row.split("|")[6:9]]).all()
+
+
+def test_committed_pack_is_what_the_build_gives_and_fits(default_spec, tmp_path):
+    """luts/ is rebuilt bit-identically from the default spec, and stays under the size limit."""
+    from pathlib import Path
+
+    committed = Path(__file__).resolve().parents[2] / "luts"
+    built = pack.build_pack(tmp_path / "luts", default_spec)
+    files = {p.name: p.read_bytes() for p in sorted(built.iterdir())}
+    assert files == {p.name: p.read_bytes() for p in sorted(committed.iterdir())}, "luts/ is stale: run make run"
+    assert len(files) == 1 + len(pack.SOURCES) * len(pack.DISPLAYS) * len(pack.FORMATS)
+    assert sum(len(data) for data in files.values()) <= tolerances.LUT_PACK_BYTES
+    rows = [line for line in files["README.md"].decode().splitlines() if line.startswith("| ") and ".clf" in line]
+    sdr = [float(line.split("|")[8]) for line in rows if "codes" in line.split("|")[9]]
+    assert len(sdr) == 3 * len(pack.SOURCES) and max(sdr) <= tolerances.LUT_CLF_SCALE_CODES
