@@ -30,8 +30,9 @@ def best_time(args) -> tuple[float, str]:
     for _ in range(REPEATS):
         started = time.perf_counter()
         done = subprocess.run(args, capture_output=True, text=True, check=True)
-        best = min(best, time.perf_counter() - started)
-        output = done.stdout.strip()
+        elapsed = time.perf_counter() - started
+        if elapsed < best:
+            best, output = elapsed, done.stdout.strip()
     return best, output
 
 

@@ -15,17 +15,18 @@ from pathlib import Path
 from generator.files import staged_folder
 from generator.luts import bake, probes
 from generator.luts.curve1d import slug
+from generator.luts.view import LOG_VIEW_SIZE
 from generator.spec.schema import Spec
 
 SOURCES = ("ACEScg", "ACEScct", "Linear Rec.709 (sRGB)", "Linear Rec.2020", "ARRI LogC4", "S-Log3 S-Gamut3.Cine")
 DISPLAYS = ("sRGB - Display", "Rec.1886 Rec.709 - Display", "Gamma 2.6 P3-D65 - Display", "Rec.2100-PQ - Display")
 FORMATS = ("resolve_cube", "clf")
 
-#: Lattice size per format. The CLF's lattice is uniform in the logarithm of display light,
-#: where clipping and the division by the largest channel are linear inside every
-#: tetrahedron: 17³ measures as 33³ does (0.011 ten-bit codes at most, ACEScg to sRGB and
-#: to Rec.2100-PQ) in a seventh of the bytes, which keeps the pack under 30 MB.
-SIZES = {"resolve_cube": 33, "clf": 17}
+#: Lattice size per format. The CLF's lattice is the config's scale view lattice (uniform in
+#: the logarithm of display light, the mapping linear inside every tetrahedron), at the
+#: same size: it measures as 33³ does (0.011 ten-bit codes at most, ACEScg to sRGB and to
+#: Rec.2100-PQ) in a seventh of the bytes, which keeps the pack under 30 MB.
+SIZES = {"resolve_cube": 33, "clf": LOG_VIEW_SIZE}
 
 README_HEAD = """# ocioforge standalone LUTs
 
