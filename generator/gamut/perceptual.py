@@ -39,7 +39,15 @@ Method (this project's design, documented here):
    source boundary ``C_s`` is found on the same line when
    ``source_to_display`` is given (anchored alike: a colour not strictly
    inside the source gamut has ``C >= C_s``), and the limit is
-   ``max(C_s / C_d, 1)``; otherwise the limit is a fixed ratio.
+   ``max(C_s / C_d, 1)``; otherwise the limit is a fixed ratio. Where Oklab
+   hue folds (BT.709 and BT.2020 near blue, :func:`hue_folds`) the line of a
+   colour at or beyond the blue edge runs just outside the cube through the
+   red = 0 face (up to 7e-4 of blue) before meeting the colour; counted
+   strictly, such a colour would land far inside and the mapping would jump.
+   For colours outside the cube of such a display, a point whose negative
+   channels are within :data:`FOLD_SLACK` of its largest is counted inside,
+   and the final clip removes the excursion (hue and line kept within 0.003
+   radian and 0.003 there, measured).
 4. With ``x = C / C_d``, threshold ``t`` and limit ``l``, the new ratio is
    ``x`` for ``x <= t``, ``t + (1 - t)(1 - (1 - u)^k)`` with
    ``u = (x - t) / (l - t)`` and ``k = (l - t) / (1 - t)`` for ``t < x < l``,
@@ -50,7 +58,8 @@ Method (this project's design, documented here):
    its line (a clip toward a focus, as in B. Ottosson, "sRGB gamut
    clipping", 2021).
 5. The output is the point of the same line at the new chroma ``C'``. Kept
-   exactly (to float64 rounding): the Oklab hue, and the line, i.e. the
+   exactly (to float64 rounding; outside a folding display's cube, to the clip
+   of step 3): the Oklab hue, and the line, i.e. the
    focus, the colour and its image are collinear. Lightness becomes
    ``L_a + m C'``: it moves toward ``L_f`` by ``m (C - C')`` (colours
    brighter than their hue's cusp darken, darker ones lighten, those at the
@@ -91,6 +100,15 @@ CHROMA_BRACKET = 1.0
 #: Samples per edge of the cube's hue hexagon (red, yellow, green, cyan, blue, magenta)
 #: in the cusp table.
 CUSP_SAMPLES = 1024
+
+#: Channel excursion, relative to a colour's largest channel, still counted as inside the
+#: display cube when the boundary is sought for a colour outside it. Oklab's hue folds
+#: back by 0.16 degree near the BT.709 blue primary, so the line of a colour at or just
+#: beyond the blue edge leaves the cube through the red = 0 face by up to 7e-4 of blue
+#: (measured) before reaching it: counted strictly, the colour would land far inside
+#: (a jump of 0.18 in blue at (0, 0, 0.89) perturbed by 1e-6). The final clip removes
+#: what the slack lets through.
+FOLD_SLACK = 1e-3
 
 #: RGB excursion still counted as inside a gamut during the bisection.
 _INSIDE_SLACK = 1e-12
@@ -189,6 +207,13 @@ def cusp_table(display: DisplayGamut) -> tuple[np.ndarray, np.ndarray]:
     return table
 
 
+def hue_folds(display: DisplayGamut) -> bool:
+    """Whether Oklab hue turns back somewhere along the display cube's hue hexagon (near
+    BT.709's blue primary; not for P3 or BT.2020): only then does a colour's line leave
+    and re-enter the cube, and only then is :data:`FOLD_SLACK` used."""
+    return bool(cusp_table(display)[0].size < 6 * CUSP_SAMPLES)
+
+
 def focus_lightness(hue_cos, hue_sin, display: DisplayGamut) -> np.ndarray:
     """Cusp lightness of the display at each unit hue direction ``(cos h, sin h)``."""
     hue, lightness = cusp_table(display)
@@ -202,7 +227,7 @@ def line_through(lightness, chroma, focus, focus_distance: float) -> tuple[np.nd
 
 
 def boundary_chroma(axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, inside=None,
-                    outside=None) -> np.ndarray:
+                    outside=None, slack=_INSIDE_SLACK) -> np.ndarray:
     """Chroma at which the line ``L = axis + slope C`` of a hue leaves an RGB cube, by bisection.
 
     Parameters
@@ -235,7 +260,8 @@ def boundary_chroma(axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, insid
     for _ in range(BISECTION_STEPS):
         middle = 0.5 * (inside_low + outside_high)
         rgb = (p + middle[..., None] * q) ** 3 @ to_rgb.T
-        within = np.all((rgb >= -_INSIDE_SLACK) & (rgb <= 1.0 + _INSIDE_SLACK), axis=-1)
+        reach = slack * np.maximum(rgb.max(axis=-1, keepdims=True), 0.0)
+        within = np.all((rgb >= -np.maximum(reach, _INSIDE_SLACK)) & (rgb <= 1.0 + _INSIDE_SLACK), axis=-1)
         inside_low = np.where(within, middle, inside_low)
         outside_high = np.where(within, outside_high, middle)
     return np.where((axis >= 0.0) & (axis <= 1.0), inside_low, 0.0)
@@ -304,7 +330,9 @@ def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: Display
     """
     matrix = adapted_matrix(display)
     in_display = None if rgb is None else np.all((rgb >= 0.0) & (rgb <= 1.0), axis=-1)
-    display_chroma = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix, *_anchored(chroma, in_display))
+    fold = FOLD_SLACK if hue_folds(display) else _INSIDE_SLACK
+    slack = _INSIDE_SLACK if rgb is None else np.where(in_display, _INSIDE_SLACK, fold)[..., None]
+    display_chroma = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix, *_anchored(chroma, in_display), slack)
     found = display_chroma > 0.0
     if params.source_to_display is None:
         limit = params.limit
