@@ -101,8 +101,9 @@ CHROMA_BRACKET = 1.0
 #: in the cusp table.
 CUSP_SAMPLES = 1024
 
-#: Channel excursion, relative to a colour's largest channel, still counted as inside the
-#: display cube when the boundary is sought for a colour outside it. Oklab's hue folds
+#: Negative channel excursion, relative to a point's largest channel, still counted as inside
+#: the display cube when the boundary is sought for a colour outside it (display with a hue
+#: fold only; the upper face stays strict). Oklab's hue folds
 #: back by 0.16 degree near the BT.709 blue primary, so the line of a colour at or just
 #: beyond the blue edge leaves the cube through the red = 0 face by up to 7e-4 of blue
 #: (measured) before reaching it: counted strictly, the colour would land far inside
