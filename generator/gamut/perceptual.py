@@ -228,7 +228,7 @@ def line_through(lightness, chroma, focus, focus_distance: float) -> tuple[np.nd
 
 
 def boundary_chroma(axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, inside=None,
-                    outside=None, slack=_INSIDE_SLACK) -> np.ndarray:
+                    outside=None, slack=0.0) -> np.ndarray:
     """Chroma at which the line ``L = axis + slope C`` of a hue leaves an RGB cube, by bisection.
 
     Parameters
@@ -242,6 +242,9 @@ def boundary_chroma(axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, insid
     inside, outside : numpy.ndarray, shape (...), optional
         The bracket: a chroma taken as inside (default 0, the grey) and one
         taken as outside (default :data:`CHROMA_BRACKET`).
+    slack : float or numpy.ndarray, shape (..., 1), optional
+        Negative excursion, relative to a point's largest channel, still counted as
+        inside (:data:`FOLD_SLACK` where a hue fold needs it); 0 keeps the strict test.
 
     Returns
     -------
@@ -331,8 +334,8 @@ def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: Display
     """
     matrix = adapted_matrix(display)
     in_display = None if rgb is None else np.all((rgb >= 0.0) & (rgb <= 1.0), axis=-1)
-    fold = FOLD_SLACK if hue_folds(display) else _INSIDE_SLACK
-    slack = _INSIDE_SLACK if rgb is None else np.where(in_display, _INSIDE_SLACK, fold)[..., None]
+    fold = FOLD_SLACK if hue_folds(display) else 0.0
+    slack = 0.0 if rgb is None else np.where(in_display, 0.0, fold)[..., None]
     display_chroma = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix, *_anchored(chroma, in_display), slack)
     found = display_chroma > 0.0
     if params.source_to_display is None:
