@@ -126,12 +126,17 @@ def map_display_linear(display: Display, method: str, linear, params=None) -> np
     -------
     numpy.ndarray, shape (..., 3), float64: code values.
     """
+    return display_encode(display, gamut_map(display, method, linear, params) * display.clip_high)
+
+
+def gamut_map(display: Display, method: str, linear, params=None) -> np.ndarray:
+    """Display-linear RGB (1.0 = 100 cd/m², any values) gamut mapped into the display's
+    cube, normalised: shape (..., 3), within [0, 1] (1 = the display's peak). The
+    methods of :data:`generator.gamut.METHODS` act on ``linear / display.clip_high``."""
     from generator.gamut import METHODS
 
-    high = display.clip_high
     gamut = None if method in ("clip", "scale") else display_gamut(display)
-    mapped = METHODS[method](np.asarray(linear, dtype=np.float64) / high, gamut, params)
-    return display_encode(display, mapped * high)
+    return METHODS[method](np.asarray(linear, dtype=np.float64) / display.clip_high, gamut, params)
 
 
 def mapped_view(spec: Spec, display: Display, method: str, ref, params=None) -> np.ndarray:

@@ -17,7 +17,9 @@ Here ``x`` is display-linear RGB divided by the display's peak
   (:func:`grey_linear`): exact for greys, smooth elsewhere because the
   luminance factor is smooth in log coordinates.
 * :class:`Axis` (display axes; desaturate, rgc, perceptual): the display's code
-  values of display-linear RGB (:func:`grey_code`) between 0 and the peak,
+  values of display-linear RGB (:func:`grey_code`) between 0 and the peak (or,
+  for a config view of a display whose encoding CLF cannot express, a power
+  ``x ** (1 / inside_gamma)`` that an Exponent operator undoes exactly),
   linear in ``log(x)`` above it and in ``e / (e + knee)`` with
   ``e = |x| ** (1 / 2.4)`` below 0, which these methods need (they mix negative
   channels into the others).
@@ -145,11 +147,12 @@ class LogAxis:
     toe: float
 
     @classmethod
-    def layout(cls, display: Display, size: int, high: float) -> LogAxis:
+    def layout(cls, display: Display, size: int, high: float, exact: bool = False) -> LogAxis:
         """The fewest nodes below the peak leaving at least :data:`LOG_TOE_BITS`
-        (:data:`HLG_TOE_BITS` for HLG) between the toe and the peak, or all but one
-        in a small lattice."""
-        wanted = HLG_TOE_BITS if display.eotf_name == "HLG" else LOG_TOE_BITS
+        (:data:`HLG_TOE_BITS` for HLG code values, unless ``exact``: the lattice then
+        holds display light, not HLG's code) between the toe and the peak, or all but
+        one in a small lattice."""
+        wanted = HLG_TOE_BITS if display.eotf_name == "HLG" and not exact else LOG_TOE_BITS
         n = size - 1
         if n < 2:
             raise ValueError(f"a lattice of {size} nodes is too small for this axis")
@@ -192,7 +195,8 @@ class Axis:
     Node indices run from 0 to ``size - 1``; ``zero`` and ``one`` are the
     nodes of normalised display-linear 0 and 1; ``low`` (<= 0) and ``high``
     (>= 1) are the values at the end nodes. Between ``zero`` and ``one`` the
-    index is linear in the display's code value (:func:`grey_code`).
+    index is linear in the display's code value (:func:`grey_code`), or in
+    ``x ** (1 / inside_gamma)`` when that is set.
     """
 
     display: Display
@@ -202,10 +206,12 @@ class Axis:
     low: float
     high: float
     knee: float = NEGATIVE_KNEE
+    inside_gamma: float | None = None
 
     @classmethod
     def layout(cls, display: Display, size: int, low: float, high: float,
-               shares: tuple[float, float] = DEFAULT_SHARES, knee: float = NEGATIVE_KNEE) -> Axis:
+               shares: tuple[float, float] = DEFAULT_SHARES, knee: float = NEGATIVE_KNEE,
+               inside_gamma: float | None = None) -> Axis:
         """Share ``size - 1`` intervals between negatives, the cube and over-range values
         (``shares`` of them, fewer for negatives when ``low`` is above -1)."""
         n = size - 1
@@ -213,7 +219,18 @@ class Axis:
         above = 0 if high <= 1 else max(1, round(n * shares[1]))
         if n - below - above < 1:
             raise ValueError(f"a lattice of {size} nodes is too small for this axis")
-        return cls(display, size, below, n - above, min(low, 0.0), max(high, 1.0), knee)
+        return cls(display, size, below, n - above, min(low, 0.0), max(high, 1.0), knee, inside_gamma)
+
+    def _inside(self, x):
+        """The cube's part of the axis, 0 to 1 for ``x`` in [0, 1]."""
+        if self.inside_gamma is None:
+            return grey_code(self.display, x)
+        return np.asarray(x, dtype=np.float64) ** (1.0 / self.inside_gamma)
+
+    def _inside_inverse(self, w):
+        if self.inside_gamma is None:
+            return grey_linear(self.display, w)
+        return np.asarray(w, dtype=np.float64) ** self.inside_gamma
 
     def _negative(self, v):
         e = np.abs(v) ** (1.0 / NEGATIVE_GAMMA)
@@ -223,7 +240,7 @@ class Axis:
         """Node index (float, within [0, size - 1]) of normalised display-linear ``x``."""
         x = np.clip(np.asarray(x, dtype=np.float64), self.low, self.high)
         n, a, b = self.size - 1, self.zero, self.one
-        inside = a + (b - a) * grey_code(self.display, np.clip(x, 0.0, 1.0))
+        inside = a + (b - a) * self._inside(np.clip(x, 0.0, 1.0))
         with np.errstate(divide="ignore", invalid="ignore"):
             above = b + (n - b) * np.log(np.maximum(x, 1.0)) / np.log(self.high)
             below = a - a * self._negative(np.minimum(x, 0.0)) / self._negative(self.low) if a else inside
@@ -237,7 +254,7 @@ class Axis:
         """Normalised display-linear value at node index ``index`` (inverse of :meth:`index`)."""
         k = np.clip(np.asarray(index, dtype=np.float64), 0.0, self.size - 1)
         n, a, b = self.size - 1, self.zero, self.one
-        inside = grey_linear(self.display, np.clip((k - a) / (b - a), 0.0, 1.0))
+        inside = self._inside_inverse(np.clip((k - a) / (b - a), 0.0, 1.0))
         with np.errstate(divide="ignore", invalid="ignore"):
             above = self.high ** ((np.maximum(k, b) - b) / max(n - b, 1))
             r = (a - np.minimum(k, a)) / max(a, 1) * self._negative(self.low)

@@ -11,7 +11,9 @@
 * ``clf``: Academy/ASC Common LUT Format v3 (S-2014-006, 2020 revision), all
   32-bit float: source decoding, Matrix, pre-shaper (Exponent, or Log for a
   logarithmic lattice), Range, LUT1D, LUT3D and, after a logarithmic lattice,
-  the LUT1D to code values, in one ProcessList; the 3D array has blue fastest.
+  the LUT1D to code values (or, in a config view ending in display light, the
+  Exponent or Log operator undoing the lattice's curve), in one ProcessList;
+  the 3D array has blue fastest.
 
 Every writer returns text as bytes; the same lattice always gives the same bytes.
 """
@@ -114,13 +116,22 @@ def _lut1d(values: np.ndarray, decimals: int) -> str:
     return _op("LUT1D", _array(values[:, None], f"{values.size} 1", decimals))
 
 
-def _log_axis(axis: LogAxis) -> str:
+def _log_axis(axis: LogAxis, style: str = "linToLog") -> str:
     """The Log operator taking normalised display-linear x to the coordinate of ``axis``:
-    ``log2(x + toe) / span - log2(toe) / span``."""
+    ``log2(x + toe) / span - log2(toe) / span`` (``logToLin``: back)."""
     params = dict(base=2.0, logSideSlope=1.0 / axis.span, logSideOffset=-np.log2(axis.toe) / axis.span,
                   linSideSlope=1.0, linSideOffset=axis.toe)
     attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
-    return _op("Log", f"<LogParams {attrs}/>\n", style="linToLog")
+    return _op("Log", f"<LogParams {attrs}/>\n", style=style)
+
+
+def _pre_shaper(pre, forward: bool = True) -> str:
+    """A :class:`~generator.luts.lattice.PreShaper` as an Exponent operator (its inverse
+    with ``forward`` False)."""
+    direction = "Rev" if forward else "Fwd"
+    if pre.offset:
+        return _exponent(f"monCurveMirror{direction}", pre.gamma, pre.offset)
+    return _exponent(f"basicMirror{direction}", pre.gamma)
 
 
 def _log_camera(curve: LogCamera) -> str:
@@ -168,12 +179,17 @@ def _pre(lattice: Lattice, include_matrix: bool) -> list[str]:
             ops.append(decode_ops(lattice.source.name, lattice.decode))
         ops.append(_matrix(lattice.matrix))
     pre = lattice.pre
-    if isinstance(pre, LogAxis):
-        ops.append(_log_axis(pre))
-    else:
-        ops.append(_exponent("monCurveMirrorRev", pre.gamma, pre.offset) if pre.offset
-                   else _exponent("basicMirrorRev", pre.gamma))
+    ops.append(_log_axis(pre) if isinstance(pre, LogAxis) else _pre_shaper(pre))
     return ops
+
+
+def _light(lattice: Lattice) -> list[str]:
+    """The exact operator after the lattice of a file ending in display light."""
+    if lattice.light is None:
+        return []
+    if isinstance(lattice.light, LogAxis):
+        return [_log_axis(lattice.light, "logToLin")]
+    return [_pre_shaper(lattice.light, forward=False)]
 
 
 def clf(lattice: Lattice, identifier: str, description: str, include_matrix: bool = True,
@@ -191,6 +207,7 @@ def clf(lattice: Lattice, identifier: str, description: str, include_matrix: boo
                    interpolation=INTERPOLATION))
     if lattice.post is not None:
         ops.append(_lut1d(lattice.post, CUBE_DECIMALS))
+    ops += _light(lattice)
     head = (f'<?xml version="1.0" encoding="UTF-8"?>\n<ProcessList compCLFversion="3" id="{_xml(identifier)}">\n'
             f"<Description>{_xml(description)}</Description>\n")
     if descriptors[0]:

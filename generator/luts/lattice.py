@@ -41,7 +41,8 @@ from generator.spec.schema import ColourSpace, Display, Spec
 CUBE_DECIMALS = 5
 
 #: Decimals written for lattice values holding :class:`LogAxis` coordinates: a step of
-#: 1e-7 is about 3e-6 bits, a relative 2e-6 of display-linear light (0.001 ten-bit codes).
+#: 1e-7 is about 3e-6 bits, a relative 2e-6 of display-linear light (0.001 ten-bit codes);
+#: also for a lattice holding a power ``x ** (1 / 6)`` of display light (a relative 3e-6).
 LOG_DECIMALS = 7
 
 #: Decimals written for shaper tables (lattice coordinates).
@@ -103,7 +104,9 @@ class Lattice:
     input range of ``shaper`` (uniform entries over it) or, without a shaper,
     of the cube itself. ``cube[r, g, b]`` holds the values at the nodes,
     rounded as written (``decimals``): display code values, or with ``post``
-    (a 1D table uniform over [0, 1]) the coordinates ``post`` turns into them.
+    (a 1D table uniform over [0, 1]) the coordinates ``post`` turns into them,
+    or with ``light`` values its exact inverse (an Exponent or Log operator)
+    turns into normalised display-linear RGB, for the config to encode.
     """
 
     source: ColourSpace | None
@@ -117,6 +120,7 @@ class Lattice:
     cube: np.ndarray
     post: np.ndarray | None = None
     decimals: int = CUBE_DECIMALS
+    light: PreShaper | LogAxis | None = None
 
     @property
     def size(self) -> int:
@@ -149,14 +153,19 @@ def _grid(axis: np.ndarray) -> np.ndarray:
     return grid
 
 
-def _evaluate(display: Display, method: str, linear_axis: np.ndarray, matrix: np.ndarray, params) -> np.ndarray:
-    """Mapped code values on the grid of per-axis linear values, ``[r, g, b]`` order.
+def _evaluate(display: Display, method: str, linear_axis: np.ndarray, matrix: np.ndarray, params,
+              light: PreShaper | None = None, decimals: int = CUBE_DECIMALS) -> np.ndarray:
+    """Mapped code values on the grid of per-axis linear values, ``[r, g, b]`` order (with
+    ``light``, its forward curve of the mapped normalised display-linear values instead).
     Codes are not clipped above 1: HLG's inverse EOTF exceeds 1 for saturated colours."""
     grid = _grid(linear_axis)
     with np.errstate(all="ignore"):
         linear = reference.apply_matrix(matrix, grid) if matrix is not None else grid
-        code = reference.map_display_linear(display, method, linear, params)
-    return numbers.rounded(np.maximum(np.nan_to_num(code), 0.0), CUBE_DECIMALS)
+        if light is not None:
+            code = light.forward(reference.gamut_map(display, method, linear, params))
+        else:
+            code = reference.map_display_linear(display, method, linear, params)
+    return numbers.rounded(np.maximum(np.nan_to_num(code), 0.0), decimals)
 
 
 def display_table(axis: Axis, pre: PreShaper) -> tuple[tuple[float, float], np.ndarray]:
@@ -169,11 +178,20 @@ def display_table(axis: Axis, pre: PreShaper) -> tuple[tuple[float, float], np.n
     return (float(w_low), float(w_high)), numbers.rounded(axis.coordinate(pre.inverse(w)), SHAPER_DECIMALS)
 
 
-def display_axis(display: Display, size: int, method: str) -> Axis | LogAxis:
-    """The display layout's axis: normalised display-linear over :data:`DISPLAY_RANGE`."""
+def display_axis(display: Display, size: int, method: str, light: bool = False) -> Axis | LogAxis:
+    """The display layout's axis: normalised display-linear over :data:`DISPLAY_RANGE`.
+    With ``light`` (the lattice holds display light, see :func:`display_lattice`) an
+    :class:`Axis` is a power of display light inside the cube, where the pre-shaper is."""
     if method in LOG_METHODS:
-        return LogAxis.layout(display, size, DISPLAY_RANGE[1])
-    return Axis.layout(display, size, *DISPLAY_RANGE, DEFAULT_SHARES)
+        return LogAxis.layout(display, size, DISPLAY_RANGE[1], exact=light)
+    gamma = PreShaper.for_display(display).gamma if light else None
+    return Axis.layout(display, size, *DISPLAY_RANGE, DEFAULT_SHARES, inside_gamma=gamma)
+
+
+def encodes_in_clf(display: Display) -> bool:
+    """Whether CLF has an operator for the display's inverse EOTF (a power law, or
+    sRGB-like with a linear toe); not for PQ or HLG."""
+    return isinstance(display.eotf, (Power, PiecewisePower))
 
 
 #: HLG: scale applied to mapped colours before encoding them for a :class:`LogAxis` lattice.
@@ -200,22 +218,43 @@ def _log_lattice(display: Display, method: str, axis: LogAxis, params) -> tuple[
     return numbers.rounded(cube, LOG_DECIMALS), numbers.rounded(post, CUBE_DECIMALS)
 
 
+def _log_light(display: Display, method: str, axis: LogAxis, params) -> np.ndarray:
+    """Cube of the :class:`LogAxis` coordinates of the mapped colours (display light)."""
+    from generator.gamut import METHODS
+
+    mapped = METHODS[method](_grid(axis.nodes()), None, params)  # clip and scale need no display gamut
+    return numbers.rounded(axis.coordinate(mapped), LOG_DECIMALS)
+
+
 def display_lattice(spec: Spec, display: Display, method: str, size: int, source: ColourSpace | None = None,
-                    params=None) -> Lattice:
+                    params=None, light: bool = False) -> Lattice:
     """The display layout. With ``source``, the lattice's input is that space's code
     values (its curve and matrix come first); without, scene-reference linear RGB
-    (the matrix is the caller's: :func:`view_matrix`)."""
+    (the matrix is the caller's: :func:`view_matrix`).
+
+    With ``light`` the file ends in normalised display-linear RGB, for a config whose
+    display space encodes it (a view of a display CLF cannot encode, PQ or HLG): the
+    lattice holds the same curve of the mapped colour as its input (the pre-shaper's
+    power inside the cube, :class:`LogAxis` coordinates for clip and scale), so what the
+    mapping leaves alone passes through exactly, and an exact operator undoes the curve."""
     matrix = view_matrix(spec, display)
     if source is not None:
         matrix = matrix @ reference.space_matrix(spec, source)
     decode = None if source is None else source.curve
-    axis = display_axis(display, size, method)
+    axis = display_axis(display, size, method, light)
     if isinstance(axis, LogAxis):
+        if light:
+            cube = _log_light(display, method, axis, params)
+            return Lattice(source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, None, LOG_DECIMALS,
+                           light=axis)
         cube, post = _log_lattice(display, method, axis, params)
         return Lattice(source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, post, LOG_DECIMALS)
     pre = PreShaper.for_display(display)
     domain, table = display_table(axis, pre)
     linear = pre.inverse(_preimages(size, table, domain)) * display.clip_high
+    if light:
+        cube = _evaluate(display, method, linear, None, params, pre, LOG_DECIMALS)
+        return Lattice(source, display, method, decode, matrix, pre, domain, table, cube, None, LOG_DECIMALS, pre)
     cube = _evaluate(display, method, linear, None, params)
     return Lattice(source, display, method, decode, matrix, pre, domain, table, cube)
 

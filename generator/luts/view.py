@@ -24,16 +24,16 @@ from generator.spec.schema import Display, Spec
 #: Lattice size of the config's view LUTs.
 VIEW_SIZE = 33
 
-#: Lattice size of a view LUT for clip and scale on a :class:`~generator.luts.axes.LogAxis`
-#: (not HLG): the mapping is linear inside every tetrahedron, so 17³ measures as 33³
-#: (0.011 ten-bit codes at most into sRGB) in a seventh of the bytes. HLG's lattice
-#: interpolates a luminance factor and keeps :data:`VIEW_SIZE`.
+#: Lattice size of a view LUT for clip and scale on a :class:`~generator.luts.axes.LogAxis`:
+#: the mapping is linear inside every tetrahedron, so 17³ measures as 33³ (0.011 ten-bit
+#: codes at most into sRGB; HLG's view ends in display light, which the config encodes,
+#: so its lattice is exact too) in a seventh of the bytes.
 LOG_VIEW_SIZE = 17
 
 
 def view_size(display: Display, method: str) -> int:
     """The lattice size of the config's view LUT of ``method`` on ``display``."""
-    return LOG_VIEW_SIZE if method in LOG_METHODS and display.eotf_name != "HLG" else VIEW_SIZE
+    return LOG_VIEW_SIZE if method in LOG_METHODS else VIEW_SIZE
 
 
 @dataclass(frozen=True)
@@ -42,7 +42,9 @@ class ViewLut:
 
     ``matrix`` takes scene-reference linear RGB to the file's input (normalised
     display-linear RGB, 1 = the display's peak); the config applies it as a
-    MatrixTransform before a FileTransform of ``filename``. ``figures`` are the
+    MatrixTransform before a FileTransform of ``filename``. The file's output is
+    display code values, or with ``light`` normalised display-linear RGB (for a
+    display whose encoding CLF cannot express: the config encodes). ``figures`` are the
     measured errors through OCIO on :mod:`generator.luts.probes` sets (drawn from
     the ACEScg gamut when the spec has it), ``bound`` their largest maximum.
     """
@@ -53,20 +55,27 @@ class ViewLut:
     figures: dict
     bound: float
     unit: str
+    light: bool = False
 
 
 def view_filename(display: Display, method: str, size: int | None = None) -> str:
     return f"view_{slug(display.name)}_{method}_{size or view_size(display, method)}.clf"
 
 
-def view_transform(matrix, path: str):
-    """The OCIO transform of a view LUT: MatrixTransform then FileTransform (tetrahedral)."""
+def view_transform(matrix, path: str, spec: Spec | None = None, display: Display | None = None):
+    """The OCIO transform of a view LUT: MatrixTransform then FileTransform (tetrahedral);
+    with ``spec`` and ``display``, for a LUT ending in display light, then the display's
+    own encoding (from normalised display-linear RGB through CIE XYZ)."""
     import PyOpenColorIO as ocio
 
-    from generator.ocio.emit import matrix_transform
+    from generator.colorimetry import reference
+    from generator.ocio.emit import display_steps, matrix_transform
 
-    return ocio.GroupTransform([matrix_transform(np.asarray(matrix)),
-                                ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)])
+    steps = [matrix_transform(np.asarray(matrix)), ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)]
+    if display is not None:
+        to_xyz = np.linalg.inv(reference.display_matrix(spec, display)) * display.clip_high
+        steps += [matrix_transform(to_xyz), *display_steps(spec, display, {})]
+    return ocio.GroupTransform(steps)
 
 
 @lru_cache(maxsize=64)
@@ -91,10 +100,13 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
         The method's parameters.
     """
     size = size or view_size(display, method)
-    lat = lattice.display_lattice(spec, display, method, size, params=params)
+    light = not lattice.encodes_in_clf(display)
+    lat = lattice.display_lattice(spec, display, method, size, params=params, light=light)
     name = view_filename(display, method, size)
+    output = ("normalised linear RGB (the config encodes it), gamut mapping {}, {}^3 lattice." if light else
+              "code values, gamut mapping {}, {}^3 lattice in the display's code values.")
     text = (f"ocioforge view LUT: normalised {display.name} linear RGB (1 = peak, after the config's matrix) "
-            f"to code values, gamut mapping {method}, {size}^3 lattice in the display's code values.")
+            f"to {output.format(method, size)}")
     data = formats.clf(lat, f"ocioforge:{name[:-4]}", text, include_matrix=False)
     matrix = tuple(tuple(float(v) for v in row) for row in lat.matrix)
     with tempfile.TemporaryDirectory() as folder:
@@ -104,7 +116,7 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
             gamut_source = spec.space("ACEScg")
         except KeyError:
             gamut_source = None
-        figures = probes.measure(spec, None, display, method, probes.ocio_apply(view_transform(matrix, str(path))),
-                                 gamut_source=gamut_source)
+        transform = view_transform(matrix, str(path), *((spec, display) if light else ()))
+        figures = probes.measure(spec, None, display, method, probes.ocio_apply(transform), gamut_source=gamut_source)
     unit = next(iter(figures.values())).unit
-    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit)
+    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, light)

@@ -76,7 +76,7 @@ def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace
 
 def _display_space(spec: Spec, display: Display, bakes: dict) -> ocio.ColorSpace:
     """Display-referred space: XYZ-D65 -> display RGB -> clip to [0, peak] -> inverse EOTF."""
-    steps = _display_steps(spec, display, bakes)
+    steps = display_steps(spec, display, bakes)
     cs = ocio.ColorSpace(DISPLAY, name=display.name, aliases=list(display.aliases), family="Display",
                          encoding=display.encoding, description=display.description, categories=["file-io"])
     cs.setTransform(ocio.GroupTransform(steps), ocio.COLORSPACE_DIR_FROM_REFERENCE)
@@ -89,7 +89,7 @@ def _display_reference_space() -> ocio.ColorSpace:
                            categories=["file-io"])
 
 
-def _display_steps(spec: Spec, display: Display, bakes: dict) -> list:
+def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
     """CIE XYZ-D65 -> display RGB -> clip to [0, peak] -> display code values."""
     to_rgb = reference.display_matrix(spec, display)
     steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high,
@@ -109,7 +109,8 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     RGC is analytic (OCIO's FixedFunction ACES_GAMUT_COMP_13, in the display's RGB);
     the other methods are a CLF lattice in the display's code values whose output
     the display's own encoding is undone from, so the display space re-encodes it
-    exactly."""
+    exactly; for a display CLF cannot encode (PQ, HLG) the file ends in display light
+    and the display space encodes it."""
     from generator.gamut import RGCParams
     from generator.luts.view import bake_view_lut_cached
 
@@ -123,9 +124,10 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     else:
         lut = bake_view_lut_cached(spec, display, method)
         view_luts[lut.filename] = lut.data
+        back = (matrix_transform(to_xyz) if lut.light else
+                ocio.GroupTransform(display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE))
         steps = [matrix_transform(np.asarray(lut.matrix)),
-                 ocio.FileTransform(src=lut.filename, interpolation=ocio.INTERP_TETRAHEDRAL),
-                 ocio.GroupTransform(_display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE)]
+                 ocio.FileTransform(src=lut.filename, interpolation=ocio.INTERP_TETRAHEDRAL), back]
     vt = ocio.ViewTransform(SCENE, name=f"{view} ({display.name})", family="Gamut mapped",
                             description=f"{view} gamut mapping into {display.name}")
     vt.setTransform(ocio.GroupTransform(steps), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)

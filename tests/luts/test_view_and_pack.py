@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from generator import tolerances
 from generator.luts import pack, probes
 from generator.luts.view import bake_view_lut, view_transform
+from generator.verify.metrics import delta_e_itp
 
 
 def test_view_lut_reads_back_and_is_measured(default_spec, tmp_path):
@@ -19,6 +21,31 @@ def test_view_lut_reads_back_and_is_measured(default_spec, tmp_path):
     figures = probes.measure(default_spec, None, display, "clip", apply, count=512)
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_IN_GAMUT_CODES
     assert bake_view_lut(default_spec, display, "clip").data == view.data
+
+
+def test_one_pq_code_on_a_grey_is_the_delta_e_itp_the_hdr_targets_use(default_spec):
+    display = next(d for d in default_spec.displays if d.eotf_name == "ST 2084")
+    grey = np.linspace(0.01, 0.99, 50)[:, None] * np.ones(3)
+    for codes in (tolerances.LUT_CLF_IN_GAMUT_CODES, tolerances.LUT_CLF_SCALE_CODES):
+        error = delta_e_itp(display, grey + codes / 1023.0, grey)
+        assert np.allclose(error, codes * tolerances.DELTA_E_ITP_PER_PQ_CODE, rtol=1e-9)
+
+
+@pytest.mark.parametrize("eotf", ["ST 2084", "HLG"])
+@pytest.mark.parametrize("method", ["scale", "desaturate"])
+def test_hdr_view_lut_ends_in_display_light_and_meets_the_targets(default_spec, eotf, method):
+    """A display CLF cannot encode: the file ends in normalised display light (the config
+    encodes it), and its lattice holds the curve of its input, so in-gamut colours, which
+    these mappings leave alone, come back as they went in (scale: every colour, up to the
+    lattice's toe)."""
+    display = next(d for d in default_spec.displays if d.eotf_name == eotf)
+    view = bake_view_lut(default_spec, display, method)
+    undo = b'style="logToLin"' if method == "scale" else b'style="basicMirrorFwd"'
+    assert view.light and view.unit == "ΔE ITP" and undo in view.data
+    assert view.figures["in_gamut"].maximum <= tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP
+    if method == "scale":
+        figures = {name: f for name, f in view.figures.items() if not (eotf == "HLG" and name == "dark")}
+        assert max(f.maximum for f in figures.values()) <= tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP
 
 
 def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
