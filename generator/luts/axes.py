@@ -18,8 +18,8 @@ Here ``x`` is display-linear RGB divided by the display's peak
   luminance factor is smooth in log coordinates.
 * :class:`Axis` (display axes; desaturate, rgc, perceptual): the display's code
   values of display-linear RGB (:func:`grey_code`) between 0 and the peak (or,
-  for a config view of a display whose encoding CLF cannot express, a power
-  ``x ** (1 / inside_gamma)`` that an Exponent operator undoes exactly),
+  for a config view ending in display light, the pre-shaper's curve, which an
+  Exponent operator undoes exactly),
   linear in ``log(x)`` above it and in ``e / (e + knee)`` with
   ``e = |x| ** (1 / 2.4)`` below 0, which these methods need (they mix negative
   channels into the others).
@@ -196,7 +196,7 @@ class Axis:
     nodes of normalised display-linear 0 and 1; ``low`` (<= 0) and ``high``
     (>= 1) are the values at the end nodes. Between ``zero`` and ``one`` the
     index is linear in the display's code value (:func:`grey_code`), or in
-    ``x ** (1 / inside_gamma)`` when that is set.
+    ``inside.forward(x)`` when that curve is set.
     """
 
     display: Display
@@ -206,12 +206,12 @@ class Axis:
     low: float
     high: float
     knee: float = NEGATIVE_KNEE
-    inside_gamma: float | None = None
+    inside: object | None = None
 
     @classmethod
     def layout(cls, display: Display, size: int, low: float, high: float,
                shares: tuple[float, float] = DEFAULT_SHARES, knee: float = NEGATIVE_KNEE,
-               inside_gamma: float | None = None) -> Axis:
+               inside=None) -> Axis:
         """Share ``size - 1`` intervals between negatives, the cube and over-range values
         (``shares`` of them, fewer for negatives when ``low`` is above -1)."""
         n = size - 1
@@ -219,18 +219,14 @@ class Axis:
         above = 0 if high <= 1 else max(1, round(n * shares[1]))
         if n - below - above < 1:
             raise ValueError(f"a lattice of {size} nodes is too small for this axis")
-        return cls(display, size, below, n - above, min(low, 0.0), max(high, 1.0), knee, inside_gamma)
+        return cls(display, size, below, n - above, min(low, 0.0), max(high, 1.0), knee, inside)
 
     def _inside(self, x):
         """The cube's part of the axis, 0 to 1 for ``x`` in [0, 1]."""
-        if self.inside_gamma is None:
-            return grey_code(self.display, x)
-        return np.asarray(x, dtype=np.float64) ** (1.0 / self.inside_gamma)
+        return grey_code(self.display, x) if self.inside is None else self.inside.forward(x)
 
     def _inside_inverse(self, w):
-        if self.inside_gamma is None:
-            return grey_linear(self.display, w)
-        return np.asarray(w, dtype=np.float64) ** self.inside_gamma
+        return grey_linear(self.display, w) if self.inside is None else self.inside.inverse(w)
 
     def _negative(self, v):
         e = np.abs(v) ** (1.0 / NEGATIVE_GAMMA)

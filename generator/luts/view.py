@@ -43,8 +43,8 @@ class ViewLut:
     ``matrix`` takes scene-reference linear RGB to the file's input (normalised
     display-linear RGB, 1 = the display's peak); the config applies it as a
     MatrixTransform before a FileTransform of ``filename``. The file's output is
-    display code values, or with ``light`` normalised display-linear RGB (for a
-    display whose encoding CLF cannot express: the config encodes). ``figures`` are the
+    display code values, or with ``light`` normalised display-linear RGB (for an
+    HDR display, :func:`ends_in_light`: the config encodes). ``figures`` are the
     measured errors through OCIO on :mod:`generator.luts.probes` sets (drawn from
     the ACEScg gamut when the spec has it), ``bound`` their largest maximum.
     """
@@ -56,6 +56,13 @@ class ViewLut:
     bound: float
     unit: str
     light: bool = False
+
+
+def ends_in_light(display: Display) -> bool:
+    """Whether the view files of ``display`` end in normalised display light, for the
+    config's display space to encode: HDR displays (CLF has no PQ or HLG operator, and an
+    extended range's codes pass 1)."""
+    return display.is_hdr or not lattice.encodes_in_clf(display)
 
 
 def view_filename(display: Display, method: str, size: int | None = None) -> str:
@@ -100,7 +107,7 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
         The method's parameters.
     """
     size = size or view_size(display, method)
-    light = not lattice.encodes_in_clf(display)
+    light = ends_in_light(display)
     lat = lattice.display_lattice(spec, display, method, size, params=params, light=light)
     name = view_filename(display, method, size)
     output = ("normalised linear RGB (the config encodes it), gamut mapping {}, {}^3 lattice." if light else

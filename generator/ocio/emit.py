@@ -109,8 +109,8 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     RGC is analytic (OCIO's FixedFunction ACES_GAMUT_COMP_13, in the display's RGB);
     the other methods are a CLF lattice in the display's code values whose output
     the display's own encoding is undone from, so the display space re-encodes it
-    exactly; for a display CLF cannot encode (PQ, HLG) the file ends in display light
-    and the display space encodes it."""
+    exactly; for an HDR display (PQ, HLG, extended range) the file ends in display
+    light and the display space encodes it."""
     from generator.gamut import RGCParams
     from generator.luts.view import bake_view_lut_cached
 

@@ -32,11 +32,11 @@ VIEWS = (*VIEW_METHODS, "Raw")
 
 #: Views a display offers when the spec does not say: those verify proves on every probe
 #: it draws. Colorimetric (clip) and RGC are analytic; Scale is a CLF lattice on which the
-#: mapping is linear inside every tetrahedron (0.03 ten-bit codes at most through verify).
+#: mapping is linear inside every tetrahedron (0.03 ten-bit codes at most through verify;
+#: 0.003 ΔE ITP on PQ and HLG displays, whose view files end in display light).
 #: Desaturate and Perceptual are offered when a spec asks for them: their lattices miss
 #: colours far outside the display by tens to hundreds of codes, which verify reports.
-DEFAULT_SDR_VIEWS = ("Colorimetric", "Scale", "RGC", "Raw")
-DEFAULT_HDR_VIEWS = ("Colorimetric", "RGC", "Raw")
+DEFAULT_VIEWS = ("Colorimetric", "Scale", "RGC", "Raw")
 
 #: Roles a config must set so hosts load it without warnings, with their default targets.
 DEFAULT_ROLES = {
@@ -270,7 +270,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     custom = any(k in table for k in ("gamut", "primaries", "eotf"))
     if name.lower() in known and not custom:
         d = known[name.lower()]
-        views = views or (DEFAULT_SDR_VIEWS if d.encoding == "sdr-video" else DEFAULT_HDR_VIEWS)
+        views = views or DEFAULT_VIEWS
         return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
         raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
@@ -283,7 +283,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     if not (hdr and 100.0 <= peak <= 10000.0) and not (not hdr and peak == 100.0):
         raise SpecError(source, f"{field}.peak_luminance",
                         "allowed: 100 to 10000 cd/m² for ST 2084 displays, 100 for SDR (1.0 = 100 cd/m²)")
-    views = views or (DEFAULT_HDR_VIEWS if hdr else DEFAULT_SDR_VIEWS)
+    views = views or DEFAULT_VIEWS
     return Display(name, _gamut(table, source, field, base, name), eotf, eotf_name, views,
                    _strings(table.get("aliases", []), source, f"{field}.aliases"), peak,
                    "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"))

@@ -10,7 +10,7 @@ colour space, "display / view", or the LUT file.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import lru_cache, partial
 
 import numpy as np
 
@@ -29,9 +29,13 @@ KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
 RELATIVE, COLOUR, ITP, CODES = "relative", "colour relative", "ΔE ITP", "10-bit codes"
 
 
-def view_lut_tolerance(method: str) -> float:
-    """The bound the LUT issue sets for a config's baked view LUT, in 10-bit codes: the
-    scale mapping's, or the clip view's in-gamut target for the others."""
+def view_lut_tolerance(method: str, display: Display) -> float:
+    """The bound the LUT issue sets for a config's baked view LUT, in 10-bit codes (ΔE ITP
+    for HDR displays, DELTA_E_ITP_PER_PQ_CODE each): the scale mapping's, or the clip
+    view's in-gamut target for the others."""
+    if display.is_hdr:
+        return (tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP if method == "scale"
+                else tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP)
     return tolerances.LUT_CLF_SCALE_CODES if method == "scale" else tolerances.LUT_CLF_IN_GAMUT_CODES
 
 
@@ -44,7 +48,9 @@ class Check:
     error (a baked curve's error grows by its matrix's largest row sum); ``keep``
     marks the samples compared (a discontinuity band is left out);
     ``allowance`` is the float32 limit (:func:`float32_allowance`), an absolute
-    difference per sample and channel taken off before the metric.
+    difference per sample and channel taken off before the metric; ``encode``, a
+    float64 function the engine's output goes through first (a view file ending in
+    display light is encoded as its display space does).
     """
 
     kind: str
@@ -65,6 +71,7 @@ class Check:
     keep: np.ndarray | None = field(default=None, repr=False)
     allowance: np.ndarray | None = field(default=None, repr=False)
     problem: str = ""
+    encode: object | None = field(default=None, repr=False)
 
     @property
     def title(self) -> str:
@@ -117,8 +124,9 @@ def _judging(out: paths.Endpoint | None, display: Display | None, baked_src: pat
              view: str = "") -> dict:
     """Metric, tolerance, scale and target for an output kind (a baked source, a view)."""
     method = paths.view_method(view) if view else None
-    if method is not None and method not in paths.ANALYTIC_METHODS and not display.is_hdr:
-        return dict(metric=CODES, tolerance=view_lut_tolerance(method), target=display)
+    if method is not None and method not in paths.ANALYTIC_METHODS:
+        return dict(metric=ITP if display.is_hdr else CODES, tolerance=view_lut_tolerance(method, display),
+                    target=display)
     if baked_src is not None and baked_src.baked and (out is None or out.output == paths.LINEAR):
         gain = float(np.abs(baked_src.matrix).sum(1).max())
         return dict(metric=COLOUR, tolerance=tolerances.BAKED_CURVE_RELATIVE, scale=gain)
@@ -275,11 +283,12 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
 
 def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
     """Every baked view LUT file (a CLF from normalised display-linear RGB, 1 = peak, to
-    the display's codes, applied tetrahedrally) against its view's mapping."""
+    the display's codes, or to display light that the verifier then encodes in float64,
+    applied tetrahedrally) against its view's mapping."""
     from generator.ocio.emit import LUT_FOLDER
 
     try:
-        from generator.luts.view import view_filename
+        from generator.luts.view import ends_in_light, view_filename
     except ImportError:
         return []
     out = []
@@ -296,9 +305,17 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
             fn = paths.view_function(spec, display, view)
             expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
             name = f"{LUT_FOLDER}/{view_filename(display, method)}"
+            encode = partial(_encode_light, display) if ends_in_light(display) else None
             out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=inputs,
-                             expected=expected, output=paths.DISPLAY, **_judging(None, display, None, view)))
+                             expected=expected, output=paths.DISPLAY, encode=encode,
+                             **_judging(None, display, None, view)))
     return out
+
+
+def _encode_light(display: Display, light: np.ndarray) -> np.ndarray:
+    """Normalised display light (a view file's output) to the display's codes."""
+    with np.errstate(all="ignore"):
+        return reference.display_encode(display, np.asarray(light, dtype=np.float64) * display.clip_high)
 
 
 def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:

@@ -124,6 +124,8 @@ def judge(check: Check, engine: str, output: Output) -> Outcome:
     if check.expected is None:
         return Outcome(check, name, FAIL, note=check.problem)
     actual = np.asarray(output.values, dtype=np.float64).reshape(-1, 3)
+    if check.encode is not None:
+        actual = check.encode(actual)
     errors, undefined = sample_errors(check, actual, output.step)
     compared = int(np.sum(np.isfinite(errors) | np.isinf(errors)))
     if compared == 0:

@@ -92,6 +92,17 @@ def test_clf_into_hlg_within_its_bound(default_spec, tmp_path, method):
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_HLG_DELTA_E_ITP
 
 
+@pytest.mark.parametrize("method", ("clip", "scale"))
+def test_clf_into_an_extended_range_display(default_spec, tmp_path, method):
+    """Display P3 HDR: sRGB's curve extended to ten times white (code 2.6 at the peak), whose
+    code values once ran past what the writer holds beyond the peak (a crash, not a bound)."""
+    req = _request(default_spec, "clf", method=method, size=33, source="ACEScg", display="Display P3 HDR - Display")
+    figures = probes.measure(default_spec, req.source, req.display, method,
+                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    assert max(f.maximum for f in figures.values()) <= tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP
+    assert figures["in_gamut"].maximum <= tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP
+
+
 def test_resolve_cube_halves_ociobakelut_p99_on_every_set(default_spec, tmp_path):
     """ACEScg to sRGB with clip at 33³, against ociobakelut's best bake (bench/lut_accuracy.py)."""
     req = _request(default_spec, "resolve_cube", size=33, source="ACEScg")
