@@ -31,7 +31,7 @@ import numpy as np
 
 from generator.colorimetry import reference
 from generator.colorimetry.transfer import Linear, PiecewisePower, Power
-from generator.luts import numbers, probes
+from generator.luts import numbers, probes, solve
 from generator.luts.axes import (DEFAULT_SHARES, LOG_METHODS, SOURCE_SHAPER_SIZES, Axis, LogAxis, grey_code,
                                  grey_linear, source_axis, source_domain)
 from generator.spec.schema import ColourSpace, Display, Spec
@@ -313,8 +313,11 @@ FIT_IN_GAMUT_WEIGHT = 3.0
 #: few colours reach stay where they are.
 FIT_REGULARISATION = 1.0
 
-#: Relative residual at which the conjugate-gradient solve stops.
+#: Relative residual at which the conjugate-gradient solve stops (per channel).
 FIT_RTOL = 1e-6
+
+#: Conjugate-gradient steps at most.
+FIT_MAXITER = 500
 
 
 def tetrahedral_weights(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
@@ -336,39 +339,59 @@ def tetrahedral_weights(index: np.ndarray, size: int) -> tuple[np.ndarray, np.nd
     return np.stack(nodes, axis=1), np.stack(weights, axis=1)
 
 
+def _fit_rows(lat: Lattice, colours: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Node numbers (4, m), weights (4, m) and expected codes (3, m) of the fit's
+    colours, each set's rows scaled by the square root of its weight."""
+    n = lat.size
+    nodes, weights, expected = [], [], []
+    for name, (code, codes) in colours.items():
+        scale = np.sqrt(FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
+        corner, w = tetrahedral_weights(coordinates(lat, code) * (n - 1), n)
+        nodes.append(corner)
+        weights.append(w * scale)
+        expected.append(np.nan_to_num(codes) * scale)
+    return tuple(np.ascontiguousarray(np.concatenate(part).T) for part in (nodes, weights, expected))
+
+
+def _kept(size: int, zero: int | None) -> np.ndarray:
+    """Flat mask of the nodes the fit keeps: the diagonal's, and with ``zero`` those of a zero channel."""
+    kept = np.zeros(size**3, dtype=bool)
+    kept[np.arange(size) * (size * size + size + 1)] = True
+    if zero is not None:
+        grid = kept.reshape(size, size, size)
+        grid[zero, :, :] = grid[:, zero, :] = grid[:, :, zero] = True
+    return kept
+
+
 def fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
     """Node values minimising the weighted squared error of tetrahedral interpolation
     on ``colours`` (set name to (input values, expected codes)), plus
     :data:`FIT_REGULARISATION` times the squared change of each node. The
     diagonal's nodes (greys) and, with ``zero``, the nodes of a zero channel are
-    kept at their sampled values."""
-    import scipy.sparse as sparse
-    from scipy.sparse.linalg import LinearOperator, cg
+    kept at their sampled values; the others solve the normal equations."""
+    total = lat.size**3
+    nodes, weights, expected = _fit_rows(lat, colours)
+    kept = _kept(lat.size, zero)
+    start = np.ascontiguousarray(lat.cube.reshape(total, 3).T)
+    # A free node no colour reaches has the equation FIT_REGULARISATION * (x - start) = 0 alone:
+    # it keeps its sampled value, and the unknowns are the free nodes the colours reach.
+    unknown = ~kept & (np.bincount(nodes.ravel(), minlength=total) > 0)
+    reached = unknown[nodes]
+    columns = np.where(reached, (np.cumsum(unknown) - 1)[nodes], 0)
+    free_weights = np.where(reached, weights, 0.0)
+    count = int(np.count_nonzero(unknown))
+    residual = expected - solve.interpolate(nodes, weights - free_weights, start)
+    right = solve.accumulate(columns, free_weights, residual, count) + FIT_REGULARISATION * start[:, unknown]
+    # The stopping rule is relative to the whole right-hand side, unreached free nodes included.
+    rest = FIT_REGULARISATION**2 * (start**2 @ (~kept & ~unknown).astype(np.float64))
+    whole = np.sqrt(np.einsum("ck,ck->c", right, right) + rest)
+    diagonal = np.bincount(columns.ravel(), weights=(free_weights**2).ravel(), minlength=count) + FIT_REGULARISATION
 
-    n, total = lat.size, lat.size**3
-    rows, expected = [], []
-    for name, (code, codes) in colours.items():
-        weight = FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0
-        nodes, w = tetrahedral_weights(coordinates(lat, code) * (n - 1), n)
-        rows.append((nodes, w * np.sqrt(weight)))
-        expected.append(np.nan_to_num(codes) * np.sqrt(weight))
-    nodes = np.concatenate([r[0] for r in rows])
-    weights = np.concatenate([r[1] for r in rows])
-    matrix = sparse.csr_matrix((weights.ravel(), (np.repeat(np.arange(len(nodes)), 4), nodes.ravel())),
-                               shape=(len(nodes), total))
-    index = np.indices((n, n, n)).reshape(3, -1)
-    kept = (index[0] == index[1]) & (index[1] == index[2])
-    if zero is not None:
-        kept |= np.any(index == zero, axis=0)
-    start = lat.cube.reshape(total, 3)
-    free = matrix[:, ~kept]
-    residual = np.concatenate(expected) - matrix[:, kept] @ start[kept]
-    normal = (free.T @ free + FIT_REGULARISATION * sparse.identity(free.shape[1])).tocsr()
-    right = free.T @ residual + FIT_REGULARISATION * start[~kept]
-    diagonal = normal.diagonal()
-    jacobi = LinearOperator(normal.shape, matvec=lambda v: v / diagonal)
+    def normal(v):
+        return solve.accumulate(columns, free_weights, solve.interpolate(columns, free_weights, v), count) + \
+            FIT_REGULARISATION * v
+
     values = start.copy()
-    for channel in range(3):
-        values[~kept, channel] = cg(normal, right[:, channel], x0=start[~kept, channel], rtol=FIT_RTOL,
-                                    maxiter=500, M=jacobi)[0]
-    return numbers.rounded(values.reshape(lat.cube.shape), CUBE_DECIMALS)
+    values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, FIT_RTOL * whole,
+                                                  FIT_MAXITER)
+    return numbers.rounded(values.T.reshape(lat.cube.shape), CUBE_DECIMALS)

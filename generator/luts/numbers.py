@@ -17,6 +17,35 @@ def rounded(values, decimals: int) -> np.ndarray:
     return np.rint(np.asarray(values, dtype=np.float64) * scale) / scale
 
 
+#: Digits are made three at a time: for each number below 1000, its hundreds, tens and
+#: units as ASCII, and how many trailing zeros it has (3 for 0).
+_GROUP = np.arange(1000)
+_GROUP_DIGITS = tuple(((_GROUP // place) % 10 + ord("0")).astype(np.uint8) for place in (100, 10, 1))
+_GROUP_TRAILING = ((_GROUP % 10 == 0).astype(np.int64) + (_GROUP % 100 == 0) + (_GROUP == 0))
+
+
+def _digits(rest: np.ndarray, count: int) -> tuple[list[np.ndarray], np.ndarray]:
+    """The last ``count`` decimal digits of non-negative integers ``rest`` (n,), most
+    significant first, each as ASCII (n,), and how many trailing zeros ``rest`` has
+    (``count`` or more for 0)."""
+    groups = []
+    for _ in range(-(-count // 3)):
+        above = rest // 1000  # floor division by a constant is much faster than divmod
+        groups.append(rest - above * 1000)
+        rest = above
+    digits = [np.take(table, group) for group in reversed(groups) for table in _GROUP_DIGITS]
+    trailing = np.take(_GROUP_TRAILING, groups[0])
+    zero = groups[0] == 0
+    for group in groups[1:]:
+        trailing += zero * np.take(_GROUP_TRAILING, group)
+        zero &= group == 0
+    return digits[-count:], trailing
+
+
+#: Rows formatted at a time: small blocks reuse the same memory (and stay in cache).
+TABLE_BLOCK = 8192
+
+
 def table(values, decimals: int) -> bytes:
     """Rows of ``values`` (shape (rows, columns), each within (-10, 10)) as text lines.
 
@@ -30,29 +59,30 @@ def table(values, decimals: int) -> bytes:
         If a value lies outside (-10, 10) once rounded (or is not finite).
     """
     values = np.asarray(values, dtype=np.float64)
-    rows, columns = values.shape
     scale = 10**decimals
     q = np.rint(values * scale)
     if not np.all(np.abs(q) < 10 * scale):
         raise ValueError("table values must lie within (-10, 10)")
-    rest = np.abs(q).astype(np.int64)
+    return b"".join(_block(q[start:start + TABLE_BLOCK], decimals) for start in range(0, len(q), TABLE_BLOCK))
+
+
+def _block(q: np.ndarray, decimals: int) -> bytes:
+    """Text of rows of integers ``q`` (rows, columns), each ``10**decimals`` times a value."""
+    rows, columns = q.shape
+    q = q.ravel()
+    digits, trailing = _digits(np.abs(q).astype(np.int64), decimals + 1)
+    places = decimals - np.minimum(trailing, decimals)  # decimals written
     width = decimals + 4  # sign, digit, point, decimals, separator
-    chars = np.empty((rows, columns, width), dtype=np.uint8)
-    keep = np.ones((rows, columns, width), dtype=bool)
-    significant = np.zeros(rest.shape, dtype=bool)  # a nonzero decimal at or right of this place
-    for place in range(decimals, 0, -1):
-        rest, digit = np.divmod(rest, 10)
-        chars[..., place + 2] = digit + ord("0")
-        significant |= digit != 0
-        keep[..., place + 2] = significant
-    chars[..., 0] = ord("-")
-    keep[..., 0] = q < 0
-    chars[..., 1] = rest + ord("0")
-    chars[..., 2] = ord(".")
-    keep[..., 2] = significant
-    chars[..., -1] = ord(" ")
-    chars[:, -1, -1] = ord("\n")
-    return chars[keep].tobytes()
+    chars = np.empty((q.size, width), dtype=np.uint8)
+    keep = np.ones((q.size, width), dtype=bool)
+    chars[:, 0], keep[:, 0] = ord("-"), q < 0
+    chars[:, 1] = digits[0]
+    chars[:, 2], keep[:, 2] = ord("."), places > 0
+    for place in range(1, decimals + 1):
+        chars[:, place + 2], keep[:, place + 2] = digits[place], places >= place
+    chars[:, -1] = ord(" ")
+    chars.reshape(rows, columns, width)[:, -1, -1] = ord("\n")
+    return np.compress(keep.ravel(), chars.ravel()).tobytes()
 
 
 def number(value: float) -> str:

@@ -155,15 +155,20 @@ def _unique(names, source: str, field: str) -> None:
 
 
 def parse_version(value, source: str) -> tuple[int, int]:
-    newest = newest_ocio_version()
-    allowed = f"2.{OCIO_MIN_VERSION[1]} to {newest[0]}.{newest[1]}"
+    """The spec's config version; the oldest supported one is accepted without asking the
+    installed PyOpenColorIO (every supported release writes it), which spares its import."""
     try:
         major, minor = (int(part) for part in str(value).split("."))
     except ValueError:
-        raise SpecError(source, "ocio_version", f"expected a version like \"2.1\"; allowed: {allowed}") from None
-    if not OCIO_MIN_VERSION <= (major, minor) <= newest:
-        raise SpecError(source, "ocio_version", f"{value} is not supported; allowed: {allowed}")
+        raise SpecError(source, "ocio_version", f"expected a version like \"2.1\"; allowed: {_allowed()}") from None
+    if (major, minor) != OCIO_MIN_VERSION and not OCIO_MIN_VERSION <= (major, minor) <= newest_ocio_version():
+        raise SpecError(source, "ocio_version", f"{value} is not supported; allowed: {_allowed()}")
     return (major, minor)
+
+
+def _allowed() -> str:
+    newest = newest_ocio_version()
+    return f"2.{OCIO_MIN_VERSION[1]} to {newest[0]}.{newest[1]}"
 
 
 def library_space(name: str, source: str, field: str) -> ColourSpace:

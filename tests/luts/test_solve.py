@@ -1,0 +1,91 @@
+"""The numpy least squares behind a .cube's fitted nodes, and the text of LUT tables."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from generator.luts import lattice, numbers, solve
+
+RNG_SEED = 7
+
+
+def _problem(size: int, count: int, rng):
+    """Random colours in a size³ unit lattice: node numbers and weights (4, m), codes (3, m)."""
+    nodes, weights = lattice.tetrahedral_weights(rng.random((count, 3)) * (size - 1), size)
+    return np.ascontiguousarray(nodes.T), np.ascontiguousarray(weights.T), rng.random((3, count))
+
+
+def _dense(nodes, weights, size):
+    """The interpolation matrix, m by size³."""
+    matrix = np.zeros((nodes.shape[1], size**3))
+    for corner in range(nodes.shape[0]):
+        np.add.at(matrix, (np.arange(nodes.shape[1]), nodes[corner]), weights[corner])
+    return matrix
+
+
+def test_interpolate_and_accumulate_are_the_matrix_and_its_transpose():
+    rng = np.random.default_rng(RNG_SEED)
+    nodes, weights, rows = _problem(4, 200, rng)
+    matrix = _dense(nodes, weights, 4)
+    values = rng.random((3, 64))
+    assert np.allclose(solve.interpolate(nodes, weights, values), values @ matrix.T, rtol=0, atol=1e-12)
+    assert np.allclose(solve.accumulate(nodes, weights, rows, 64), rows @ matrix, rtol=0, atol=1e-12)
+
+
+def test_conjugate_gradient_solves_each_system_to_its_own_tolerance():
+    rng = np.random.default_rng(RNG_SEED)
+    basis = rng.random((30, 30))
+    system = basis @ basis.T + np.eye(30)
+    exact = rng.random((2, 30))
+    right = exact @ system
+    tolerance = np.array([1e-10, np.inf]) * np.linalg.norm(right, axis=1)  # the second stops at once
+    start = np.zeros_like(right)
+    solved = solve.conjugate_gradient(lambda v: v @ system, right, start, np.diag(system).copy(), tolerance, 500)
+    assert np.linalg.norm(solved[0] @ system - right[0]) < tolerance[0]
+    assert np.array_equal(solved[1], start[1])
+
+
+def test_fit_is_the_regularised_least_squares_solution_with_kept_nodes():
+    size, rng = 4, np.random.default_rng(RNG_SEED)
+    cube = rng.random((size, size, size, 3))
+    lat = lattice.Lattice(None, None, "clip", None, None, None, (0.0, 1.0), None, cube)
+    colours = {name: (rng.random((150, 3)), rng.random((150, 3))) for name in ("in_gamut", "out_of_gamut")}
+    fitted = lattice.fit(lat, colours, zero=0).reshape(-1, 3)
+    matrix, expected = [], []
+    for name, (code, codes) in colours.items():
+        scale = np.sqrt(lattice.FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
+        nodes, weights = lattice.tetrahedral_weights(code * (size - 1), size)
+        matrix.append(_dense(nodes.T, weights.T, size) * scale)
+        expected.append(codes * scale)
+    matrix, expected = np.concatenate(matrix), np.concatenate(expected)
+    start = cube.reshape(-1, 3)
+    kept = lattice._kept(size, 0)
+    free = matrix[:, ~kept]
+    normal = free.T @ free + lattice.FIT_REGULARISATION * np.eye(free.shape[1])
+    right = free.T @ (expected - matrix[:, kept] @ start[kept]) + lattice.FIT_REGULARISATION * start[~kept]
+    exact = start.copy()
+    exact[~kept] = np.linalg.solve(normal, right)
+    assert np.array_equal(fitted[kept], numbers.rounded(start[kept], lattice.CUBE_DECIMALS))
+    step = 10.0**-lattice.CUBE_DECIMALS  # rounding as written, and the solver's stopping point within it
+    assert np.abs(fitted - exact).max() <= step
+
+
+def _reference_text(value: float, decimals: int) -> str:
+    q = round(value * 10**decimals)
+    text = f"{abs(q) / 10**decimals:.{decimals}f}".rstrip("0").rstrip(".")
+    return ("-" if q < 0 else "") + text
+
+
+def test_table_text_drops_trailing_zeros_and_spans_blocks():
+    rng = np.random.default_rng(RNG_SEED)
+    rows = numbers.TABLE_BLOCK + 300
+    values = rng.uniform(-9.99, 9.99, (rows, 3))
+    values[::7] = np.round(values[::7], 2)
+    values[::11, 0] = 0.0
+    values[::13, 1] = -1e-9  # rounds to zero: written without a sign
+    values[::17, 2] = 1.0
+    for decimals in (5, 6, 7):
+        lines = numbers.table(values, decimals).decode("ascii").splitlines()
+        assert len(lines) == rows
+        rounded = numbers.rounded(values, decimals)
+        assert lines == [" ".join(_reference_text(v, decimals) for v in row) for row in rounded]
