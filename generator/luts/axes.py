@@ -23,14 +23,14 @@ Here ``x`` is display-linear RGB divided by the display's peak
   linear in ``log(x)`` above it and in ``e / (e + knee)`` with
   ``e = |x| ** (1 / 2.4)`` below 0, which these methods need (they mix negative
   channels into the others).
-* :class:`SourceAxis` (source axes: .cube, .spi3d): nodes spaced in the
-  display's code values between 0 and the peak (with a few nodes shrinking
-  geometrically toward black), logarithmically above it, and linearly below 0;
-  between two nodes the coordinate is linear in the display's code value (in
-  ``log x`` above the peak), so greys, which tetrahedral interpolation takes
-  from the diagonal nodes alone, are exact up to the shaper table, which is
-  uniform in source values: :func:`source_axis` puts 0, the peak and every
-  node on its entries (:func:`source_domain`, :func:`_entries`).
+* :class:`SourceAxis` (source axes: .cube, .spi3d): nodes uniform in a power of
+  the display's code values up to the peak (a few shrinking geometrically toward
+  black), in a root of ``x`` above it, linearly below 0; between two nodes the
+  coordinate is linear in the display's code value (in ``log x`` above the
+  peak), so greys, which tetrahedral interpolation takes from the diagonal
+  nodes alone, are exact up to the shaper table, which is uniform in source
+  values: :func:`source_axis` puts 0, the peak and every node on its entries
+  (:func:`source_domain`, :func:`_entries`).
 """
 
 from __future__ import annotations
@@ -75,22 +75,34 @@ SOURCE_ABOVE_SHARE = 0.45
 #: Multiple of the peak for which :data:`SOURCE_ABOVE_SHARE` is measured.
 SOURCE_ABOVE_RANGE = 16.0
 
+#: :class:`SourceAxis` nodes above the peak are uniform in ``x ** (1 / root)``, the brightest cells
+#: smaller than in a logarithmic spacing: a clipping plane's error grows with a cell's size in
+#: light (measured at 33³, clip, over-range p99 in ten-bit codes, logarithmic and sixth root: ARRI
+#: LogC4 to Rec.1886 159 and 143, at a cost to ACEScg to sRGB, 82 and 96).
+SOURCE_ABOVE_ROOT = 6.0
+
+#: :class:`SourceAxis` nodes from the toe to the peak are uniform in this power of code values:
+#: clipping planes cross the cells of bright saturated colours, which code values alone make large
+#: (measured at 33³, clip, out-of-gamut p99 in ten-bit codes, powers 1 and 1.25: ACEScg to sRGB
+#: 67.5 and 61.1, ARRI LogC4 to Rec.1886 95.3 and 87.2; its dark p99 9.1 and 10.4).
+SOURCE_CODE_POWER = 1.25
+
 #: Source axes: range of linear sources and the top of encoded ones, in units of the
 #: display's peak (for SDR, display white; the over-range probes reach 16).
 SOURCE_RANGE = (-1.0, 16.0)
 
-#: Source axes: entries of the 1D shaper table, for encoded and for linear sources. A
-#: linear source's table is uniform in linear light, 1e-3 of the peak apart at 16384
-#: entries, coarse near black (measured at 33³, ACEScg to Rec.2100-PQ, ΔE ITP p99: dark
-#: colours 19.4, greys 14.5; 12.4 and 1.2 at 65536, Resolve's limit, which would add 1.3 MB
-#: to each file and 16 MB to the standalone pack).
+#: Source axes: entries of the 1D shaper table, for encoded and for linear sources. A linear
+#: source's table is uniform in linear light, 1e-3 of the peak apart at 16384 entries, coarse near
+#: black (measured at 33³, ACEScg to Rec.2100-PQ, ΔE ITP p99: dark colours 21.3, greys from 1e-4 to
+#: 16 times white 20.7; 15.4 and 12.2 at 65536, Resolve's limit, which would add 1.3 MB to each
+#: file and 16 MB to the standalone pack).
 SOURCE_SHAPER_SIZES = (4096, 16384)
 
-#: Nodes of a :class:`SourceAxis` between 0 and its first node spaced in code values,
-#: each :data:`SOURCE_TOE_RATIO` times the next: a display channel's zero plane crosses
-#: the cells next to black, where code values are steepest, so dark colours need cells
-#: that shrink with them (measured at 33³, ACEScct to sRGB, dark p99: 16.6 ten-bit codes
-#: without, 2.6 with two; in-gamut p99 34 against 38).
+#: Nodes of a :class:`SourceAxis` next to black, each :data:`SOURCE_TOE_RATIO` times the next, the
+#: last that ratio below the first node of a spacing uniform in code values: a display channel's
+#: zero plane crosses the cells next to black, where code values are steepest, so dark colours need
+#: cells that shrink with them (measured at 33³, clip, ACEScct to sRGB, dark p99: 27.3 ten-bit
+#: codes without, 5.0 with one, 3.1 with two; in-gamut 26.9 and 29.0).
 SOURCE_TOE_NODES = 2
 
 #: Ratio of successive toe nodes of a :class:`SourceAxis`.
@@ -99,8 +111,8 @@ SOURCE_TOE_RATIO = 4.0
 #: Fraction of a :class:`SourceAxis` lattice's intervals between 0 and the most negative
 #: source value of the display's in-gamut colours when that reaches
 #: :data:`SOURCE_NEGATIVE_RANGE` below 0, in proportion below that (measured at 33³, scale,
-#: Linear Rec.709 to Gamma 2.6 P3-D65, which reaches 0.225, in-gamut p99: 182 ten-bit codes
-#: with one interval below 0, 30 with 6 more; to Rec.2100-PQ, 27.6 and 10.8 ΔE ITP).
+#: Linear Rec.709 to Gamma 2.6 P3-D65, which reaches 0.225, in-gamut p99: 155 ten-bit codes
+#: with one interval below 0, 22 with 6 more; to Rec.2100-PQ, 21.2 and 8.2 ΔE ITP).
 SOURCE_NEGATIVE_SHARE = 0.2
 
 #: Reach below 0 (normalised source value) for which :data:`SOURCE_NEGATIVE_SHARE` is measured.
@@ -277,7 +289,8 @@ class SourceAxis:
     @classmethod
     def layout(cls, display: Display, size: int, low: float, high: float, reach: float = 0.0) -> SourceAxis:
         """One interval below 0 (when ``low < 0``), :data:`SOURCE_ABOVE_SHARE` of them
-        above the peak (when ``high > 1``), the rest spaced in code values between
+        above the peak (when ``high > 1``, uniform in ``x ** (1 / SOURCE_ABOVE_ROOT)``),
+        the rest uniform in the :data:`SOURCE_CODE_POWER` power of code values between
         but for :data:`SOURCE_TOE_NODES` next to black. ``reach`` (>= 0) is how far
         below 0 the display's in-gamut colours go in the source: then
         :data:`SOURCE_NEGATIVE_SHARE` of the intervals span [-reach, 0], spaced in
@@ -293,13 +306,15 @@ class SourceAxis:
         if inside < 1:
             raise ValueError(f"a lattice of {size} nodes is too small for this axis")
         top = min(high, 1.0)
-        cube = grey_linear(display, np.linspace(0.0, 1.0, inside - toe + 1) * grey_code(display, top))
+        steps, code = np.linspace(0.0, 1.0, inside - toe + 1), grey_code(display, top)
+        cube = grey_linear(display, steps ** (1.0 / SOURCE_CODE_POWER) * code)
         cube[-1] = top
-        shrink = SOURCE_TOE_RATIO ** -np.arange(toe, 0, -1, dtype=np.float64)
-        over = np.geomspace(1.0, high, above + 1)[1:] if above else np.zeros(0)
+        dark = grey_linear(display, steps[1] * code) * SOURCE_TOE_RATIO ** -np.arange(toe, 0, -1, dtype=np.float64)
+        root = np.linspace(1.0, high ** (1.0 / SOURCE_ABOVE_ROOT), above + 1)[1:]
+        over = root**SOURCE_ABOVE_ROOT if above else np.zeros(0)
         negative = -grey_linear(display, np.linspace(1.0, 0.0, mirrored + 1)[:-1] * grey_code(display, reach))
         start = [low] if below > mirrored else []
-        values = np.concatenate([start, negative, [0.0], cube[1] * shrink, cube[1:], over])
+        values = np.concatenate([start, negative, [0.0], dark, cube[1:], over])
         return cls(display, values, below, below + inside)
 
     @property

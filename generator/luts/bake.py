@@ -166,8 +166,8 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     if lat.pre is not None:
         return lines
     if lat.shaper is not None and req.shaper == "auto":
-        lines.append("A 1D shaper spaces the nodes in the display's code values of the decoded input "
-                     "(logarithmically above the peak), linear in code values between nodes.")
+        lines.append("A 1D shaper spaces the nodes by the display's code values of the decoded input "
+                     "(by a root of it above the peak), linear in code values between nodes.")
     lines.append("Node values are fitted by least squares to colours of the source gamut; greys and colours "
                  "with a zero channel keep the sampled values. Interpolate tetrahedrally.")
     return lines

@@ -40,13 +40,14 @@ divide by the largest component when it exceeds the peak, so over-range colours
 keep their chromaticity). Inside the display's gamut it is the identity, as clip.
 
 * `.cube`: DaVinci Resolve format, a 1D shaper (uniform in the source values,
-  range in `LUT_1D_INPUT_RANGE`) then a {cube_size}³ lattice whose nodes are spaced in
-  the display's code values up to the peak and logarithmically above it, up to 16
-  times the peak (the Rec.2100-PQ files: times the 1000 cd/m² peak); linear sources
-  from -1 times the peak. Node values are fitted to colours of the source gamut
-  (greys and colours with a zero channel keep their sampled values), for
-  tetrahedral interpolation: set the host's 3D interpolation to tetrahedral, the
-  figures below are measured so.
+  range in `LUT_1D_INPUT_RANGE`) then a {cube_size}³ lattice whose nodes are spaced by
+  the display's code values up to the peak and by a root of the light above it, up
+  to 16 times the peak (the Rec.2100-PQ files: times the 1000 cd/m² peak); linear
+  sources from -1 times the peak. Node values are fitted to colours of the source
+  gamut by least squares, reweighted toward the colours that set the 99th
+  percentile of the error (greys and colours with a zero channel keep their
+  sampled values), for tetrahedral interpolation: set the host's 3D
+  interpolation to tetrahedral, the figures below are measured so.
 * `.clf`: Academy/ASC Common LUT Format v3, 32-bit float: the source curve and
   the matrix as exact operators, then a Log operator, a {clf_size}³ lattice uniform in
   the logarithm of display light (0 and the peak on nodes) and a 1D table to code

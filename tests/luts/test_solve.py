@@ -50,10 +50,11 @@ def test_fit_is_the_regularised_least_squares_solution_with_kept_nodes():
     cube = rng.random((size, size, size, 3))
     lat = lattice.Lattice(None, None, "clip", None, None, None, (0.0, 1.0), None, cube)
     colours = {name: (rng.random((150, 3)), rng.random((150, 3))) for name in ("in_gamut", "out_of_gamut")}
-    fitted = lattice.fit(lat, colours, zero=0).reshape(-1, 3)
+    colour_weights = {name: rng.uniform(0.3, 4.0, 150) for name in colours}
+    fitted = lattice.fit(lat, colours, 0, colour_weights).reshape(-1, 3)
     matrix, expected = [], []
     for name, (code, codes) in colours.items():
-        scale = np.sqrt(lattice.FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
+        scale = np.sqrt(colour_weights[name])[:, None]
         nodes, weights = lattice.tetrahedral_weights(code * (size - 1), size)
         matrix.append(_dense(nodes.T, weights.T, size) * scale)
         expected.append(codes * scale)
