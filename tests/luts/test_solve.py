@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from generator.luts import fit as fitting
 from generator.luts import lattice, numbers, solve
 
 RNG_SEED = 7
@@ -11,7 +12,7 @@ RNG_SEED = 7
 
 def _problem(size: int, count: int, rng):
     """Random colours in a size³ unit lattice: node numbers and weights (4, m), codes (3, m)."""
-    nodes, weights = lattice.tetrahedral_weights(rng.random((count, 3)) * (size - 1), size)
+    nodes, weights = fitting.tetrahedral_weights(rng.random((count, 3)) * (size - 1), size)
     return np.ascontiguousarray(nodes.T), np.ascontiguousarray(weights.T), rng.random((3, count))
 
 
@@ -51,19 +52,19 @@ def test_fit_is_the_regularised_least_squares_solution_with_kept_nodes():
     lat = lattice.Lattice(None, None, "clip", None, None, None, (0.0, 1.0), None, cube)
     colours = {name: (rng.random((150, 3)), rng.random((150, 3))) for name in ("in_gamut", "out_of_gamut")}
     colour_weights = {name: rng.uniform(0.3, 4.0, 150) for name in colours}
-    fitted = lattice.fit(lat, colours, 0, colour_weights).reshape(-1, 3)
+    fitted = fitting.fit(lat, colours, 0, colour_weights).reshape(-1, 3)
     matrix, expected = [], []
     for name, (code, codes) in colours.items():
         scale = np.sqrt(colour_weights[name])[:, None]
-        nodes, weights = lattice.tetrahedral_weights(code * (size - 1), size)
+        nodes, weights = fitting.tetrahedral_weights(code * (size - 1), size)
         matrix.append(_dense(nodes.T, weights.T, size) * scale)
         expected.append(codes * scale)
     matrix, expected = np.concatenate(matrix), np.concatenate(expected)
     start = cube.reshape(-1, 3)
-    kept = lattice._kept(size, 0)
+    kept = fitting._kept(size, 0)
     free = matrix[:, ~kept]
-    normal = free.T @ free + lattice.FIT_REGULARISATION * np.eye(free.shape[1])
-    right = free.T @ (expected - matrix[:, kept] @ start[kept]) + lattice.FIT_REGULARISATION * start[~kept]
+    normal = free.T @ free + fitting.FIT_REGULARISATION * np.eye(free.shape[1])
+    right = free.T @ (expected - matrix[:, kept] @ start[kept]) + fitting.FIT_REGULARISATION * start[~kept]
     exact = start.copy()
     exact[~kept] = np.linalg.solve(normal, right)
     assert np.array_equal(fitted[kept], numbers.rounded(start[kept], lattice.CUBE_DECIMALS))
