@@ -75,6 +75,8 @@ SOURCE_ABOVE_SHARE = 0.45
 #: Multiple of the peak for which :data:`SOURCE_ABOVE_SHARE` is measured.
 SOURCE_ABOVE_RANGE = 16.0
 
+#: (The SourceAxis figures below were measured with the fit of :mod:`generator.luts.fit` at 65536
+#: colours per set and three reweighted passes; its defaults since are within a few percent.)
 #: :class:`SourceAxis` nodes above the peak are uniform in ``x ** (1 / root)``, the brightest cells
 #: smaller than in a logarithmic spacing: a clipping plane's error grows with a cell's size in
 #: light (measured at 33³, clip, over-range p99 in ten-bit codes, logarithmic and sixth root: ARRI
