@@ -106,6 +106,18 @@ def scene_to_display_matrix(spec: Spec, display: Display) -> np.ndarray:
     return display_matrix(spec, display) @ scene_to_display_reference(spec)
 
 
+def normalised_display_matrix(spec: Spec, display: Display) -> np.ndarray:
+    """Scene-reference linear RGB to normalised display-linear RGB (1 = the display's peak):
+    the input of a view's baked LUT."""
+    return scene_to_display_matrix(spec, display) / display.clip_high
+
+
+def normalised_display_to_xyz(spec: Spec, display: Display) -> np.ndarray:
+    """Normalised display-linear RGB (1 = the display's peak) to CIE XYZ-D65 (1.0 = 100 cd/m²):
+    where a view's baked LUT ending in display light hands over to the display space."""
+    return np.linalg.inv(display_matrix(spec, display)) * display.clip_high
+
+
 def map_display_linear(display: Display, method: str, linear, params=None) -> np.ndarray:
     """Display-linear RGB (1.0 = 100 cd/m², any values) gamut mapped and encoded.
 

@@ -235,14 +235,14 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
                     params=None, light: bool = False) -> Lattice:
     """The display layout. With ``source``, the lattice's input is that space's code
     values (its curve and matrix come first); without, scene-reference linear RGB
-    (the matrix is the caller's: :func:`view_matrix`).
+    (the matrix is the caller's: :func:`~generator.colorimetry.reference.normalised_display_matrix`).
 
     With ``light`` the file ends in normalised display-linear RGB, for a config whose
     display space encodes it (a view of a display CLF cannot encode, PQ or HLG): the
     lattice holds the same curve of the mapped colour as its input (the pre-shaper's
     power inside the cube, :class:`LogAxis` coordinates for clip and scale), so what the
     mapping leaves alone passes through exactly, and an exact operator undoes the curve."""
-    matrix = view_matrix(spec, display)
+    matrix = reference.normalised_display_matrix(spec, display)
     if source is not None:
         matrix = matrix @ reference.space_matrix(spec, source)
     decode = None if source is None else source.curve
@@ -262,11 +262,6 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
         return Lattice(source, display, method, decode, matrix, pre, domain, table, cube, None, LOG_DECIMALS, pre)
     cube = _evaluate(display, method, linear, None, params)
     return Lattice(source, display, method, decode, matrix, pre, domain, table, cube)
-
-
-def view_matrix(spec: Spec, display: Display) -> np.ndarray:
-    """Scene-reference linear RGB to normalised display-linear RGB (1 = the display's peak)."""
-    return reference.scene_to_display_matrix(spec, display) / display.clip_high
 
 
 def _shaper_table(spec: Spec, source: ColourSpace, display: Display, size: int, shaper, domain) -> np.ndarray | None:

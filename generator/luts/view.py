@@ -1,6 +1,6 @@
 """The per-display LUT a config's gamut-mapped view references.
 
-The view is scene-reference linear RGB -> :func:`~generator.luts.lattice.view_matrix`
+The view is scene-reference linear RGB -> :func:`~generator.colorimetry.reference.normalised_display_matrix`
 (an OCIO MatrixTransform, exact, kept in the config) -> this CLF (pre-shaper,
 Range, LUT1D, LUT3D in display axes, see :mod:`generator.luts.lattice`). The
 function is pure: it returns the file's name and bytes with the measured
@@ -80,8 +80,8 @@ def view_transform(matrix, path: str, spec: Spec | None = None, display: Display
 
     steps = [matrix_transform(np.asarray(matrix)), ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)]
     if display is not None:
-        to_xyz = np.linalg.inv(reference.display_matrix(spec, display)) * display.clip_high
-        steps += [matrix_transform(to_xyz), *display_steps(spec, display, {})]
+        steps += [matrix_transform(reference.normalised_display_to_xyz(spec, display)),
+                  *display_steps(spec, display, {})]
     return ocio.GroupTransform(steps)
 
 

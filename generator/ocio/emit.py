@@ -115,8 +115,8 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     from generator.luts.view import bake_view_lut_cached
 
     method = VIEW_METHODS[view]
-    to_display = reference.scene_to_display_matrix(spec, display) / display.clip_high
-    to_xyz = np.linalg.inv(reference.display_matrix(spec, display)) * display.clip_high
+    to_display = reference.normalised_display_matrix(spec, display)
+    to_xyz = reference.normalised_display_to_xyz(spec, display)
     if method == "rgc":
         steps = [matrix_transform(to_display),
                  ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, RGCParams().as_ocio_params()),

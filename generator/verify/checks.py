@@ -293,7 +293,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
         return []
     out = []
     for display in spec.displays:
-        to_display = reference.scene_to_display_matrix(spec, display) / display.clip_high
+        to_display = reference.normalised_display_matrix(spec, display)
         families = probes.code_families(0.0, 1.0, sizes) + [
             f if f.name == probes.NON_FINITE else Family(f.name, apply_matrix(to_display, f.values), f.notes)
             for f in scene]
