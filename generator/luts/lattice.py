@@ -12,7 +12,7 @@
 * Source axes (:func:`source_lattice`): formats that hold no matrix (.cube,
   .spi3d) sample the whole transform in the source's own values; a 1D shaper
   table, uniform in source values, takes them to the coordinate of a
-  :class:`~generator.luts.axes.SourceAxis`. A clipping plane of the display is
+  :class:`~generator.luts.source_axes.SourceAxis`. A clipping plane of the display is
   oblique to these axes and crosses cells, so the node values are then fitted
   by least squares (:mod:`generator.luts.fit`) to colours of the kinds the probes measure,
   drawn from another seed, reweighted by their errors (:func:`reweighted_fit`);
@@ -33,8 +33,8 @@ import numpy as np
 from generator.colorimetry import reference
 from generator.colorimetry.transfer import Linear, PiecewisePower, Power
 from generator.luts import numbers, probes
-from generator.luts.axes import (DEFAULT_SHARES, LOG_METHODS, SOURCE_SHAPER_SIZES, Axis, LogAxis, grey_code,
-                                 grey_linear, source_axis, source_domain)
+from generator.luts.axes import DEFAULT_SHARES, LOG_METHODS, Axis, LogAxis, grey_code, grey_linear
+from generator.luts.source_axes import SOURCE_SHAPER_SIZES, source_axis, source_domain
 from generator.spec.schema import ColourSpace, Display, Spec
 
 #: Decimals written for lattice values holding display code values: 5e-6 of a code at

@@ -5,8 +5,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from generator.luts import axes, lattice
-from generator.luts.axes import Axis, LogAxis, SourceAxis, grey_code
+from generator.luts import axes, lattice, source_axes
+from generator.luts.axes import Axis, LogAxis, grey_code
+from generator.luts.source_axes import SourceAxis
 
 
 @pytest.mark.parametrize("size", (9, 17, 33, 65))
@@ -72,10 +73,10 @@ def test_source_axis_spaces_negatives_when_the_display_reaches_outside_the_sourc
     source = default_spec.space("Linear Rec.709 (sRGB)")
     wide, narrow = (next(d for d in default_spec.displays if d.name == name)
                     for name in ("Gamma 2.6 P3-D65 - Display", "sRGB - Display"))
-    reach = axes.display_reach(default_spec, source, wide)
-    assert 0.2 < reach < 0.25 and axes.display_reach(default_spec, source, narrow) < 1e-12
+    reach = source_axes.display_reach(default_spec, source, wide)
+    assert 0.2 < reach < 0.25 and source_axes.display_reach(default_spec, source, narrow) < 1e-12
     axis = lattice.source_axis(default_spec, source, wide, 33)
     negative = axis.values[:axis.zero]
-    assert negative.size == 1 + round(32 * axes.SOURCE_NEGATIVE_SHARE)
+    assert negative.size == 1 + round(32 * source_axes.SOURCE_NEGATIVE_SHARE)
     assert negative[1] == pytest.approx(-reach, rel=1e-2) and np.all(np.diff(negative[1:]) > 0)
     assert lattice.source_axis(default_spec, source, narrow, 33).zero == 1
