@@ -42,9 +42,6 @@ METHODS = ("clip", "scale", "desaturate", "rgc", "perceptual")
 #: Displays whose CLF is also measured for every method (HLG has no ociobakelut comparison here).
 EXTRA_DISPLAYS = ("Rec.2100-HLG - Display",)
 OVERALL = "overall"
-#: HDR encodings CLF cannot express (PQ, HLG): the config views of their displays end in
-#: display light, and are measured here.
-HDR_VIEW_EOTFS = ("ST 2084", "HLG")
 
 
 def _figures(errors: dict) -> dict:
@@ -153,13 +150,14 @@ def methods(spec, source: str, display: str, size: int, folder: Path) -> None:
         print(f"  ocioforge clf {method:11s} {_fmt(figures)}")
 
 
-def hdr_views(spec) -> None:
-    """The config's baked views of the HDR displays (their files end in display light,
-    which the config's display space encodes), measured through OCIO on ACEScg colours."""
+def config_views(spec) -> None:
+    """The config's baked views of every display (HDR displays' files end in display light,
+    which the config's display space encodes; Desaturate is a lattice in OCIO's HSV),
+    measured through OCIO on ACEScg colours."""
     from generator.luts.view import bake_view_lut
 
-    print("\n== config views of HDR displays (lattice in display light, the config encodes), ΔE ITP max/p99")
-    for display in (d for d in spec.displays if d.is_hdr and d.eotf_name in HDR_VIEW_EOTFS):
+    print("\n== config views (as the config runs them), ten-bit codes (SDR) or ΔE ITP (HDR), max/p99")
+    for display in spec.displays:
         for method in ("scale", "desaturate", "perceptual"):
             lut = bake_view_lut(spec, display, method)
             figures = {name: (f.maximum, f.p99) for name, f in lut.figures.items()}
@@ -183,7 +181,7 @@ def main(argv=None) -> None:
         for display in EXTRA_DISPLAYS:
             print(f"\n== ACEScg -> {display}, {args.size}^3, ocioforge CLF only")
             methods(spec, "ACEScg", display, args.size, folder)
-    hdr_views(spec)
+    config_views(spec)
 
 
 if __name__ == "__main__":

@@ -92,28 +92,30 @@ def needs_spi1d(lattice: Lattice) -> bool:
     return lattice.shaper is not None or tuple(lattice.domain) != (0.0, 1.0)
 
 
-def _array(rows: np.ndarray, dim: str, decimals: int) -> str:
+def table_array(rows: np.ndarray, dim: str, decimals: int) -> str:
+    """A CLF Array of ``rows`` (values within (-10, 10)) with fixed ``decimals``."""
     return f'<Array dim="{dim}">\n' + numbers.table(rows, decimals).decode("ascii") + "</Array>\n"
 
 
-def _op(tag: str, body: str, **attributes) -> str:
+def op(tag: str, body: str, **attributes) -> str:
+    """A CLF process node, 32-bit float in and out."""
     attrs = "".join(f' {key}="{value}"' for key, value in attributes.items())
     return f'<{tag} inBitDepth="32f" outBitDepth="32f"{attrs}>\n{body}</{tag}>\n'
 
 
 def _exponent(style: str, gamma: float, offset: float | None = None) -> str:
     extra = f' offset="{_n(offset)}"' if offset is not None else ""
-    return _op("Exponent", f'<ExponentParams exponent="{_n(gamma)}"{extra}/>\n', style=style)
+    return op("Exponent", f'<ExponentParams exponent="{_n(gamma)}"{extra}/>\n', style=style)
 
 
 def _range(lo: float, hi: float) -> str:
     body = "".join(f"<{tag}>{_n(v)}</{tag}>\n" for tag, v in
                    (("minInValue", lo), ("maxInValue", hi), ("minOutValue", 0.0), ("maxOutValue", 1.0)))
-    return _op("Range", body)
+    return op("Range", body)
 
 
 def _lut1d(values: np.ndarray, decimals: int) -> str:
-    return _op("LUT1D", _array(values[:, None], f"{values.size} 1", decimals))
+    return op("LUT1D", table_array(values[:, None], f"{values.size} 1", decimals))
 
 
 def _log_axis(axis: LogAxis, style: str = "linToLog") -> str:
@@ -122,7 +124,7 @@ def _log_axis(axis: LogAxis, style: str = "linToLog") -> str:
     params = dict(base=2.0, logSideSlope=1.0 / axis.span, logSideOffset=-np.log2(axis.toe) / axis.span,
                   linSideSlope=1.0, linSideOffset=axis.toe)
     attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
-    return _op("Log", f"<LogParams {attrs}/>\n", style=style)
+    return op("Log", f"<LogParams {attrs}/>\n", style=style)
 
 
 def _pre_shaper(pre, forward: bool = True) -> str:
@@ -141,7 +143,7 @@ def _log_camera(curve: LogCamera) -> str:
     if curve.linear_slope is not None:
         params["linearSlope"] = curve.linear_slope
     attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
-    return _op("Log", f"<LogParams {attrs}/>\n", style="cameraLogToLin")
+    return op("Log", f"<LogParams {attrs}/>\n", style="cameraLogToLin")
 
 
 def decode_ops(name: str, curve) -> str:
@@ -162,12 +164,12 @@ def decode_ops(name: str, curve) -> str:
     if baked.shaper != 1:
         ops += _exponent("basicFwd", 1.0 / baked.shaper)
     values = np.asarray(baked.values)
-    return ops + _op("LUT1D", "<Array dim=\"%d 1\">\n%s</Array>\n" % (values.size, "".join(f"{v:.9g}\n" for v in values)))
+    return ops + op("LUT1D", "<Array dim=\"%d 1\">\n%s</Array>\n" % (values.size, "".join(f"{v:.9g}\n" for v in values)))
 
 
 def _matrix(matrix: np.ndarray) -> str:
     rows = "".join(" ".join(_n(v) for v in row) + "\n" for row in np.asarray(matrix, dtype=np.float64))
-    return _op("Matrix", f'<Array dim="3 3">\n{rows}</Array>\n')
+    return op("Matrix", f'<Array dim="3 3">\n{rows}</Array>\n')
 
 
 def _pre(lattice: Lattice, include_matrix: bool) -> list[str]:
@@ -203,11 +205,16 @@ def clf(lattice: Lattice, identifier: str, description: str, include_matrix: boo
     if lattice.shaper is not None:
         ops.append(_lut1d(lattice.shaper, SHAPER_DECIMALS))
     n = lattice.size
-    ops.append(_op("LUT3D", _array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", lattice.decimals),
-                   interpolation=INTERPOLATION))
+    ops.append(op("LUT3D", table_array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", lattice.decimals),
+                  interpolation=INTERPOLATION))
     if lattice.post is not None:
         ops.append(_lut1d(lattice.post, CUBE_DECIMALS))
     ops += _light(lattice)
+    return clf_document(ops, identifier, description, descriptors)
+
+
+def clf_document(ops: list[str], identifier: str, description: str, descriptors: tuple[str, str] = ("", "")) -> bytes:
+    """A CLF v3 ProcessList of the process nodes ``ops`` (text from :func:`op`)."""
     head = (f'<?xml version="1.0" encoding="UTF-8"?>\n<ProcessList compCLFversion="3" id="{_xml(identifier)}">\n'
             f"<Description>{_xml(description)}</Description>\n")
     if descriptors[0]:

@@ -2,9 +2,11 @@
 
 The view is scene-reference linear RGB -> :func:`~generator.colorimetry.reference.normalised_display_matrix`
 (an OCIO MatrixTransform, exact, kept in the config) -> this CLF (pre-shaper,
-Range, LUT1D, LUT3D in display axes, see :mod:`generator.luts.lattice`). The
-function is pure: it returns the file's name and bytes with the measured
-error; the config writer writes them.
+Range, LUT1D, LUT3D in display axes, see :mod:`generator.luts.lattice`); for
+desaturate, the matrix is followed by OCIO's RGB_TO_HSV, the shared coordinates
+file, this file and HSV_TO_RGB (:mod:`generator.luts.hsv`). The function is
+pure: it returns the file's name and bytes with the measured error; the config
+writer writes them.
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from generator.luts import formats, lattice, probes
+from generator.luts import formats, hsv, lattice, probes
 from generator.luts.axes import LOG_METHODS
 from generator.luts.curve1d import slug
 from generator.spec.schema import Display, Spec
@@ -29,6 +31,11 @@ VIEW_SIZE = 33
 #: codes at most into sRGB; HLG's view ends in display light, which the config encodes,
 #: so its lattice is exact too) in a seventh of the bytes.
 LOG_VIEW_SIZE = 17
+
+
+#: The method whose config view is an HSV lattice (:mod:`generator.luts.hsv`), exact but for
+#: its 1D tables; its standalone bakes keep the display layout.
+HSV_METHOD = "desaturate"
 
 
 def view_size(display: Display, method: str) -> int:
@@ -56,6 +63,7 @@ class ViewLut:
     bound: float
     unit: str
     light: bool = False
+    hsv: bool = False
 
 
 def ends_in_light(display: Display) -> bool:
@@ -69,16 +77,34 @@ def view_filename(display: Display, method: str, size: int | None = None) -> str
     return f"view_{slug(display.name)}_{method}_{size or view_size(display, method)}.clf"
 
 
-def view_transform(matrix, path: str, spec: Spec | None = None, display: Display | None = None):
-    """The OCIO transform of a view LUT: MatrixTransform then FileTransform (tetrahedral);
-    with ``spec`` and ``display``, for a LUT ending in display light, then the display's
-    own encoding (from normalised display-linear RGB through CIE XYZ)."""
+def lut_steps(matrix, path: str, hsv_folder: str | None = None) -> list:
+    """The OCIO transforms of a view LUT: MatrixTransform then FileTransform (tetrahedral);
+    for an HSV view (:mod:`generator.luts.hsv`), the file between OCIO's RGB_TO_HSV and
+    HSV_TO_RGB after the shared table (in ``hsv_folder``), all trilinear."""
+    import PyOpenColorIO as ocio
+
+    from generator.ocio.emit import matrix_transform
+
+    if hsv_folder is None:
+        return [matrix_transform(np.asarray(matrix)), ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)]
+    shared = f"{hsv_folder}/{hsv.SHARED_FILE}" if hsv_folder else hsv.SHARED_FILE
+    return [matrix_transform(np.asarray(matrix)), ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV),
+            ocio.FileTransform(shared, interpolation=ocio.INTERP_LINEAR),
+            ocio.FileTransform(path, interpolation=ocio.INTERP_LINEAR),
+            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV, direction=ocio.TRANSFORM_DIR_INVERSE)]
+
+
+def view_transform(matrix, path: str, spec: Spec | None = None, display: Display | None = None,
+                   hsv_folder: str | None = None):
+    """:func:`lut_steps` as a GroupTransform; with ``spec`` and ``display``, for a LUT ending
+    in display light, then the display's own encoding (from normalised display-linear RGB
+    through CIE XYZ)."""
     import PyOpenColorIO as ocio
 
     from generator.colorimetry import reference
     from generator.ocio.emit import display_steps, matrix_transform
 
-    steps = [matrix_transform(np.asarray(matrix)), ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)]
+    steps = lut_steps(matrix, path, hsv_folder)
     if display is not None:
         steps += [matrix_transform(reference.normalised_display_to_xyz(spec, display)),
                   *display_steps(spec, display, {})]
@@ -106,6 +132,8 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
     params : optional
         The method's parameters.
     """
+    if method == HSV_METHOD and size is None and params is None:
+        return _bake_hsv_view(spec, display)
     size = size or view_size(display, method)
     light = ends_in_light(display)
     lat = lattice.display_lattice(spec, display, method, size, params=params, light=light)
@@ -119,11 +147,39 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / name
         path.write_bytes(data)
-        try:
-            gamut_source = spec.space("ACEScg")
-        except KeyError:
-            gamut_source = None
+        gamut_source = _gamut_source(spec)
         transform = view_transform(matrix, str(path), *((spec, display) if light else ()))
         figures = probes.measure(spec, None, display, method, probes.ocio_apply(transform), gamut_source=gamut_source)
     unit = next(iter(figures.values())).unit
     return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, light)
+
+
+def _gamut_source(spec: Spec):
+    try:
+        return spec.space("ACEScg")
+    except KeyError:
+        return None
+
+
+def hsv_view_filename(display: Display) -> str:
+    return f"view_{slug(display.name)}_{HSV_METHOD}_hsv{hsv.HSV_SIZE}.clf"
+
+
+def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:
+    """The desaturate view of ``display`` as an HSV lattice, measured through OCIO."""
+    from generator.colorimetry import reference
+
+    name = hsv_view_filename(display)
+    text = (f"ocioforge view LUT: OCIO HSV of normalised {display.name} linear RGB (1 = peak, after the config's "
+            f"matrix, RGB_TO_HSV and {hsv.SHARED_FILE}) to the HSV of its desaturated colour (before "
+            "HSV_TO_RGB); trilinear.")
+    data = hsv.hsv_clf(hsv.hsv_lattice(display), f"ocioforge:{name[:-4]}", text)
+    matrix = tuple(tuple(float(v) for v in row) for row in reference.normalised_display_matrix(spec, display))
+    with tempfile.TemporaryDirectory() as folder:
+        (Path(folder) / name).write_bytes(data)
+        (Path(folder) / hsv.SHARED_FILE).write_bytes(hsv.shared_clf())
+        transform = view_transform(matrix, str(Path(folder) / name), spec, display, hsv_folder=folder)
+        figures = probes.measure(spec, None, display, HSV_METHOD, probes.ocio_apply(transform),
+                                 gamut_source=_gamut_source(spec))
+    unit = next(iter(figures.values())).unit
+    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, True, True)

@@ -112,7 +112,8 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     exactly; for an HDR display (PQ, HLG, extended range) the file ends in display
     light and the display space encodes it."""
     from generator.gamut import RGCParams
-    from generator.luts.view import bake_view_lut_cached
+    from generator.luts import hsv
+    from generator.luts.view import bake_view_lut_cached, lut_steps
 
     method = VIEW_METHODS[view]
     to_display = reference.normalised_display_matrix(spec, display)
@@ -124,10 +125,11 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     else:
         lut = bake_view_lut_cached(spec, display, method)
         view_luts[lut.filename] = lut.data
+        if lut.hsv:
+            view_luts[hsv.SHARED_FILE] = hsv.shared_clf()
         back = (matrix_transform(to_xyz) if lut.light else
                 ocio.GroupTransform(display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE))
-        steps = [matrix_transform(np.asarray(lut.matrix)),
-                 ocio.FileTransform(src=lut.filename, interpolation=ocio.INTERP_TETRAHEDRAL), back]
+        steps = [*lut_steps(lut.matrix, lut.filename, "" if lut.hsv else None), back]
     vt = ocio.ViewTransform(SCENE, name=f"{view} ({display.name})", family="Gamut mapped",
                             description=f"{view} gamut mapping into {display.name}")
     vt.setTransform(ocio.GroupTransform(steps), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)

@@ -32,11 +32,20 @@ VIEWS = (*VIEW_METHODS, "Raw")
 
 #: Views a display offers when the spec does not say: those verify proves on every probe
 #: it draws. Colorimetric (clip) and RGC are analytic; Scale is a CLF lattice on which the
-#: mapping is linear inside every tetrahedron (0.03 ten-bit codes at most through verify;
-#: 0.003 ΔE ITP on PQ and HLG displays, whose view files end in display light).
-#: Desaturate and Perceptual are offered when a spec asks for them: their lattices miss
-#: colours far outside the display by tens to hundreds of codes, which verify reports.
-DEFAULT_VIEWS = ("Colorimetric", "Scale", "RGC", "Raw")
+#: mapping is linear inside every tetrahedron, and Desaturate a lattice in OCIO's HSV on
+#: which it is trilinear (generator.luts.hsv): both within 0.02 ten-bit codes of the
+#: reference on the probe sets, 0.003 ΔE ITP on HDR displays, whose view files end in
+#: display light. SDR displays offer Desaturate by default; an HDR display's Desaturate file
+#: (1 MB) is built when its spec asks. Perceptual is offered when a spec asks for it: its
+#: lattice moves colours near the boundary by tens of codes, which verify reports.
+DEFAULT_VIEWS = ("Colorimetric", "Desaturate", "Scale", "RGC", "Raw")
+DEFAULT_HDR_VIEWS = ("Colorimetric", "Scale", "RGC", "Raw")
+
+
+def default_views(encoding: str) -> tuple[str, ...]:
+    """The views a display of ``encoding`` offers when its spec names none."""
+    return DEFAULT_VIEWS if encoding == "sdr-video" else DEFAULT_HDR_VIEWS
+
 
 #: Roles a config must set so hosts load it without warnings, with their default targets.
 DEFAULT_ROLES = {
@@ -275,7 +284,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     custom = any(k in table for k in ("gamut", "primaries", "eotf"))
     if name.lower() in known and not custom:
         d = known[name.lower()]
-        views = views or DEFAULT_VIEWS
+        views = views or default_views(d.encoding)
         return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
         raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
@@ -288,7 +297,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     if not (hdr and 100.0 <= peak <= 10000.0) and not (not hdr and peak == 100.0):
         raise SpecError(source, f"{field}.peak_luminance",
                         "allowed: 100 to 10000 cd/m² for ST 2084 displays, 100 for SDR (1.0 = 100 cd/m²)")
-    views = views or DEFAULT_VIEWS
+    views = views or default_views("hdr-video" if hdr else "sdr-video")
     return Display(name, _gamut(table, source, field, base, name), eotf, eotf_name, views,
                    _strings(table.get("aliases", []), source, f"{field}.aliases"), peak,
                    "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"))

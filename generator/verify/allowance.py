@@ -71,14 +71,59 @@ def determinate(src: paths.Endpoint, dst: paths.Endpoint, codes: np.ndarray) -> 
         return np.all(np.abs(apply_matrix(np.linalg.inv(dst.matrix), ref)) > shift, axis=-1)
 
 
-def _operator_shift(display: Display, view: str, linear: np.ndarray) -> np.ndarray:
-    """The departure OCIO's own operator for a view's mapping may make, in display-linear
-    RGB: for the ACES gamut compression (a fixed function), RGC_OCIO_SCALED of
-    max(1, largest component) of the normalised display RGB; 0 for the others."""
-    if paths.view_method(view) != "rgc":
+def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.ndarray) -> np.ndarray:
+    """The departure OCIO's own operators for a view's mapping may make, in display-linear
+    RGB, given the float32 ``shift`` of the display's linear values ``linear``: for the ACES
+    gamut compression (a fixed function), RGC_OCIO_SCALED of max(1, largest component) of
+    the normalised display RGB; for desaturate, the luminance's share of ``shift`` times
+    the mixed colour per unit luminance, ``(c - m) / (Y - m)`` for a colour whose smallest
+    channel ``m`` is negative (a colour of luminance near 0 maps near black, up to
+    1 / (smallest luminance weight) times its luminance's rounding), plus the float32
+    resolution of its HSV values through the view (:func:`_hsv_rounding_shift`); 0 for the
+    others."""
+    method = paths.view_method(view)
+    if method == "rgc":
+        scale = np.maximum(1.0, np.max(np.abs(linear / display.clip_high), axis=-1, keepdims=True))
+        return tolerances.RGC_OCIO_SCALED * scale * display.clip_high * np.ones_like(linear)
+    if method != "desaturate":
         return np.zeros_like(linear)
-    scale = np.maximum(1.0, np.max(np.abs(linear / display.clip_high), axis=-1, keepdims=True))
-    return tolerances.RGC_OCIO_SCALED * scale * display.clip_high * np.ones_like(linear)
+    weights = reference.display_gamut(display).luminance_weights
+    weights = weights / weights.sum()
+    luminance = linear @ weights
+    low = np.minimum(linear.min(axis=-1), 0.0)
+    with np.errstate(all="ignore"):
+        per_luminance = np.where(low[..., None] < 0.0, (linear - low[..., None]) / (luminance - low)[..., None], 0.0)
+    return np.nan_to_num(per_luminance) * (shift @ weights)[..., None] + _hsv_rounding_shift(display, linear)
+
+
+def _hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
+    """How far the desaturate view's output may move, per channel, when each of the OCIO
+    HSV values of display-linear ``linear`` moves by its float32 resolution through the view
+    (:func:`generator.luts.hsv.float32_resolution`), either way, summed over the three
+    (to first order a bound): the mapping's own sensitivity, which is large where a colour
+    of luminance near 0 maps near black."""
+    from generator.gamut.simple import desaturate
+    from generator.luts import hsv
+
+    gamut, peak = reference.display_gamut(display), display.clip_high
+    with np.errstate(all="ignore"):
+        values = hsv.ocio_rgb_to_hsv(np.nan_to_num(linear.reshape(-1, 3)) / peak)
+        delta = hsv.float32_resolution(values)
+        top = 2.0 - 1.0 / hsv.SATURATION_REACH
+
+        def mapped(v):
+            v = np.stack([v[:, 0], np.clip(v[:, 1], 0.0, top), v[:, 2]], axis=-1)
+            return desaturate(hsv.ocio_hsv_to_rgb(v, max_saturation=2.0), gamut)
+
+        base, total = mapped(values), np.zeros_like(values)
+        for axis in range(3):
+            worst = np.zeros_like(values)
+            for sign in (1.0, -1.0):
+                moved = values.copy()
+                moved[:, axis] += sign * delta[:, axis]
+                worst = np.maximum(worst, np.abs(mapped(moved) - base))
+            total += worst
+    return (np.nan_to_num(total) * peak).reshape(linear.shape)
 
 
 def mapped_allowance(src: paths.Endpoint, back: np.ndarray, display: Display, view: str, codes: np.ndarray,
@@ -91,7 +136,23 @@ def mapped_allowance(src: paths.Endpoint, back: np.ndarray, display: Display, vi
         return None
     ref, shift = float32_shift(src, back, codes)
     with np.errstate(all="ignore"):
-        shift = shift + _operator_shift(display, view, apply_matrix(np.linalg.inv(back), ref))
+        shift = shift + _operator_shift(display, view, apply_matrix(np.linalg.inv(back), ref), shift)
+    return _encoded_shift(display, expected, shift)
+
+
+def hsv_file_allowance(display: Display, view: str, light: np.ndarray, expected: np.ndarray) -> np.ndarray:
+    """The allowance of an HSV view's display file checked on its own: the view operator's
+    rounding (:func:`_operator_shift`) of the display light ``light`` (1 = 100 cd/m²) the
+    file's input stands for, applied to the mapped light and encoded."""
+    with np.errstate(all="ignore"):
+        shift = _operator_shift(display, view, light, np.zeros_like(light))
+    return _encoded_shift(display, expected, shift)
+
+
+def _encoded_shift(display: Display, expected: np.ndarray, shift: np.ndarray) -> np.ndarray:
+    """The code difference a shift of the display light behind codes ``expected`` makes,
+    either way, within the display's range."""
+    with np.errstate(all="ignore"):
         light = np.clip(reference.display_decode(display, expected), 0.0, display.clip_high)
         moved = [reference.display_encode(display, np.clip(light + sign * shift, 0.0, display.clip_high))
                  for sign in (1.0, -1.0)]

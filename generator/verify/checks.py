@@ -18,7 +18,7 @@ from generator import tolerances
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import apply_matrix
 from generator.verify import paths, probes
-from generator.verify.allowance import determinate, float32_allowance, view_allowance
+from generator.verify.allowance import determinate, float32_allowance, hsv_file_allowance, view_allowance
 from generator.verify.probes import Family, Probes, Sizes
 from generator.spec.schema import Display, Spec
 
@@ -29,14 +29,19 @@ KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
 RELATIVE, COLOUR, ITP, CODES = "relative", "colour relative", "ΔE ITP", "10-bit codes"
 
 
+#: Methods whose config view is an exact lattice (scale's log lattice, desaturate's HSV
+#: lattice): held to the issue's every-set bound for exact mappings.
+EXACT_VIEW_METHODS = ("scale", "desaturate")
+
+
 def view_lut_tolerance(method: str, display: Display) -> float:
     """The bound the LUT issue sets for a config's baked view LUT, in 10-bit codes (ΔE ITP
-    for HDR displays, DELTA_E_ITP_PER_PQ_CODE each): the scale mapping's, or the clip
-    view's in-gamut target for the others."""
+    for HDR displays, DELTA_E_ITP_PER_PQ_CODE each): the every-set bound for the exact
+    lattices (:data:`EXACT_VIEW_METHODS`), or the clip view's in-gamut target for the others."""
     if display.is_hdr:
-        return (tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP if method == "scale"
+        return (tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP if method in EXACT_VIEW_METHODS
                 else tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP)
-    return tolerances.LUT_CLF_SCALE_CODES if method == "scale" else tolerances.LUT_CLF_IN_GAMUT_CODES
+    return tolerances.LUT_CLF_SCALE_CODES if method in EXACT_VIEW_METHODS else tolerances.LUT_CLF_IN_GAMUT_CODES
 
 
 @dataclass(frozen=True, eq=False)
@@ -288,7 +293,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
     from generator.ocio.emit import LUT_FOLDER
 
     try:
-        from generator.luts.view import ends_in_light, view_filename
+        from generator.luts.view import HSV_METHOD, ends_in_light, view_filename
     except ImportError:
         return []
     out = []
@@ -302,6 +307,10 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
             method = paths.view_method(view)
             if method is None or method in paths.ANALYTIC_METHODS:
                 continue
+            if method == HSV_METHOD:
+                checks = hsv_lut_checks(spec, display, view, families)
+                out += [c for c in checks if c.lut not in {o.lut for o in out}]  # one check of the shared file
+                continue
             fn = paths.view_function(spec, display, view)
             expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
             name = f"{LUT_FOLDER}/{view_filename(display, method)}"
@@ -310,6 +319,47 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
                              expected=expected, output=paths.DISPLAY, encode=encode,
                              **_judging(None, display, None, view)))
     return out
+
+
+def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Family]) -> list[Check]:
+    """The two files of an HSV view (generator.luts.hsv) on their own: the shared file
+    from OCIO HSV values of the families' colours to lattice coordinates, and the
+    display's file from those coordinates (in float32) to the HSV of the mapped colour,
+    judged as the view is, in display codes (the verifier turns the output back into RGB
+    with OCIO's HSV_TO_RGB, in float64, and encodes it)."""
+    from generator.luts import hsv
+    from generator.luts.view import hsv_view_filename
+    from generator.ocio.emit import LUT_FOLDER
+
+    to_display = reference.normalised_display_matrix(spec, display)
+    finite = [f for f in families if f.name != probes.NON_FINITE]
+    values = [Family(f.name, _float32(hsv.ocio_rgb_to_hsv(f.values)), f.notes) for f in finite]
+    shared = Probes(tuple(values))
+    coordinates = Probes(tuple(Family(f.name, _float32(hsv.shared_coordinates(f.values)), f.notes)
+                               for f in values))
+    shared_name = f"{LUT_FOLDER}/{hsv.SHARED_FILE}"
+    fn = paths.view_function(spec, display, view)
+
+    light = hsv.ocio_hsv_to_rgb(hsv.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
+    expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
+    name = f"{LUT_FOLDER}/{hsv_view_filename(display)}"
+    return [Check(LUT, shared_name, src=view, lut=shared_name, probes=shared,
+                  expected=hsv.shared_coordinates(shared.values), output=paths.CODE),
+            Check(LUT, name, src=view, lut=name, probes=coordinates, expected=expected, output=paths.DISPLAY,
+                  encode=partial(_encode_hsv, display),
+                  allowance=hsv_file_allowance(display, view, light * display.clip_high, expected),
+                  **_judging(None, display, None, view))]
+
+
+def _float32(values: np.ndarray) -> np.ndarray:
+    return np.asarray(values, dtype=np.float32).astype(np.float64)
+
+
+def _encode_hsv(display: Display, values: np.ndarray) -> np.ndarray:
+    """An HSV view file's output (OCIO HSV of normalised display light) to the display's codes."""
+    from generator.luts.hsv import ocio_hsv_to_rgb
+
+    return _encode_light(display, ocio_hsv_to_rgb(values))
 
 
 def _encode_light(display: Display, light: np.ndarray) -> np.ndarray:

@@ -175,11 +175,16 @@ def view_method(view: str) -> str | None:
     return methods.get(view)
 
 
-def lut_range(display: Display) -> tuple[float, float] | None:
-    """Display-linear range (1.0 = 100 cd/m²) a baked view LUT covers; it clamps beyond."""
+def lut_range(display: Display, method: str | None = None) -> tuple[float, float] | None:
+    """Display-linear range (1.0 = 100 cd/m²) a baked view LUT covers per channel; it clamps
+    beyond. None for an HSV view, whose lattice clamps OCIO's HSV value instead (from -256
+    to 1024 times the peak, :mod:`generator.luts.hsv`)."""
     try:
         from generator.luts.lattice import DISPLAY_RANGE
+        from generator.luts.view import HSV_METHOD
     except ImportError:
+        return None
+    if method == HSV_METHOD:
         return None
     return (DISPLAY_RANGE[0] * display.clip_high, DISPLAY_RANGE[1] * display.clip_high)
 
@@ -198,7 +203,7 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
     if method is None or not hasattr(reference, "map_display_linear"):
         return None
     to_display = reference.scene_to_display_matrix(spec, display)
-    bounds = None if method in ANALYTIC_METHODS else lut_range(display)
+    bounds = None if method in ANALYTIC_METHODS else lut_range(display, method)
 
     def mapped(ref):
         linear = apply_matrix(to_display, ref)

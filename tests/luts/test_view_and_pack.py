@@ -40,12 +40,12 @@ def test_hdr_view_lut_ends_in_display_light_and_meets_the_targets(default_spec, 
     lattice's toe)."""
     display = next(d for d in default_spec.displays if d.eotf_name == eotf)
     view = bake_view_lut(default_spec, display, method)
-    undo = b'style="logToLin"' if method == "scale" else b'style="basicMirrorFwd"'
+    undo = b'style="logToLin"' if method == "scale" else b"<LUT3D"
     assert view.light and view.unit == "ΔE ITP" and undo in view.data
     assert view.figures["in_gamut"].maximum <= tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP
-    if method == "scale":
-        figures = {name: f for name, f in view.figures.items() if not (eotf == "HLG" and name == "dark")}
-        assert max(f.maximum for f in figures.values()) <= tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP
+    # OCIO's HLG builtin departs from BT.2100 near black (tolerances.HLG_BUILTIN_BLACK).
+    figures = {name: f for name, f in view.figures.items() if not (eotf == "HLG" and name == "dark")}
+    assert max(f.maximum for f in figures.values()) <= tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP
 
 
 def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):

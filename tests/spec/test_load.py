@@ -23,6 +23,19 @@ def test_default_spec_loads_every_library_space_and_display(default_spec):
     assert default_spec.reference.name == "ACES2065-1"
 
 
+def test_sdr_displays_offer_desaturate_by_default_and_hdr_displays_on_request(default_spec):
+    """The issue's default: clip and desaturate on every SDR display (with scale, rgc and raw);
+    HDR displays leave Desaturate's 1.5 MB file out unless their spec names it."""
+    for display in default_spec.displays:
+        assert ("Desaturate" in display.views) == (not display.is_hdr)
+        assert {"Colorimetric", "Scale", "RGC", "Raw"} <= set(display.views)
+    base = '[[display]]\nname = "Custom"\ngamut = "Rec.709"\n'
+    assert parse(base + 'eotf = "sRGB"').displays[0].views == load.DEFAULT_VIEWS
+    assert parse(base + 'eotf = "ST 2084"\npeak_luminance = 1000').displays[0].views == load.DEFAULT_HDR_VIEWS
+    assert "Desaturate" in parse('[[display]]\nname = "Rec.2100-PQ - Display"\n'
+                                 'views = ["Colorimetric", "Desaturate"]').displays[0].views
+
+
 @pytest.mark.parametrize("text, field, words", [
     ("colour_space = ['ACEScg']", "colour_space", "allowed: name"),
     ("colour_spaces = ['ACEScgg']", "colour_spaces[0]", "did you mean 'ACEScg'"),

@@ -98,6 +98,22 @@ def test_swapped_lut_files_are_named(config_copy):
     assert {"CanonLog2 CinemaGamut D55", "CanonLog3 CinemaGamut D55"} <= failing
 
 
+def test_swapped_desaturate_files_are_named(config_copy):
+    """The desaturate views' files (lattices in OCIO's HSV) of two displays swapped: their
+    luminance weights differ, and verify names both files and both views."""
+    def swap(path):
+        luts = path.parent / "luts"
+        first, second = (luts / "view_srgb_display_desaturate_hsv19.clf",
+                         luts / "view_gamma_2_6_dci_p3_display_desaturate_hsv19.clf")
+        a, b = first.read_bytes(), second.read_bytes()
+        first.write_bytes(b)
+        second.write_bytes(a)
+
+    failing = _newly_failing(config_copy, swap, (VIEW, LUT))
+    assert {"luts/view_srgb_display_desaturate_hsv19.clf", "luts/view_gamma_2_6_dci_p3_display_desaturate_hsv19.clf",
+            "sRGB - Display / Desaturate", "Gamma 2.6 DCI-P3 - Display / Desaturate"} <= failing
+
+
 def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
     missing = config_copy.parent / "luts" / "mi_log_to_linear.spi1d"
     assert _newly_failing(config_copy, lambda path: missing.unlink(), (TO_REFERENCE, LUT)) == {

@@ -1,0 +1,185 @@
+"""The desaturate view as a lattice in OCIO's HSV (generator.luts.hsv)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from generator import tolerances
+from generator.colorimetry import reference
+from generator.gamut.simple import desaturate
+from generator.luts import hsv
+from generator.luts.view import bake_view_lut, view_transform
+from generator.verify.allowance import _hsv_rounding_shift
+
+SDR = ("sRGB - Display", "Gamma 2.2 Rec.709 - Display", "Gamma 2.6 DCI-P3 - Display")
+
+
+def _display(spec, name):
+    return next(d for d in spec.displays if d.name == name)
+
+
+def _colours(count: int = 20000) -> np.ndarray:
+    """Display-linear colours of every kind: inside the cube, with negative channels, over
+    range, all negative, and within 1e-3 of OCIO HSV's cone (largest = -smallest)."""
+    rng = np.random.default_rng(7)
+    inside = rng.random((count, 3))
+    wide = rng.uniform(-2.0, 3.0, (count, 3))
+    bright = rng.random((count, 3)) * 10.0 ** rng.uniform(0, 3, (count, 1))
+    negative = -rng.random((count // 10, 3))
+    cone = rng.random((count, 3))
+    cone[:, 0] = -cone[:, 1] * (1.0 + rng.uniform(-1e-3, 1e-3, count))
+    return np.concatenate([inside, wide, bright, negative, cone])
+
+
+def _ocio_fixed(style, direction):
+    import PyOpenColorIO as ocio
+
+    transform = ocio.FixedFunctionTransform(style, direction=direction)
+    processor = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
+
+    def apply(values):
+        pixels = np.ascontiguousarray(values, dtype=np.float32)
+        processor.applyRGB(pixels)
+        return pixels.astype(np.float64)
+
+    return apply
+
+
+def test_ports_of_ocio_hsv_agree_with_ocio():
+    import PyOpenColorIO as ocio
+
+    colours = _colours(2000)
+    colours = colours[np.abs(colours.max(axis=-1) + colours.min(axis=-1)) > 0.05 * np.abs(colours).max(axis=-1)]
+    ours = hsv.ocio_rgb_to_hsv(colours.astype(np.float32).astype(np.float64))
+    theirs = _ocio_fixed(ocio.FIXED_FUNCTION_RGB_TO_HSV, ocio.TRANSFORM_DIR_FORWARD)(colours)
+    hue_difference = np.abs(ours[:, 0] - theirs[:, 0])
+    assert np.minimum(hue_difference, 1.0 - hue_difference).max() < 1e-6
+    assert np.allclose(ours[:, 1:], theirs[:, 1:], rtol=1e-5, atol=1e-6)
+    back = _ocio_fixed(ocio.FIXED_FUNCTION_RGB_TO_HSV, ocio.TRANSFORM_DIR_INVERSE)(theirs)
+    assert np.allclose(hsv.ocio_hsv_to_rgb(theirs.astype(np.float32).astype(np.float64)), back,
+                       rtol=1e-5, atol=1e-5 * np.abs(colours).max(axis=-1, keepdims=True))
+
+
+def _trilinear(cube: np.ndarray, coordinate: np.ndarray) -> np.ndarray:
+    n = cube.shape[0]
+    index = np.clip(coordinate, 0.0, 1.0) * (n - 1)
+    base = np.clip(np.floor(index).astype(int), 0, n - 2)
+    fraction = index - base
+    out = np.zeros(coordinate.shape)
+    for corner in np.ndindex(2, 2, 2):
+        weight = np.prod([fraction[:, k] if corner[k] else 1.0 - fraction[:, k] for k in range(3)], axis=0)
+        out += weight[:, None] * cube[base[:, 0] + corner[0], base[:, 1] + corner[1], base[:, 2] + corner[2]]
+    return out
+
+
+def _exact_coordinates(values: np.ndarray, weights: np.ndarray) -> np.ndarray:
+    """Lattice coordinates of OCIO HSV values in float64, the 1D tables' functions without their sampling."""
+    n = hsv.HSV_SIZE
+    u = np.where(values[:, 1] <= 1.0, values[:, 1], 1.0 / (2.0 - values[:, 1]))
+    nodes, coordinate = np.array(hsv.VALUE_NODES), np.linspace(0.0, 1.0, n)
+    split = hsv.POSITIVE_VALUE_NODES
+    value = np.where(values[:, 2] >= 0.0, np.interp(values[:, 2], nodes[:split], coordinate[:split]),
+                     np.interp(values[:, 2], nodes[split:], coordinate[split:]))
+    return np.stack([hsv.hue_to_kappa(values[:, 0], weights), np.interp(u, hsv.saturation_nodes(n), coordinate),
+                     value], axis=-1)
+
+
+@pytest.mark.parametrize("name", SDR)
+def test_the_lattice_is_exact(default_spec, name):
+    """Trilinear interpolation of the lattice, with its 1D tables' exact functions and the
+    file's final clamp of the value, is the desaturate method to float64 rounding, for
+    colours of every kind, up to 1e-3 from the cone, as far as the lattice reaches
+    (saturation within 1 / SATURATION_REACH of 2: 6e-5 from the cone)."""
+    display = _display(default_spec, name)
+    gamut = reference.display_gamut(display)
+    weights = gamut.luminance_weights / gamut.luminance_weights.sum()
+    lattice = hsv.hsv_lattice(display)
+    colours = _colours()
+    values = hsv.ocio_rgb_to_hsv(colours)
+    reached = 2.0 - values[:, 1] >= 1.0 / hsv.SATURATION_REACH
+    assert (~reached).sum() < 0.01 * len(colours)
+    colours, values = colours[reached], values[reached]
+    mapped = _trilinear(lattice.cube, _exact_coordinates(values, weights))
+    out = np.stack([hsv.kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
+    result = hsv.ocio_hsv_to_rgb(out)
+    scale = np.maximum(1.0, np.abs(colours).max(axis=-1, keepdims=True))
+    assert np.abs(result - desaturate(colours, gamut)).max() < 1e-9 * scale.max()
+    assert np.all(np.abs(result - desaturate(colours, gamut)) <= 1e-10 * scale * hsv.SATURATION_REACH)
+
+
+def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
+    table = hsv.shared_table()
+    half = np.arange(65536, dtype=np.uint16).view(np.float16).astype(np.float64)
+    at = {float(v): i for i, v in enumerate(half) if np.isfinite(v) and not np.signbit(v)}
+    n = hsv.HSV_SIZE
+    assert table[at[1.0], 1] == 0.5  # t = 2 - S = 1: saturation 1, the cube's surface
+    assert table[at[0.0], 2] == 0.0 and table[np.flatnonzero(half == 0.0)[-1], 2] == 0.0  # +0 and -0
+    assert table[at[1.0], 2] == hsv.VALUE_NODES.index(1.0) / (n - 1)
+    assert np.array_equal(table[[at[0.25], at[0.5]], 0], np.array([0.25, 0.5]) / hsv.SHARED_SCALE)
+    # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at the smallest normal half.
+    assert table[at[2.0**-14], 1] == 1.0 and table[at[0.5], 1] == pytest.approx(
+        np.interp(2.0, hsv.saturation_nodes(n), np.linspace(0, 1, n)), abs=1e-15)
+
+
+@pytest.mark.parametrize("name", SDR)
+def test_view_through_ocio_meets_the_exact_target_on_every_probe_set(default_spec, name):
+    view = bake_view_lut(default_spec, _display(default_spec, name), "desaturate")
+    assert view.hsv and view.light and view.unit == "10-bit codes"
+    assert view.figures["in_gamut"].maximum <= tolerances.LUT_CLF_IN_GAMUT_CODES
+    assert view.bound <= tolerances.LUT_CLF_EXACT_CODES
+
+
+def _view_apply(spec, display, tmp_path, matrix=None):
+    import PyOpenColorIO as ocio
+
+    from generator.luts import probes
+
+    view = bake_view_lut(spec, display, "desaturate")
+    (tmp_path / view.filename).write_bytes(view.data)
+    (tmp_path / hsv.SHARED_FILE).write_bytes(hsv.shared_clf())
+    transform = view_transform(view.matrix if matrix is None else matrix, str(tmp_path / view.filename),
+                               hsv_folder=str(tmp_path))
+    ocio.ClearAllCaches()
+    return probes.ocio_apply(transform)
+
+
+def test_a_zero_channel_stays_exactly_zero(default_spec, tmp_path):
+    """Colours on the cube's faces (a zero channel, given as display-linear RGB) land on the
+    lattice's S = 1 node plane in float32: the channel comes back 0, not a rounding above
+    it, which a 2.2 power would show as half a code."""
+    display = _display(default_spec, "Gamma 2.2 Rec.709 - Display")
+    rng = np.random.default_rng(3)
+    linear = rng.random((500, 3))
+    linear[np.arange(500), rng.integers(0, 3, 500)] = 0.0
+    out = _view_apply(default_spec, display, tmp_path, np.eye(3))(linear)
+    assert np.array_equal(out == 0.0, linear == 0.0)
+    assert np.abs(out - linear).max() < 1e-5
+
+
+def test_near_the_cone_the_view_keeps_ocio_hsv_precision(default_spec, tmp_path):
+    """An ACEScct green ramp near black crosses OCIO HSV's cone: V is the small difference
+    of two equal magnitudes, and a small negative V's coordinate sits near 1 in float32. The
+    view returns what the exact method gives for OCIO's own HSV of the colour (its matrix
+    and RGB_TO_HSV in float32) within the float32 resolution of those HSV values through
+    the view, which verify allows, and within 1e-4 of the ramp's brightest output (the old
+    layout, one cell from V = -1/16 to -0, was 6e-3 off)."""
+    import PyOpenColorIO as ocio
+
+    from generator.luts.view import lut_steps
+
+    display = _display(default_spec, "sRGB - Display")
+    cct = np.array([[0.0, g, 0.0] for g in np.linspace(0.14, 0.24, 401)])
+    ref = reference.to_reference(default_spec, default_spec.space("ACEScct"), cct)
+    matrix = reference.normalised_display_matrix(default_spec, display)
+    steps = lut_steps(matrix, "unused.clf", "")[:2]
+    processor = ocio.Config.CreateRaw().getProcessor(ocio.GroupTransform(steps)).getDefaultCPUProcessor()
+    values = np.ascontiguousarray(ref, dtype=np.float32)
+    processor.applyRGB(values)
+    values = values.astype(np.float64)
+    assert (values[:, 2] < 0).any() and (values[:, 1] > 1.999).any()  # the ramp crosses the cone
+    expected = desaturate(hsv.ocio_hsv_to_rgb(values, max_saturation=2.0), reference.display_gamut(display))
+    out = _view_apply(default_spec, display, tmp_path)(ref)
+    linear = hsv.ocio_hsv_to_rgb(values, max_saturation=2.0) * display.clip_high
+    assert np.all(np.abs(out - expected) <= _hsv_rounding_shift(display, linear) / display.clip_high)
+    assert np.abs(out - expected).max() <= 1e-4 * expected.max()
