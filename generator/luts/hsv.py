@@ -51,6 +51,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from generator import tolerances
 from generator.colorimetry import reference
 from generator.spec.schema import Display
 
@@ -119,15 +120,6 @@ HSV_TABLE_DECIMALS = 9
 
 #: Saturation OCIO's HSV_TO_RGB clamps to (2 would be a pole).
 OCIO_MAX_SATURATION = 1.999
-
-#: Float32 roundings an HSV coordinate meets through the view (OCIO's RGB_TO_HSV, the
-#: shared file's matrix and table, the display file's matrix, tables and lattice, and
-#: HSV_TO_RGB), each at most half a unit in the last place of the value.
-FLOAT32_HSV_ROUNDINGS = 8
-
-#: Float32 roundings of a lattice coordinate: the shared table's output, the display
-#: file's table (its index and its interpolation) and the lattice's index.
-FLOAT32_COORDINATE_ROUNDINGS = 4
 
 #: OCIO's FixedFunction styles the view runs around the file.
 FORWARD, INVERSE = "RGB_TO_HSV", "HSV_TO_RGB"
@@ -270,28 +262,24 @@ def _cell_width(nodes: np.ndarray, x: np.ndarray) -> np.ndarray:
 def float32_resolution(values: np.ndarray, size: int = HSV_SIZE) -> np.ndarray:
     """How far float32 leaves each of OCIO HSV ``values`` (n, 3) uncertain on the way through
     the view, absolute: the hue, a value in [0, 1] rounded by each of the
-    :data:`FLOAT32_HSV_ROUNDINGS` operators it passes; saturation and value, by OCIO's
-    RGB_TO_HSV (a few units of the largest channel) and by their lattice coordinates, which
-    float32 resolves to 6e-8 relative at each of :data:`FLOAT32_COORDINATE_ROUNDINGS`
-    steps, times the width of their cell per unit of coordinate."""
-    from generator import tolerances
-
+    FLOAT32_HSV_ROUNDINGS operators it passes (:mod:`generator.tolerances`); saturation and
+    value, by OCIO's RGB_TO_HSV (a few units of the largest channel) and by their lattice
+    coordinates, which float32 resolves to 6e-8 relative at each of
+    FLOAT32_COORDINATE_ROUNDINGS steps, times the width of their cell per unit of coordinate."""
     values = np.asarray(values, dtype=np.float64)
     u32, n = tolerances.FLOAT32_UNIT_ROUNDOFF, size - 1
+    operators, steps = tolerances.FLOAT32_HSV_ROUNDINGS * u32, tolerances.FLOAT32_COORDINATE_ROUNDINGS * u32
     saturation, value = values[:, 1], values[:, 2]
     with np.errstate(divide="ignore"):
         u = np.where(saturation <= 1.0, saturation, 1.0 / np.maximum(2.0 - saturation, 1.0 / SATURATION_REACH))
     coordinate = np.interp(u, saturation_nodes(size), np.linspace(0.0, 1.0, size))
-    du = FLOAT32_COORDINATE_ROUNDINGS * u32 * coordinate * n * _cell_width(saturation_nodes(size), u)
-    ds = FLOAT32_HSV_ROUNDINGS * u32 * np.maximum(saturation, 1.0) + np.where(u > 1.0, du / np.maximum(u, 1.0) ** 2, du)
+    du = steps * coordinate * n * _cell_width(saturation_nodes(size), u)
+    ds = operators * np.maximum(saturation, 1.0) + np.where(u > 1.0, du / np.maximum(u, 1.0) ** 2, du)
     nodes = np.array(VALUE_NODES)
-    positive = nodes[:POSITIVE_VALUE_NODES]
-    negative = -nodes[POSITIVE_VALUE_NODES:][::-1]
+    positive, negative = nodes[:POSITIVE_VALUE_NODES], -nodes[POSITIVE_VALUE_NODES:][::-1]
     cell = np.where(value >= 0.0, _cell_width(positive, np.abs(value)), _cell_width(negative, np.abs(value)))
-    dv = (FLOAT32_HSV_ROUNDINGS * u32 * np.abs(value)
-          + FLOAT32_COORDINATE_ROUNDINGS * u32 * shared_coordinates(values, size)[:, 2] * n * cell)
-    dh = np.full(len(values), FLOAT32_HSV_ROUNDINGS * u32)
-    return np.stack([dh, ds, dv], axis=-1)
+    dv = operators * np.abs(value) + steps * shared_coordinates(values, size)[:, 2] * n * cell
+    return np.stack([np.full(len(values), operators), ds, dv], axis=-1)
 
 
 @dataclass(frozen=True)
