@@ -106,9 +106,9 @@ DISCONTINUITY_BAND = 2.0 / 1023.0
 #: curve steep near zero (a pure power) turns it into a visible code difference.
 FLOAT32_MATRIX_ROUNDINGS = 3.0
 
-#: Float32 roundings an HSV coordinate meets through the desaturate view (generator.luts.hsv) (OCIO's RGB_TO_HSV, the
-#: shared file's matrix and table, the display file's matrix, tables and lattice, and
-#: HSV_TO_RGB), each at most half a unit in the last place of the value.
+#: Float32 roundings an HSV coordinate meets through the desaturate view (generator.luts.hsv:
+#: OCIO's RGB_TO_HSV, the shared file's matrix and table, the display file's matrix, tables
+#: and lattice, and HSV_TO_RGB), each at most half a unit in the last place of the value.
 FLOAT32_HSV_ROUNDINGS = 8
 
 #: Float32 roundings of a lattice coordinate: the shared table's output, the display

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from generator.luts import formats, hsv, lattice, probes
+from generator.luts import formats, hsv, hsv_axes, lattice, probes
 from generator.luts.axes import LOG_METHODS
 from generator.luts.curve1d import slug
 from generator.spec.schema import Display, Spec
@@ -162,7 +162,7 @@ def _gamut_source(spec: Spec):
 
 
 def hsv_view_filename(display: Display) -> str:
-    return f"view_{slug(display.name)}_{HSV_METHOD}_hsv{hsv.HSV_SIZE}.clf"
+    return f"view_{slug(display.name)}_{HSV_METHOD}_hsv{hsv_axes.HSV_SIZE}.clf"
 
 
 def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:

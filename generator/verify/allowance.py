@@ -99,11 +99,11 @@ def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.n
 def _hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
     """How far the desaturate view's output may move, per channel, when each of the OCIO
     HSV values of display-linear ``linear`` moves by its float32 resolution through the view
-    (:func:`generator.luts.hsv.float32_resolution`), either way, summed over the three
+    (:func:`generator.luts.hsv_axes.float32_resolution`), either way, summed over the three
     (to first order a bound): the mapping's own sensitivity, which is large where a colour
     of luminance near 0 maps near black."""
     from generator.gamut.simple import desaturate
-    from generator.luts import hsv
+    from generator.luts import hsv_axes as hsv
 
     gamut, peak = reference.display_gamut(display), display.clip_high
     with np.errstate(all="ignore"):

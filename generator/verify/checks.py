@@ -327,24 +327,24 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
     display's file from those coordinates (in float32) to the HSV of the mapped colour,
     judged as the view is, in display codes (the verifier turns the output back into RGB
     with OCIO's HSV_TO_RGB, in float64, and encodes it)."""
-    from generator.luts import hsv
+    from generator.luts import hsv, hsv_axes
     from generator.luts.view import hsv_view_filename
     from generator.ocio.emit import LUT_FOLDER
 
     to_display = reference.normalised_display_matrix(spec, display)
     finite = [f for f in families if f.name != probes.NON_FINITE]
-    values = [Family(f.name, _float32(hsv.ocio_rgb_to_hsv(f.values)), f.notes) for f in finite]
+    values = [Family(f.name, _float32(hsv_axes.ocio_rgb_to_hsv(f.values)), f.notes) for f in finite]
     shared = Probes(tuple(values))
-    coordinates = Probes(tuple(Family(f.name, _float32(hsv.shared_coordinates(f.values)), f.notes)
+    coordinates = Probes(tuple(Family(f.name, _float32(hsv_axes.shared_coordinates(f.values)), f.notes)
                                for f in values))
     shared_name = f"{LUT_FOLDER}/{hsv.SHARED_FILE}"
     fn = paths.view_function(spec, display, view)
 
-    light = hsv.ocio_hsv_to_rgb(hsv.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
+    light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
     expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
     name = f"{LUT_FOLDER}/{hsv_view_filename(display)}"
     return [Check(LUT, shared_name, src=view, lut=shared_name, probes=shared,
-                  expected=hsv.shared_coordinates(shared.values), output=paths.CODE),
+                  expected=hsv_axes.shared_coordinates(shared.values), output=paths.CODE),
             Check(LUT, name, src=view, lut=name, probes=coordinates, expected=expected, output=paths.DISPLAY,
                   encode=partial(_encode_hsv, display),
                   allowance=hsv_file_allowance(display, view, light * display.clip_high, expected),
@@ -357,7 +357,7 @@ def _float32(values: np.ndarray) -> np.ndarray:
 
 def _encode_hsv(display: Display, values: np.ndarray) -> np.ndarray:
     """An HSV view file's output (OCIO HSV of normalised display light) to the display's codes."""
-    from generator.luts.hsv import ocio_hsv_to_rgb
+    from generator.luts.hsv_axes import ocio_hsv_to_rgb
 
     return _encode_light(display, ocio_hsv_to_rgb(values))
 

@@ -8,8 +8,9 @@ import pytest
 from generator import tolerances
 from generator.colorimetry import reference
 from generator.gamut.simple import desaturate
-from generator.luts import hsv
+from generator.luts import hsv, hsv_axes
 from generator.luts.view import bake_view_lut, view_transform
+from tests.luts import hsv_cases
 from generator.verify.allowance import _hsv_rounding_shift
 
 SDR = ("sRGB - Display", "Gamma 2.2 Rec.709 - Display", "Gamma 2.6 DCI-P3 - Display")
@@ -17,48 +18,6 @@ SDR = ("sRGB - Display", "Gamma 2.2 Rec.709 - Display", "Gamma 2.6 DCI-P3 - Disp
 
 def _display(spec, name):
     return next(d for d in spec.displays if d.name == name)
-
-
-def _colours(count: int = 20000) -> np.ndarray:
-    """Display-linear colours of every kind: inside the cube, with negative channels, over
-    range, all negative, and within 1e-3 of OCIO HSV's cone (largest = -smallest)."""
-    rng = np.random.default_rng(7)
-    inside = rng.random((count, 3))
-    wide = rng.uniform(-2.0, 3.0, (count, 3))
-    bright = rng.random((count, 3)) * 10.0 ** rng.uniform(0, 3, (count, 1))
-    negative = -rng.random((count // 10, 3))
-    cone = rng.random((count, 3))
-    cone[:, 0] = -cone[:, 1] * (1.0 + rng.uniform(-1e-3, 1e-3, count))
-    return np.concatenate([inside, wide, bright, negative, cone])
-
-
-def _ocio_fixed(style, direction):
-    import PyOpenColorIO as ocio
-
-    transform = ocio.FixedFunctionTransform(style, direction=direction)
-    processor = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
-
-    def apply(values):
-        pixels = np.ascontiguousarray(values, dtype=np.float32)
-        processor.applyRGB(pixels)
-        return pixels.astype(np.float64)
-
-    return apply
-
-
-def test_ports_of_ocio_hsv_agree_with_ocio():
-    import PyOpenColorIO as ocio
-
-    colours = _colours(2000)
-    colours = colours[np.abs(colours.max(axis=-1) + colours.min(axis=-1)) > 0.05 * np.abs(colours).max(axis=-1)]
-    ours = hsv.ocio_rgb_to_hsv(colours.astype(np.float32).astype(np.float64))
-    theirs = _ocio_fixed(ocio.FIXED_FUNCTION_RGB_TO_HSV, ocio.TRANSFORM_DIR_FORWARD)(colours)
-    hue_difference = np.abs(ours[:, 0] - theirs[:, 0])
-    assert np.minimum(hue_difference, 1.0 - hue_difference).max() < 1e-6
-    assert np.allclose(ours[:, 1:], theirs[:, 1:], rtol=1e-5, atol=1e-6)
-    back = _ocio_fixed(ocio.FIXED_FUNCTION_RGB_TO_HSV, ocio.TRANSFORM_DIR_INVERSE)(theirs)
-    assert np.allclose(hsv.ocio_hsv_to_rgb(theirs.astype(np.float32).astype(np.float64)), back,
-                       rtol=1e-5, atol=1e-5 * np.abs(colours).max(axis=-1, keepdims=True))
 
 
 def _trilinear(cube: np.ndarray, coordinate: np.ndarray) -> np.ndarray:
@@ -75,13 +34,13 @@ def _trilinear(cube: np.ndarray, coordinate: np.ndarray) -> np.ndarray:
 
 def _exact_coordinates(values: np.ndarray, weights: np.ndarray) -> np.ndarray:
     """Lattice coordinates of OCIO HSV values in float64, the 1D tables' functions without their sampling."""
-    n = hsv.HSV_SIZE
+    n = hsv_axes.HSV_SIZE
     u = np.where(values[:, 1] <= 1.0, values[:, 1], 1.0 / (2.0 - values[:, 1]))
-    nodes, coordinate = np.array(hsv.VALUE_NODES), np.linspace(0.0, 1.0, n)
-    split = hsv.POSITIVE_VALUE_NODES
+    nodes, coordinate = np.array(hsv_axes.VALUE_NODES), np.linspace(0.0, 1.0, n)
+    split = hsv_axes.POSITIVE_VALUE_NODES
     value = np.where(values[:, 2] >= 0.0, np.interp(values[:, 2], nodes[:split], coordinate[:split]),
                      np.interp(values[:, 2], nodes[split:], coordinate[split:]))
-    return np.stack([hsv.hue_to_kappa(values[:, 0], weights), np.interp(u, hsv.saturation_nodes(n), coordinate),
+    return np.stack([hsv_axes.hue_to_kappa(values[:, 0], weights), np.interp(u, hsv_axes.saturation_nodes(n), coordinate),
                      value], axis=-1)
 
 
@@ -95,31 +54,17 @@ def test_the_lattice_is_exact(default_spec, name):
     gamut = reference.display_gamut(display)
     weights = gamut.luminance_weights / gamut.luminance_weights.sum()
     lattice = hsv.hsv_lattice(display)
-    colours = _colours()
-    values = hsv.ocio_rgb_to_hsv(colours)
-    reached = 2.0 - values[:, 1] >= 1.0 / hsv.SATURATION_REACH
+    colours = hsv_cases.colours()
+    values = hsv_axes.ocio_rgb_to_hsv(colours)
+    reached = 2.0 - values[:, 1] >= 1.0 / hsv_axes.SATURATION_REACH
     assert (~reached).sum() < 0.01 * len(colours)
     colours, values = colours[reached], values[reached]
     mapped = _trilinear(lattice.cube, _exact_coordinates(values, weights))
-    out = np.stack([hsv.kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
-    result = hsv.ocio_hsv_to_rgb(out)
+    out = np.stack([hsv_axes.kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
+    result = hsv_axes.ocio_hsv_to_rgb(out)
     scale = np.maximum(1.0, np.abs(colours).max(axis=-1, keepdims=True))
     assert np.abs(result - desaturate(colours, gamut)).max() < 1e-9 * scale.max()
-    assert np.all(np.abs(result - desaturate(colours, gamut)) <= 1e-10 * scale * hsv.SATURATION_REACH)
-
-
-def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
-    table = hsv.shared_table()
-    half = np.arange(65536, dtype=np.uint16).view(np.float16).astype(np.float64)
-    at = {float(v): i for i, v in enumerate(half) if np.isfinite(v) and not np.signbit(v)}
-    n = hsv.HSV_SIZE
-    assert table[at[1.0], 1] == 0.5  # t = 2 - S = 1: saturation 1, the cube's surface
-    assert table[at[0.0], 2] == 0.0 and table[np.flatnonzero(half == 0.0)[-1], 2] == 0.0  # +0 and -0
-    assert table[at[1.0], 2] == hsv.VALUE_NODES.index(1.0) / (n - 1)
-    assert np.array_equal(table[[at[0.25], at[0.5]], 0], np.array([0.25, 0.5]) / hsv.SHARED_SCALE)
-    # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at the smallest normal half.
-    assert table[at[2.0**-14], 1] == 1.0 and table[at[0.5], 1] == pytest.approx(
-        np.interp(2.0, hsv.saturation_nodes(n), np.linspace(0, 1, n)), abs=1e-15)
+    assert np.all(np.abs(result - desaturate(colours, gamut)) <= 1e-10 * scale * hsv_axes.SATURATION_REACH)
 
 
 @pytest.mark.parametrize("name", SDR)
@@ -178,8 +123,8 @@ def test_near_the_cone_the_view_keeps_ocio_hsv_precision(default_spec, tmp_path)
     processor.applyRGB(values)
     values = values.astype(np.float64)
     assert (values[:, 2] < 0).any() and (values[:, 1] > 1.999).any()  # the ramp crosses the cone
-    expected = desaturate(hsv.ocio_hsv_to_rgb(values, max_saturation=2.0), reference.display_gamut(display))
+    expected = desaturate(hsv_axes.ocio_hsv_to_rgb(values, max_saturation=2.0), reference.display_gamut(display))
     out = _view_apply(default_spec, display, tmp_path)(ref)
-    linear = hsv.ocio_hsv_to_rgb(values, max_saturation=2.0) * display.clip_high
+    linear = hsv_axes.ocio_hsv_to_rgb(values, max_saturation=2.0) * display.clip_high
     assert np.all(np.abs(out - expected) <= _hsv_rounding_shift(display, linear) / display.clip_high)
     assert np.abs(out - expected).max() <= 1e-4 * expected.max()

@@ -25,7 +25,7 @@ def test_default_spec_loads_every_library_space_and_display(default_spec):
 
 def test_sdr_displays_offer_desaturate_by_default_and_hdr_displays_on_request(default_spec):
     """The issue's default: clip and desaturate on every SDR display (with scale, rgc and raw);
-    HDR displays leave Desaturate's 1.5 MB file out unless their spec names it."""
+    HDR displays leave Desaturate's 1 MB file out unless their spec names it."""
     for display in default_spec.displays:
         assert ("Desaturate" in display.views) == (not display.is_hdr)
         assert {"Colorimetric", "Scale", "RGC", "Raw"} <= set(display.views)

@@ -1,0 +1,38 @@
+"""OCIO's HSV in numpy and the desaturate view's lattice coordinates (generator.luts.hsv_axes)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from generator.luts import hsv_axes
+from tests.luts import hsv_cases
+
+
+def test_ports_of_ocio_hsv_agree_with_ocio():
+    import PyOpenColorIO as ocio
+
+    colours = hsv_cases.colours(2000)
+    colours = colours[np.abs(colours.max(axis=-1) + colours.min(axis=-1)) > 0.05 * np.abs(colours).max(axis=-1)]
+    ours = hsv_axes.ocio_rgb_to_hsv(colours.astype(np.float32).astype(np.float64))
+    theirs = hsv_cases.ocio_fixed(ocio.FIXED_FUNCTION_RGB_TO_HSV, ocio.TRANSFORM_DIR_FORWARD)(colours)
+    hue_difference = np.abs(ours[:, 0] - theirs[:, 0])
+    assert np.minimum(hue_difference, 1.0 - hue_difference).max() < 1e-6
+    assert np.allclose(ours[:, 1:], theirs[:, 1:], rtol=1e-5, atol=1e-6)
+    back = hsv_cases.ocio_fixed(ocio.FIXED_FUNCTION_RGB_TO_HSV, ocio.TRANSFORM_DIR_INVERSE)(theirs)
+    assert np.allclose(hsv_axes.ocio_hsv_to_rgb(theirs.astype(np.float32).astype(np.float64)), back,
+                       rtol=1e-5, atol=1e-5 * np.abs(colours).max(axis=-1, keepdims=True))
+
+
+def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
+    table = hsv_axes.shared_table()
+    half = np.arange(65536, dtype=np.uint16).view(np.float16).astype(np.float64)
+    at = {float(v): i for i, v in enumerate(half) if np.isfinite(v) and not np.signbit(v)}
+    n = hsv_axes.HSV_SIZE
+    assert table[at[1.0], 1] == 0.5  # t = 2 - S = 1: saturation 1, the cube's surface
+    assert table[at[0.0], 2] == 0.0 and table[np.flatnonzero(half == 0.0)[-1], 2] == 0.0  # +0 and -0
+    assert table[at[1.0], 2] == hsv_axes.VALUE_NODES.index(1.0) / (n - 1)
+    assert np.array_equal(table[[at[0.25], at[0.5]], 0], np.array([0.25, 0.5]) / hsv_axes.SHARED_SCALE)
+    # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at the smallest normal half.
+    assert table[at[2.0**-14], 1] == 1.0 and table[at[0.5], 1] == pytest.approx(
+        np.interp(2.0, hsv_axes.saturation_nodes(n), np.linspace(0, 1, n)), abs=1e-15)
