@@ -79,7 +79,7 @@ def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.n
     the mixed colour per unit luminance, ``(c - m) / (Y - m)`` for a colour whose smallest
     channel ``m`` is negative (a colour of luminance near 0 maps near black, up to
     1 / (smallest luminance weight) times its luminance's rounding), plus the float32
-    resolution of its HSV values through the view (:func:`_hsv_rounding_shift`); 0 for the
+    resolution of its HSV values through the view (:func:`hsv_rounding_shift`); 0 for the
     others."""
     method = paths.view_method(view)
     if method == "rgc":
@@ -93,10 +93,10 @@ def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.n
     low = np.minimum(linear.min(axis=-1), 0.0)
     with np.errstate(all="ignore"):
         per_luminance = np.where(low[..., None] < 0.0, (linear - low[..., None]) / (luminance - low)[..., None], 0.0)
-    return np.nan_to_num(per_luminance) * (shift @ weights)[..., None] + _hsv_rounding_shift(display, linear)
+    return np.nan_to_num(per_luminance) * (shift @ weights)[..., None] + hsv_rounding_shift(display, linear)
 
 
-def _hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
+def hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
     """How far the desaturate view's output may move, per channel, when each of the OCIO
     HSV values of display-linear ``linear`` moves by its float32 resolution through the view
     (:func:`generator.luts.hsv_axes.float32_resolution`), either way, summed over the three

@@ -11,7 +11,7 @@ from generator.gamut.simple import desaturate
 from generator.luts import hsv, hsv_axes
 from generator.luts.view import bake_view_lut, view_transform
 from tests.luts import hsv_cases
-from generator.verify.allowance import _hsv_rounding_shift
+from generator.verify.allowance import hsv_rounding_shift
 
 SDR = ("sRGB - Display", "Gamma 2.2 Rec.709 - Display", "Gamma 2.6 DCI-P3 - Display")
 
@@ -126,5 +126,5 @@ def test_near_the_cone_the_view_keeps_ocio_hsv_precision(default_spec, tmp_path)
     expected = desaturate(hsv_axes.ocio_hsv_to_rgb(values, max_saturation=2.0), reference.display_gamut(display))
     out = _view_apply(default_spec, display, tmp_path)(ref)
     linear = hsv_axes.ocio_hsv_to_rgb(values, max_saturation=2.0) * display.clip_high
-    assert np.all(np.abs(out - expected) <= _hsv_rounding_shift(display, linear) / display.clip_high)
+    assert np.all(np.abs(out - expected) <= hsv_rounding_shift(display, linear) / display.clip_high)
     assert np.abs(out - expected).max() <= 1e-4 * expected.max()
