@@ -46,12 +46,16 @@ def test_conjugate_gradient_solves_each_system_to_its_own_tolerance():
     assert np.array_equal(solved[1], start[1])
 
 
-def test_fit_is_the_regularised_least_squares_solution_with_kept_nodes():
+def test_fit_is_the_regularised_least_squares_solution_with_kept_nodes(monkeypatch):
+    """Solved to a tight tolerance, the fit is the exact solution (to the written decimals);
+    at FIT_RTOL, the normal equations' residual is within the documented stopping rule."""
     size, rng = 4, np.random.default_rng(RNG_SEED)
     cube = rng.random((size, size, size, 3))
     lat = lattice.Lattice(None, None, "clip", None, None, None, (0.0, 1.0), None, cube)
     colours = {name: (rng.random((150, 3)), rng.random((150, 3))) for name in ("in_gamut", "out_of_gamut")}
     colour_weights = {name: rng.uniform(0.3, 4.0, 150) for name in colours}
+    loose, rtol = fitting.fit(lat, colours, 0, colour_weights).reshape(-1, 3), fitting.FIT_RTOL
+    monkeypatch.setattr(fitting, "FIT_RTOL", 1e-12)
     fitted = fitting.fit(lat, colours, 0, colour_weights).reshape(-1, 3)
     matrix, expected = [], []
     for name, (code, codes) in colours.items():
@@ -70,6 +74,11 @@ def test_fit_is_the_regularised_least_squares_solution_with_kept_nodes():
     assert np.array_equal(fitted[kept], numbers.rounded(start[kept], lattice.CUBE_DECIMALS))
     step = 10.0**-lattice.CUBE_DECIMALS  # rounding as written, and the solver's stopping point within it
     assert np.abs(fitted - exact).max() <= step
+    residual = normal @ loose[~kept] - right  # the written values: rounding adds up to half a step per node
+    rounding = np.abs(normal).sum(axis=1)[:, None] * step / 2
+    allowed = rtol * np.linalg.norm(right, axis=0) + np.linalg.norm(rounding, axis=0)
+    assert np.all(np.linalg.norm(residual, axis=0) <= allowed)
+    assert np.abs(loose - exact).max() > step  # the loose stop is not the exact solution here
 
 
 def _reference_text(value: float, decimals: int) -> str:
