@@ -19,7 +19,9 @@ Per probe set it prints max/p99 for every bake, then two ratios of p99,
 theirs over ours (above 1: ours is better): against ociobakelut's best bake
 (the one whose p99 over all four sets pooled is lowest) and against the best
 of all its bakes for that set alone; "overall" is the pooled p99. The other
-gamut mappings are measured for ocioforge alone (CLF).
+gamut mappings are measured for ocioforge alone (CLF), then every display's
+config views as the config runs them, and the Desaturate views' lattices with
+trilinear weights rounded as a GPU's texture filtering rounds them (simulated).
 
 Run: .venv/bin/python bench/lut_accuracy.py [--size 33]
 """
@@ -164,6 +166,38 @@ def config_views(spec) -> None:
             print(f"  {display.name[:24]:24s} {method:11s} {_fmt(figures)}")
 
 
+#: Bits of the interpolation weights a GPU's texture filtering commonly keeps (OCIO's GPU
+#: renderer lets the hardware interpolate trilinear 3D LUTs).
+GPU_WEIGHT_BITS = 8
+
+
+def gpu_desaturate(spec) -> None:
+    """The Desaturate views' lattices interpolated with GPU_WEIGHT_BITS-bit weights, as a GPU's
+    texture filtering does, against the reference (the 1D tables' exact functions, float64)."""
+    from generator.colorimetry import reference
+    from generator.luts import hsv, hsv_axes, probes
+
+    print(f"\n== Desaturate views, trilinear weights rounded to {GPU_WEIGHT_BITS} bits (a GPU's texture "
+          "filtering, simulated), ten-bit codes max/p99")
+    for display in (d for d in spec.displays if "Desaturate" in d.views):
+        gamut = reference.display_gamut(display)
+        weights = gamut.luminance_weights / gamut.luminance_weights.sum()
+        cube, to_display = hsv.hsv_lattice(display).cube, reference.scene_to_display_matrix(spec, display)
+        figures = {}
+        for name, ref in probes.probes(spec, spec.space("ACEScg"), display).items():
+            values = hsv_axes.ocio_rgb_to_hsv(reference.apply_matrix(to_display, ref) / display.clip_high)
+            coordinate = hsv_axes.shared_coordinates(values)
+            coordinate[:, 0] = hsv_axes.hue_to_kappa(values[:, 0], weights)
+            mapped = hsv.trilinear(cube, coordinate, GPU_WEIGHT_BITS)
+            out = np.stack([hsv_axes.kappa_to_hue(mapped[:, 0], weights), mapped[:, 1],
+                            np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
+            light = np.clip(hsv_axes.ocio_hsv_to_rgb(out), 0.0, 1.0) * display.clip_high
+            error = probes.errors(display, reference.display_encode(display, light),
+                                  reference.mapped_view(spec, display, "desaturate", ref))[0]
+            figures[name] = (float(error.max()), float(np.percentile(error, 99)))
+        print(f"  {display.name[:24]:24s} {_fmt(figures)}")
+
+
 def main(argv=None) -> None:
     from generator.spec import load
 
@@ -182,6 +216,7 @@ def main(argv=None) -> None:
             print(f"\n== ACEScg -> {display}, {args.size}^3, ocioforge CLF only")
             methods(spec, "ACEScg", display, args.size, folder)
     config_views(spec)
+    gpu_desaturate(spec)
 
 
 if __name__ == "__main__":

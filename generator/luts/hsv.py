@@ -84,6 +84,23 @@ def hsv_lattice(display: Display, size: int = HSV_SIZE) -> HsvLattice:
     return HsvLattice(display, pre, cube, post)
 
 
+def trilinear(cube: np.ndarray, coordinate: np.ndarray, weight_bits: int | None = None) -> np.ndarray:
+    """The lattice ``cube`` (n, n, n, 3) interpolated trilinearly in float64 at lattice
+    ``coordinate`` (m, 3) in [0, 1], as the file's LUT3D is; with ``weight_bits``, each
+    weight rounded to that many bits, as a GPU's texture filtering rounds them."""
+    n = cube.shape[0]
+    index = np.clip(coordinate, 0.0, 1.0) * (n - 1)
+    base = np.clip(np.floor(index).astype(int), 0, n - 2)
+    fraction = index - base
+    if weight_bits:
+        fraction = np.round(fraction * 2**weight_bits) / 2**weight_bits
+    out = np.zeros(coordinate.shape)
+    for corner in np.ndindex(2, 2, 2):
+        weight = np.prod([fraction[:, k] if corner[k] else 1.0 - fraction[:, k] for k in range(3)], axis=0)
+        out += weight[:, None] * cube[base[:, 0] + corner[0], base[:, 1] + corner[1], base[:, 2] + corner[2]]
+    return out
+
+
 def _rows(values: np.ndarray, digits: int) -> str:
     return "".join(" ".join(f"{v:.{digits}g}" for v in row) + "\n" for row in values.tolist())
 

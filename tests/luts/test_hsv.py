@@ -20,18 +20,6 @@ def _display(spec, name):
     return next(d for d in spec.displays if d.name == name)
 
 
-def _trilinear(cube: np.ndarray, coordinate: np.ndarray) -> np.ndarray:
-    n = cube.shape[0]
-    index = np.clip(coordinate, 0.0, 1.0) * (n - 1)
-    base = np.clip(np.floor(index).astype(int), 0, n - 2)
-    fraction = index - base
-    out = np.zeros(coordinate.shape)
-    for corner in np.ndindex(2, 2, 2):
-        weight = np.prod([fraction[:, k] if corner[k] else 1.0 - fraction[:, k] for k in range(3)], axis=0)
-        out += weight[:, None] * cube[base[:, 0] + corner[0], base[:, 1] + corner[1], base[:, 2] + corner[2]]
-    return out
-
-
 def _exact_coordinates(values: np.ndarray, weights: np.ndarray) -> np.ndarray:
     """Lattice coordinates of OCIO HSV values in float64, the 1D tables' functions without their sampling."""
     n = hsv_axes.HSV_SIZE
@@ -59,7 +47,7 @@ def test_the_lattice_is_exact(default_spec, name):
     reached = 2.0 - values[:, 1] >= 1.0 / hsv_axes.SATURATION_REACH
     assert (~reached).sum() < 0.01 * len(colours)
     colours, values = colours[reached], values[reached]
-    mapped = _trilinear(lattice.cube, _exact_coordinates(values, weights))
+    mapped = hsv.trilinear(lattice.cube, _exact_coordinates(values, weights))
     out = np.stack([hsv_axes.kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
     result = hsv_axes.ocio_hsv_to_rgb(out)
     scale = np.maximum(1.0, np.abs(colours).max(axis=-1, keepdims=True))
