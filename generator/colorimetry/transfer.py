@@ -130,6 +130,15 @@ class LogCamera:
         return float(self._log(self.lin_side_break))
 
     @property
+    def code_constant(self) -> float:
+        """Magnitude, in code values, of the constant a float32 evaluation of the decoding
+        carries: the log segment's offset, which the code is taken from, and from which
+        OCIO derives the linear segment (OCIO's ACEScct decode sits 3.4e-9 below the exact
+        linear segment at code 0.073: 0.6 units of 2**-24 in code, where the code's own
+        rounding is 0.07 and the offset's 0.55)."""
+        return abs(self.log_side_offset)
+
+    @property
     def toe_slope(self) -> float:
         """Slope of the linear segment, code over linear."""
         if self.linear_slope is not None:

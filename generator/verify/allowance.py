@@ -20,13 +20,15 @@ from generator.spec.schema import Display
 from generator.verify import paths
 
 
-def _input_side(linear, codes: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """|c f'(c)| of a decoding curve (a forward difference of 1e-7 relative): u of it is
-    the change of linear a rounding of the code makes."""
+def _input_side(linear, codes: np.ndarray, values: np.ndarray, constant: float = 0.0) -> np.ndarray:
+    """|c f'(c)| of a decoding curve (a forward difference of 1e-7 relative), with ``|c|`` no
+    smaller than the curve's ``constant`` (the magnitude of the code-side constants its
+    float32 evaluation carries, e.g. a log segment's offset): u of it is the change of
+    linear a rounding of the code, or of those constants, makes."""
     step = 1e-7 * np.maximum(np.abs(codes), 1e-3)
     with np.errstate(all="ignore"):
         slope = (linear(codes + step) - values) / step
-    return np.nan_to_num(np.abs(codes * slope), nan=0.0, posinf=0.0)
+    return np.nan_to_num(np.abs(np.maximum(np.abs(codes), constant) * slope), nan=0.0, posinf=0.0)
 
 
 def float32_shift(src: paths.Endpoint, dst_matrix, codes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -35,14 +37,16 @@ def float32_shift(src: paths.Endpoint, dst_matrix, codes: np.ndarray) -> tuple[n
 
     The source curve is a few float32 operations: its linear values carry
     FLOAT32_MATRIX_ROUNDINGS u of both the input side (|c f'(c)|, what a code's
-    rounding becomes) and the output side (the value), and one more u for storing it;
+    rounding becomes, with |c| at least the curve's code_constant where it has one: a
+    log segment's offset) and the output side (the value), and one more u for storing it;
     each matrix product adds FLOAT32_MATRIX_ROUNDINGS u of |M||x|.
     """
     u, k = tolerances.FLOAT32_UNIT_ROUNDOFF, tolerances.FLOAT32_MATRIX_ROUNDINGS
     with np.errstate(all="ignore"):
         linear = src.linear(codes)
         ref = apply_matrix(src.matrix, linear)
-        source = u * ((1.0 + k) * np.abs(linear) + k * _input_side(src.linear, codes, linear))
+        constant = getattr(src.curve, "code_constant", 0.0)
+        source = u * ((1.0 + k) * np.abs(linear) + k * _input_side(src.linear, codes, linear, constant))
         to_dst = np.abs(np.linalg.inv(dst_matrix))
         return ref, apply_matrix(to_dst, apply_matrix(np.abs(src.matrix), source) + k * u * np.abs(ref))
 

@@ -97,12 +97,12 @@ def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
     if space.is_data:
         return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
                         lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
-                        matrix=np.eye(3), linear=space.curve.decode)
+                        matrix=np.eye(3), linear=space.curve.decode, curve=space.curve)
     matrix = reference.space_matrix(spec, space)
     if not space_is_baked(spec, space):
         return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
                         lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
-                        matrix=matrix, linear=space.curve.decode)
+                        matrix=matrix, linear=space.curve.decode, curve=space.curve)
 
     def decode(codes):
         return reference.to_reference(spec, space, np.clip(codes, lo, hi))

@@ -95,3 +95,24 @@ def test_dequantised_takes_off_half_a_step_and_no_more():
     got = dequantised([0.5 + 0.4 / 65535, 0.5 - 2.0 / 65535], [0.5, 0.5], 1.0 / 65535)
     assert got[0] == 0.5 and got[1] == pytest.approx(0.5 - 1.5 / 65535, abs=1e-15)
     assert percentile_99([np.nan, 1.0, 2.0]) == pytest.approx(1.99)
+
+
+def test_a_log_curve_carries_its_offsets_rounding_into_the_allowance(tmp_path):
+    """A Rec.2020 display with a pure 2.4 power, from ACEScct: OCIO's decode near black sits
+    3.4e-9 below the exact linear segment (it derives the segment from the log offset, 0.55,
+    in float32), which the power turned into a false failure while the allowance carried
+    only the code's own rounding (0.07)."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from generator.verify.run import verify
+
+    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+            '"CIE XYZ-D65 - Scene-referred"]\n[[display]]\nname = "Wide"\ngamut = "Rec.2020"\neotf = "Gamma 2.4"\n'
+            'views = ["Colorimetric", "Raw"]\n[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+    (tmp_path / "show.toml").write_text(text)
+    folder = tmp_path / "show"
+    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
+    result = verify(folder / "config.ocio", ("ocio",), kinds=(checks.VIEW,), only="Wide / Colorimetric from ACEScct")
+    assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
+    acescct = load.load(tmp_path / "show.toml").space("ACEScct").curve
+    assert acescct.code_constant == pytest.approx(0.5547945205479452)
