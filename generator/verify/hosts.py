@@ -155,7 +155,8 @@ class OcioconvertEngine:
         commands = [self._command(c, s, t, config) for c, s, t in zip(checks, inputs, targets)]
         with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
             results = list(pool.map(lambda command: run_host(command, env), commands))
-        if results and all(TOO_NEW in r.stdout + r.stderr for r in results):
-            raise NotRunnable(_message(results[0]))
+        loading = [r for c, r in zip(checks, results) if c.kind != LUT]  # --lut reads no config
+        if loading and all(TOO_NEW in r.stdout + r.stderr for r in loading):
+            raise NotRunnable(_message(loading[0]))
         return [[read_output(t, c, "EXR float", _message(r) if r.returncode else "")]
                 for c, t, r in zip(checks, targets, results)]

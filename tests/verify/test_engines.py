@@ -45,3 +45,23 @@ def test_every_engine_on_the_default_config(everywhere):
     assert not inexact, f"the lossless engine misses its tolerance: {inexact}"
     failing = [(o.check.title, o.engine, f"{o.worst:.3g}", o.worst_input, o.note) for o in everywhere.failures]
     assert not failing, failing
+
+
+def test_a_config_newer_than_a_hosts_ocio_is_not_run_there(build_config):
+    """Debian's ocioconvert (OCIO 2.1) cannot read a 2.3 config: verify reports it not run, with
+    OCIO's reason, rather than failing every check; the LUT files it reads without the config
+    do not change that."""
+    from generator.verify.checks import FROM_REFERENCE, LUT
+    from generator.verify.hosts import TOO_NEW
+    from tests.conftest import require_program
+
+    require_program("ocioconvert")
+    config = build_config((2, 3))
+    # "cale": the Scale display-view spaces (which load the config) and the Scale view LUTs (which do not)
+    result = verify(config, ("ocioconvert",), density="quick", kinds=(FROM_REFERENCE, LUT), only="cale")
+    outcomes = [o for o in result.outcomes if o.engine.startswith("ocioconvert")]
+    assert {o.check.kind for o in outcomes} == {FROM_REFERENCE, LUT}
+    assert outcomes and not [o for o in outcomes if o.verdict not in (PASS, APPROX, NOT_RUN)]
+    run = next(e for e in result.engines if e.name == "ocioconvert")
+    if run.skipped:  # a host whose OCIO predates 2.3
+        assert TOO_NEW in run.skipped and all(o.verdict == NOT_RUN for o in outcomes)
