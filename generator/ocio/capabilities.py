@@ -29,6 +29,16 @@ CURVE_BUILTINS = {
     "Apple Log": (("CURVE - APPLE_LOG_to_LINEAR", False),),
 }
 
+#: Code values the camera-curve builtins decode; they clamp codes outside (and their inverse
+#: clamps the codes it returns): OCIO tabulates Canon Log 2 and 3 over codes 0 to 1, and Apple
+#: Log's toe stops at code 0 (measured through PyOpenColorIO). A config expressing such a
+#: curve by its builtin defines it there only, as a baked curve is on its LUT's domain.
+BUILTIN_CODE_DOMAIN = {
+    "CURVE - CANON_CLOG2_to_LINEAR": (0.0, 1.0),
+    "CURVE - CANON_CLOG3_to_LINEAR": (0.0, 1.0),
+    "CURVE - APPLE_LOG_to_LINEAR": (0.0, float("inf")),
+}
+
 #: Whole-space builtins: encodings that are not a per-channel curve and a gamut.
 SPACE_BUILTINS = {
     "adx10": "ADX10_to_ACES2065-1",
@@ -50,3 +60,13 @@ def curve_chain(curve_name: str, version: tuple[int, int]):
     if chain and all(has_builtin(style, version) for style, _ in chain):
         return chain
     return None
+
+
+def builtin_code_domain(curve_name: str, version: tuple[int, int]) -> tuple[float, float] | None:
+    """The codes a config of ``version`` decodes ``curve_name`` on when a clamping builtin
+    expresses it (:data:`BUILTIN_CODE_DOMAIN`), or None."""
+    chain = curve_chain(curve_name, version)
+    domains = [BUILTIN_CODE_DOMAIN[style] for style, _ in chain or () if style in BUILTIN_CODE_DOMAIN]
+    if not domains:
+        return None
+    return max(lo for lo, _ in domains), min(hi for _, hi in domains)

@@ -12,6 +12,9 @@ Two documented policies of the generated configs enter the expectation:
 * a curve baked into a 1D LUT (:func:`generator.ocio.curves.is_baked`) is
   defined on its domain only: codes outside it are clamped to it, and encoded
   values are clamped to it (:class:`generator.colorimetry.transfer.Function`);
+  so is a curve an OCIO builtin expresses, on the codes the builtin decodes
+  (:data:`generator.ocio.capabilities.BUILTIN_CODE_DOMAIN`: Canon Log 2 and 3
+  from 0 to 1, Apple Log from 0);
 * a display space decodes its code values, clips display light to
   [0, peak] (OCIO's range clamp runs both ways) and goes to CIE XYZ-D65; OCIO
   reaches the scene reference from there through the config's default view
@@ -27,6 +30,7 @@ import numpy as np
 
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import apply_matrix
+from generator.ocio.capabilities import builtin_code_domain
 from generator.ocio.curves import is_baked
 from generator.spec.load import DISPLAY_REFERENCE
 from generator.spec.schema import ColourSpace, Display, Spec
@@ -99,19 +103,22 @@ def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
                         lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
                         matrix=np.eye(3), linear=space.curve.decode, curve=space.curve)
     matrix = reference.space_matrix(spec, space)
-    if not space_is_baked(spec, space):
+    baked = space_is_baked(spec, space)
+    domain = (lo, hi) if baked else builtin_code_domain(space.curve_name, spec.ocio_version)
+    if domain is None:
         return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
                         lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
                         matrix=matrix, linear=space.curve.decode, curve=space.curve)
+    low, high = domain
 
     def decode(codes):
-        return reference.to_reference(spec, space, np.clip(codes, lo, hi))
+        return reference.to_reference(spec, space, np.clip(codes, low, high))
 
     def encode(ref):
-        return np.clip(reference.from_reference(spec, space, ref), lo, hi)
+        return np.clip(reference.from_reference(spec, space, ref), low, high)
 
-    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=space.curve_name, matrix=matrix,
-                    linear=lambda c: space.curve.decode(np.clip(c, lo, hi)), curve=space.curve)
+    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=space.curve_name if baked else "",
+                    matrix=matrix, linear=lambda c: space.curve.decode(np.clip(c, low, high)), curve=space.curve)
 
 
 def _adx_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:

@@ -3,6 +3,7 @@
 import PyOpenColorIO as ocio
 import pytest
 
+from generator.ocio import capabilities
 from generator.ocio.capabilities import BUILTIN_MIN_VERSION, CURVE_BUILTINS, SPACE_BUILTINS, curve_chain
 from tests.conftest import VERSIONS
 
@@ -37,3 +38,25 @@ def test_curves_without_builtins_at_a_version_are_baked():
     assert curve_chain("Canon Log 3", (2, 2)) is not None
     assert curve_chain("Apple Log", (2, 3)) is None
     assert curve_chain("Apple Log", (2, 4)) is not None
+
+
+@pytest.mark.parametrize("style", sorted(capabilities.BUILTIN_CODE_DOMAIN))
+def test_builtin_code_domains_are_where_ocio_clamps(style):
+    """A code below (or above) a clamping builtin's domain decodes as its end does; inside,
+    the curve goes on."""
+    import numpy as np
+    import PyOpenColorIO as ocio
+
+    processor = ocio.Config.CreateRaw().getProcessor(ocio.BuiltinTransform(style)).getDefaultCPUProcessor()
+
+    def decode(code):
+        pixel = np.full((1, 3), code, dtype=np.float32)
+        processor.applyRGB(pixel)
+        return float(pixel[0, 0])
+
+    lo, hi = capabilities.BUILTIN_CODE_DOMAIN[style]
+    assert decode(lo - 0.2) == decode(lo) != decode(lo + 0.05)
+    if np.isfinite(hi):
+        assert decode(hi + 0.2) == decode(hi) != decode(hi - 0.05)
+    else:
+        assert decode(1.2) > decode(1.0)

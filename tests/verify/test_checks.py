@@ -116,3 +116,17 @@ def test_a_log_curve_carries_its_offsets_rounding_into_the_allowance(tmp_path):
     assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
     acescct = load.load(tmp_path / "show.toml").space("ACEScct").curve
     assert acescct.code_constant == pytest.approx(0.5547945205479452)
+
+
+@pytest.mark.parametrize("name", ["CanonLog2", "CanonLog3", "Apple Log"])
+def test_curves_a_clamping_builtin_expresses_are_judged_on_its_codes(build_config, name):
+    """From OCIO 2.2 (2.4 for Apple Log) the config decodes Canon Log 2 and 3 with OCIO's
+    builtins, which tabulate codes 0 to 1 and clamp outside (Apple Log's below 0): verify
+    judges those spaces on those codes, as it does a baked curve on its LUT's domain
+    (it failed every Canon space of the default spec at 2.2 and later before)."""
+    from tests.conftest import NEWEST
+    from generator.verify.run import verify
+
+    result = verify(build_config(NEWEST), ("ocio",), density="quick",
+                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE), only=name)
+    assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
