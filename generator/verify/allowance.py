@@ -107,17 +107,17 @@ def hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
     (to first order a bound): the mapping's own sensitivity, which is large where a colour
     of luminance near 0 maps near black."""
     from generator.gamut.simple import desaturate
-    from generator.luts import hsv_axes as hsv
+    from generator.luts import hsv_axes
 
     gamut, peak = reference.display_gamut(display), display.clip_high
     with np.errstate(all="ignore"):
-        values = hsv.ocio_rgb_to_hsv(np.nan_to_num(linear.reshape(-1, 3)) / peak)
-        delta = hsv.float32_resolution(values)
-        top = 2.0 - 1.0 / hsv.SATURATION_REACH
+        values = hsv_axes.ocio_rgb_to_hsv(np.nan_to_num(linear.reshape(-1, 3)) / peak)
+        delta = hsv_axes.float32_resolution(values)
+        top = 2.0 - 1.0 / hsv_axes.SATURATION_REACH
 
         def mapped(v):
             v = np.stack([v[:, 0], np.clip(v[:, 1], 0.0, top), v[:, 2]], axis=-1)
-            return desaturate(hsv.ocio_hsv_to_rgb(v, max_saturation=2.0), gamut)
+            return desaturate(hsv_axes.ocio_hsv_to_rgb(v, max_saturation=2.0), gamut)
 
         base, total = mapped(values), np.zeros_like(values)
         for axis in range(3):
