@@ -1,0 +1,121 @@
+"""The checks of a config's LUT files on their own: every baked curve against the curve it
+stands for, every baked view LUT against its view's mapping (the two files of an HSV view
+each), so that a broken file is named, not only the conversions that read it."""
+
+from __future__ import annotations
+
+from functools import partial
+
+import numpy as np
+
+from generator import tolerances
+from generator.colorimetry import reference
+from generator.colorimetry.matrices import apply_matrix
+from generator.spec.schema import Display, Spec
+from generator.verify import paths, probes
+from generator.verify.allowance import hsv_file_allowance
+from generator.verify.checks import LUT, Check, _band, _evaluate, _judging, baked_lut
+from generator.verify.probes import Family, Probes, Sizes
+
+
+def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
+    """Every baked LUT file against the curve it stands for, on its nodes, between them
+    (a quarter, a half, three quarters of the way) and on a ramp."""
+    from generator.ocio.emit import LUT_FOLDER
+
+    curves = {s.curve_name: s.curve for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
+    out = []
+    for name, curve in curves.items():
+        baked = baked_lut(name, curve)
+        nodes = len(baked.values)
+        u = np.concatenate([np.arange(4 * (nodes - 1) + 1) / (4.0 * (nodes - 1)), np.linspace(0.0, 1.0, sizes.ramp)])
+        lo, hi = baked.domain
+        codes = lo + (hi - lo) * u ** baked.shaper
+        inputs = Probes((Family("LUT nodes and between", np.repeat(u[:, None], 3, axis=1)),))
+        keep = _band(None, np.repeat(codes[:, None], 3, axis=1), curve)
+        out.append(Check(LUT, f"{LUT_FOLDER}/{baked.filename}", src=name, lut=f"{LUT_FOLDER}/{baked.filename}",
+                         probes=inputs, expected=np.repeat(curve.decode(codes)[:, None], 3, axis=1), output=paths.LINEAR,
+                         tolerance=tolerances.BAKED_CURVE_RELATIVE, keep=keep))
+    return out
+
+
+def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
+    """Every baked view LUT file (a CLF from normalised display-linear RGB, 1 = peak, to
+    the display's codes, or to display light that the verifier then encodes in float64,
+    applied tetrahedrally) against its view's mapping."""
+    from generator.ocio.emit import LUT_FOLDER
+
+    try:
+        from generator.luts.view import HSV_METHOD, ends_in_light, view_filename
+    except ImportError:
+        return []
+    out = []
+    for display in spec.displays:
+        to_display = reference.normalised_display_matrix(spec, display)
+        families = probes.code_families(0.0, 1.0, sizes) + [
+            f if f.name == probes.NON_FINITE else Family(f.name, apply_matrix(to_display, f.values), f.notes)
+            for f in scene]
+        inputs = Probes(tuple(families))
+        for view in display.views:
+            method = paths.view_method(view)
+            if method is None or method in paths.ANALYTIC_METHODS:
+                continue
+            if method == HSV_METHOD:
+                checks = hsv_lut_checks(spec, display, view, families)
+                out += [c for c in checks if c.lut not in {o.lut for o in out}]  # one check of the shared file
+                continue
+            fn = paths.view_function(spec, display, view)
+            expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
+            name = f"{LUT_FOLDER}/{view_filename(display, method)}"
+            encode = partial(_encode_light, display) if ends_in_light(display) else None
+            out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=inputs,
+                             expected=expected, output=paths.DISPLAY, encode=encode,
+                             **_judging(None, display, None, view)))
+    return out
+
+
+def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Family]) -> list[Check]:
+    """The two files of an HSV view (generator.luts.hsv) on their own: the shared file
+    from OCIO HSV values of the families' colours to lattice coordinates, and the
+    display's file from those coordinates (in float32) to the HSV of the mapped colour,
+    judged as the view is, in display codes (the verifier turns the output back into RGB
+    with OCIO's HSV_TO_RGB, in float64, and encodes it)."""
+    from generator.luts import hsv, hsv_axes
+    from generator.luts.view import hsv_view_filename
+    from generator.ocio.emit import LUT_FOLDER
+
+    to_display = reference.normalised_display_matrix(spec, display)
+    finite = [f for f in families if f.name != probes.NON_FINITE]
+    values = [Family(f.name, _float32(hsv_axes.ocio_rgb_to_hsv(f.values)), f.notes) for f in finite]
+    shared = Probes(tuple(values))
+    coordinates = Probes(tuple(Family(f.name, _float32(hsv_axes.shared_coordinates(f.values)), f.notes)
+                               for f in values))
+    shared_name = f"{LUT_FOLDER}/{hsv.SHARED_FILE}"
+    fn = paths.view_function(spec, display, view)
+
+    light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
+    expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
+    name = f"{LUT_FOLDER}/{hsv_view_filename(display)}"
+    return [Check(LUT, shared_name, src=view, lut=shared_name, probes=shared,
+                  expected=hsv_axes.shared_coordinates(shared.values), output=paths.CODE),
+            Check(LUT, name, src=view, lut=name, probes=coordinates, expected=expected, output=paths.DISPLAY,
+                  encode=partial(_encode_hsv, display),
+                  allowance=hsv_file_allowance(display, view, light * display.clip_high, expected),
+                  **_judging(None, display, None, view))]
+
+
+def _float32(values: np.ndarray) -> np.ndarray:
+    return np.asarray(values, dtype=np.float32).astype(np.float64)
+
+
+def _encode_hsv(display: Display, values: np.ndarray) -> np.ndarray:
+    """An HSV view file's output (OCIO HSV of normalised display light) to the display's codes."""
+    from generator.luts.hsv_axes import ocio_hsv_to_rgb
+
+    return _encode_light(display, ocio_hsv_to_rgb(values))
+
+
+def _encode_light(display: Display, light: np.ndarray) -> np.ndarray:
+    """Normalised display light (a view file's output) to the display's codes."""
+    with np.errstate(all="ignore"):
+        return reference.display_encode(display, np.asarray(light, dtype=np.float64) * display.clip_high)
