@@ -16,6 +16,12 @@ INVERSE = ocio.TRANSFORM_DIR_INVERSE
 FORWARD = ocio.TRANSFORM_DIR_FORWARD
 
 
+def curve_label(space_name: str, curve_name: str) -> str:
+    """The name a curve's baked file takes (``<label>_to_linear.spi1d``): a library curve's
+    own, or for a spec's custom curve the name of the space (or display) it belongs to."""
+    return space_name if curve_name.startswith("custom") else curve_name
+
+
 def _log(curve: transfer.LogCamera) -> ocio.Transform:
     args = dict(
         base=curve.base,

@@ -49,17 +49,13 @@ def _matrix_unless_identity(matrix: np.ndarray) -> list:
     return [] if np.allclose(matrix, np.eye(3), rtol=0, atol=1e-12) else [matrix_transform(matrix)]
 
 
-def _curve_label(space_name: str, curve_name: str) -> str:
-    return space_name if curve_name.startswith("custom") else curve_name
-
-
 def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
     if space.is_data:
         return []
     if space.special:
         ap0_to_ref = reference.adx_reference_matrix(spec)
         return [ocio.BuiltinTransform(SPACE_BUILTINS[space.special]), *_matrix_unless_identity(ap0_to_ref)]
-    decode = curves.decode_transforms(_curve_label(space.name, space.curve_name), space.curve, spec.ocio_version, bakes)
+    decode = curves.decode_transforms(curves.curve_label(space.name, space.curve_name), space.curve, spec.ocio_version, bakes)
     return decode + _matrix_unless_identity(reference.space_matrix(spec, space))
 
 
@@ -98,7 +94,7 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
         # The signal ends at code 1 (OCIO 2.1's builtin clamps there, later versions do not).
         return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),
                         ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0)]
-    decode = curves.decode_transforms(_curve_label(display.name, display.eotf_name), display.eotf,
+    decode = curves.decode_transforms(curves.curve_label(display.name, display.eotf_name), display.eotf,
                                       spec.ocio_version, bakes)
     return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
 

@@ -249,15 +249,26 @@ def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut
     return Gamut(name, prims, white, citation=f"custom, {source}")
 
 
+def _default_encoding(curve) -> str:
+    """A custom space's OCIO encoding when its spec names none: scene-linear for the identity,
+    log for a log curve, sdr-video for any other curve (code values, as OCIO's own configs
+    label a gamma-encoded scene space)."""
+    from generator.colorimetry.transfer import Linear, LogCamera
+
+    if isinstance(curve, Linear):
+        return "scene-linear"
+    return "log" if isinstance(curve, LogCamera) else "sdr-video"
+
+
 def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpace:
     _check_keys(table, CUSTOM_SPACE_KEYS, source, f"{field}.")
     name = _string(table.get("name", ""), source, f"{field}.name")
     if not name:
         raise SpecError(source, f"{field}.name", "required")
-    encoding = table.get("encoding", "scene-linear")
+    curve_name, curve = fields.transfer_function(table.get("transfer", "linear"), base, source, f"{field}.transfer")
+    encoding = table.get("encoding", _default_encoding(curve))
     if encoding not in ENCODINGS:
         raise SpecError(source, f"{field}.encoding", f"unknown {encoding!r}; allowed: {', '.join(ENCODINGS)}")
-    curve_name, curve = fields.transfer_function(table.get("transfer", "linear"), base, source, f"{field}.transfer")
     return ColourSpace(
         name=name, gamut=_gamut(table, source, field, base, name), curve=curve, curve_name=curve_name,
         aliases=_strings(table.get("aliases", []), source, f"{field}.aliases"),

@@ -11,6 +11,7 @@ import numpy as np
 from generator import tolerances
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import apply_matrix
+from generator.ocio.curves import curve_label
 from generator.spec.schema import Display, Spec
 from generator.verify import paths, probes
 from generator.verify.allowance import hsv_file_allowance
@@ -23,7 +24,7 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
     (a quarter, a half, three quarters of the way) and on a ramp."""
     from generator.ocio.emit import LUT_FOLDER
 
-    curves = {s.curve_name: s.curve for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
+    curves = {curve_label(s.name, s.curve_name): s.curve for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
     out = []
     for name, curve in curves.items():
         baked = baked_lut(name, curve)

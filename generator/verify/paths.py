@@ -30,8 +30,9 @@ import numpy as np
 
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import apply_matrix
+from generator.colorimetry.transfer import Linear
 from generator.ocio.capabilities import builtin_code_domain
-from generator.ocio.curves import is_baked
+from generator.ocio.curves import curve_label, is_baked
 from generator.spec.load import DISPLAY_REFERENCE
 from generator.spec.schema import ColourSpace, Display, Spec
 
@@ -95,7 +96,8 @@ def code_range(spec: Spec, space: ColourSpace) -> tuple[float, float]:
 
 def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
     lo, hi = code_range(spec, space)
-    output = DATA if space.is_data else LINEAR if space.encoding == "scene-linear" else CODE
+    # Code values unless the curve is the identity, whatever the encoding's label says.
+    output = DATA if space.is_data else LINEAR if isinstance(space.curve, Linear) else CODE
     if space.special:
         return _adx_endpoint(spec, space)
     if space.is_data:
@@ -117,7 +119,7 @@ def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
     def encode(ref):
         return np.clip(reference.from_reference(spec, space, ref), low, high)
 
-    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=space.curve_name if baked else "",
+    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=curve_label(space.name, space.curve_name) if baked else "",
                     matrix=matrix, linear=lambda c: space.curve.decode(np.clip(c, low, high)), curve=space.curve)
 
 

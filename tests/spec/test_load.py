@@ -36,6 +36,17 @@ def test_sdr_displays_offer_desaturate_by_default_and_hdr_displays_on_request(de
                                  'views = ["Colorimetric", "Desaturate"]').displays[0].views
 
 
+@pytest.mark.parametrize("transfer, encoding", [
+    ('"linear"', "scene-linear"), ('{ family = "gamma", exponent = 2.2 }', "sdr-video"),
+    ('{ family = "log_camera", base = 10, log_side_slope = 0.25, log_side_offset = 0.4, lin_side_slope = 5.0, '
+     'lin_side_offset = 0.05, lin_side_break = 0.01 }', "log")])
+def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, encoding):
+    text = f'[[custom_space]]\nname = "C"\ngamut = "Rec.709"\ntransfer = {transfer}\n'
+    space = parse(text).space("C")
+    assert space.encoding == encoding
+    assert parse(text + 'encoding = "data"\n').space("C").encoding == "data"
+
+
 @pytest.mark.parametrize("text, field, words", [
     ("colour_space = ['ACEScg']", "colour_space", "allowed: name"),
     ("colour_spaces = ['ACEScgg']", "colour_spaces[0]", "did you mean 'ACEScg'"),

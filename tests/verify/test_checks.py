@@ -130,3 +130,28 @@ def test_curves_a_clamping_builtin_expresses_are_judged_on_its_codes(build_confi
     result = verify(build_config(NEWEST), ("ocio",), density="quick",
                     kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE), only=name)
     assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
+
+
+def test_custom_curves_are_checked_under_their_files_names_and_as_code_values(tmp_path):
+    """A custom tabulated curve is baked under its space's name, and verify checks that file;
+    a gamma-encoded space labelled scene-linear is still judged as code values, with the
+    float32 limit of its steep power (it failed by colour relative error before)."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from generator.verify.run import verify
+
+    (tmp_path / "curve.csv").write_text("code,linear\n0,0\n0.25,0.02\n0.5,0.12\n0.75,0.45\n1,1\n")
+    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+            '"CIE XYZ-D65 - Scene-referred"]\n'
+            '[[custom_space]]\nname = "Tab"\ngamut = "P3-D65"\ntransfer = { family = "tabulated", file = "curve.csv" }\n'
+            '[[custom_space]]\nname = "Warm"\nencoding = "scene-linear"\nprimaries = [[0.70, 0.30], [0.17, 0.80], '
+            '[0.13, 0.04]]\nwhite = 5000\ntransfer = { family = "gamma", exponent = 2.2 }\n'
+            '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+    (tmp_path / "show.toml").write_text(text)
+    folder = tmp_path / "show"
+    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
+    assert (folder / "luts" / "tab_to_linear.spi1d").is_file()
+    result = verify(folder / "config.ocio", ("ocio",), density="quick",
+                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
+    assert "luts/tab_to_linear.spi1d" in {o.check.item for o in result.outcomes}
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
