@@ -180,17 +180,11 @@ def gpu_desaturate(spec) -> None:
     print(f"\n== Desaturate views, trilinear weights rounded to {GPU_WEIGHT_BITS} bits (a GPU's texture "
           "filtering, simulated), ten-bit codes max/p99")
     for display in (d for d in spec.displays if "Desaturate" in d.views):
-        gamut = reference.display_gamut(display)
-        weights = gamut.luminance_weights / gamut.luminance_weights.sum()
-        cube, to_display = hsv.hsv_lattice(display).cube, reference.scene_to_display_matrix(spec, display)
+        lat, to_display = hsv.hsv_lattice(display), reference.scene_to_display_matrix(spec, display)
         figures = {}
         for name, ref in probes.probes(spec, spec.space("ACEScg"), display).items():
             values = hsv_axes.ocio_rgb_to_hsv(reference.apply_matrix(to_display, ref) / display.clip_high)
-            coordinate = hsv_axes.shared_coordinates(values)
-            coordinate[:, 0] = hsv_axes.hue_to_kappa(values[:, 0], weights)
-            mapped = hsv.trilinear(cube, coordinate, GPU_WEIGHT_BITS)
-            out = np.stack([hsv_axes.kappa_to_hue(mapped[:, 0], weights), mapped[:, 1],
-                            np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
+            out = hsv.apply(lat, values, GPU_WEIGHT_BITS)
             light = np.clip(hsv_axes.ocio_hsv_to_rgb(out), 0.0, 1.0) * display.clip_high
             error = probes.errors(display, reference.display_encode(display, light),
                                   reference.mapped_view(spec, display, "desaturate", ref))[0]

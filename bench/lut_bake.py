@@ -25,9 +25,9 @@ from pathlib import Path
 
 REPEATS = 5
 SIZE = 65
-#: `ocioforge bake` as a fresh process; COMMANDS gains "bake" here until the CLI registers it.
-OCIOFORGE = ("import sys, generator.cli as c; c.COMMANDS.setdefault('bake', 'Bake a LUT.'); "
-             "c.main(sys.argv[1:])")
+#: `ocioforge` as a fresh process of this Python (the environment's entry point, without
+#: relying on PATH).
+OCIOFORGE = "import sys, generator.cli as c; c.main(sys.argv[1:])"
 
 
 def best_time(args, env=None) -> tuple[float, str]:

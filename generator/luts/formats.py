@@ -97,10 +97,10 @@ def table_array(rows: np.ndarray, dim: str, decimals: int) -> str:
     return f'<Array dim="{dim}">\n' + numbers.table(rows, decimals).decode("ascii") + "</Array>\n"
 
 
-def op(tag: str, body: str, **attributes) -> str:
-    """A CLF process node, 32-bit float in and out."""
+def op(tag: str, body: str, in_depth: str = "32f", out_depth: str = "32f", **attributes) -> str:
+    """A CLF process node, 32-bit float in and out unless told (a half-domain LUT1D reads 16f)."""
     attrs = "".join(f' {key}="{value}"' for key, value in attributes.items())
-    return f'<{tag} inBitDepth="32f" outBitDepth="32f"{attrs}>\n{body}</{tag}>\n'
+    return f'<{tag} inBitDepth="{in_depth}" outBitDepth="{out_depth}"{attrs}>\n{body}</{tag}>\n'
 
 
 def _exponent(style: str, gamma: float, offset: float | None = None) -> str:

@@ -25,7 +25,8 @@ import numpy as np
 
 from generator.colorimetry import reference
 from generator.luts.hsv_axes import (HSV_SIZE, SHARED_SCALE, VALUE_NODES, _saturation_of_u, hue_shape, hue_to_kappa,
-                                     kappa_to_hue, ocio_hsv_to_rgb, saturation_nodes, shared_table)
+                                     kappa_to_hue, lattice_coordinates, ocio_hsv_to_rgb, saturation_nodes,
+                                     shared_table)
 from generator.spec.schema import Display
 
 #: Entries of the display file's 1D tables (hue to ``kappa``, and back with the clamp of
@@ -47,6 +48,7 @@ HSV_DIGITS = 9
 #: Decimals of the 1D tables' values (lattice coordinates and hue, within [0, 1]).
 HSV_TABLE_DECIMALS = 9
 
+
 @dataclass(frozen=True)
 class HsvLattice:
     """The file's parts: ``pre`` and ``post`` 1D tables (entries, 3) and the cube (n, n, n, 3)
@@ -62,20 +64,21 @@ class HsvLattice:
         return self.cube.shape[0]
 
 
-def hsv_lattice(display: Display, size: int = HSV_SIZE) -> HsvLattice:
-    """The desaturate view of ``display`` (module docstring)."""
-    if (size - 1) % 6 or size < 7:
-        raise ValueError(f"an HSV lattice needs 6k + 1 nodes a side, got {size}")
+def luminance_weights(display: Display) -> np.ndarray:
+    """The display's relative luminance of its RGB, weights summing to 1."""
     weights = reference.display_gamut(display).luminance_weights
-    weights = weights / weights.sum()
-    if size != len(VALUE_NODES):
-        raise ValueError(f"the value axis has {len(VALUE_NODES)} nodes, not {size}")
-    u, v = saturation_nodes(size), np.array(VALUE_NODES)
+    return weights / weights.sum()
+
+
+def hsv_lattice(display: Display) -> HsvLattice:
+    """The desaturate view of ``display`` (module docstring)."""
+    weights = luminance_weights(display)
+    u, v = saturation_nodes(), np.array(VALUE_NODES)
     x = np.linspace(0.0, 1.0, HSV_ENTRIES)
     pre = np.stack([hue_to_kappa(x, weights), x, x], axis=-1)
     post = np.stack([kappa_to_hue(x, weights), x, x], axis=-1)
 
-    kappa, uu, value = np.meshgrid(np.linspace(0.0, 1.0, size), u, v, indexing="ij")
+    kappa, uu, value = np.meshgrid(np.linspace(0.0, 1.0, HSV_SIZE), u, v, indexing="ij")
     hue, saturation = kappa_to_hue(kappa, weights), _saturation_of_u(uu)
     luminance = ocio_hsv_to_rgb(np.stack([hue, saturation, value], axis=-1), max_saturation=2.0) @ weights
     inside = (uu <= 1.0) & (value >= 0.0)
@@ -99,6 +102,15 @@ def trilinear(cube: np.ndarray, coordinate: np.ndarray, weight_bits: int | None 
         weight = np.prod([fraction[:, k] if corner[k] else 1.0 - fraction[:, k] for k in range(3)], axis=0)
         out += weight[:, None] * cube[base[:, 0] + corner[0], base[:, 1] + corner[1], base[:, 2] + corner[2]]
     return out
+
+
+def apply(lat: HsvLattice, values: np.ndarray, weight_bits: int | None = None) -> np.ndarray:
+    """The view's two files on OCIO HSV ``values`` (n, 3) in float64, their 1D tables' exact
+    functions in place of the tables: the HSV of the mapped colour, for HSV_TO_RGB (with
+    ``weight_bits``, the lattice's weights rounded as a GPU's texture filtering rounds them)."""
+    weights = luminance_weights(lat.display)
+    mapped = trilinear(lat.cube, lattice_coordinates(values, weights), weight_bits)
+    return np.stack([kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
 
 
 def _rows(values: np.ndarray, digits: int) -> str:
@@ -128,9 +140,8 @@ def shared_clf() -> bytes:
 
     matrix = "1 0 0 0\n0 -1 0 2\n0 0 1 0\n"
     body = "".join(f"{h:.9g} {s:.9g} {v:.9g}\n" for h, s, v in shared_table().tolist())
-    nodes = [op("Matrix", f'<Array dim="3 4 3">\n{matrix}</Array>\n').replace('outBitDepth="32f"', 'outBitDepth="16f"'),
-             '<LUT1D inBitDepth="16f" outBitDepth="32f" halfDomain="true">\n'
-             f'<Array dim="65536 3">\n{body}</Array>\n</LUT1D>\n']
+    nodes = [op("Matrix", f'<Array dim="3 4 3">\n{matrix}</Array>\n', out_depth="16f"),
+             op("LUT1D", f'<Array dim="65536 3">\n{body}</Array>\n', in_depth="16f", halfDomain="true")]
     return clf_document(nodes, "ocioforge:hsv_coordinates",
                         "ocioforge: OCIO HSV (H, S, V) to the desaturate views' lattice coordinates (H / 6, "
                         "saturation's u = 1 / (2 - S) above S = 1, value's), shared by every display.")

@@ -82,9 +82,6 @@ SHARED_SCALE = 6.0
 #: Saturation OCIO's HSV_TO_RGB clamps to (2 would be a pole).
 OCIO_MAX_SATURATION = 1.999
 
-#: OCIO's FixedFunction styles the view runs around the file.
-FORWARD, INVERSE = "RGB_TO_HSV", "HSV_TO_RGB"
-
 
 def ocio_rgb_to_hsv(rgb) -> np.ndarray:
     """OCIO's extended-range RGB_TO_HSV (module docstring), float64, shape (..., 3)."""
@@ -144,14 +141,12 @@ def kappa_to_hue(kappa, weights: np.ndarray) -> np.ndarray:
     return (sixth + (luminance - corner[sixth]) / (corner[sixth + 1] - corner[sixth])) / 6.0
 
 
-def saturation_nodes(size: int = HSV_SIZE) -> np.ndarray:
+def saturation_nodes() -> np.ndarray:
     """``u`` at the saturation nodes: evenly from 0 to 1, with 1 at the middle node (a
     coordinate of exactly 1/2, so a colour with a zero channel, ``S = 1``, lands on the
     node plane in float32 and keeps ``S' = 1`` exactly: a saturation a rounding below 1
     lifts the zero channel, visibly on a pure-power display), then
     :data:`SATURATION_NODES_ABOVE`."""
-    if size != 2 * len(SATURATION_NODES_ABOVE) + 1:
-        raise ValueError(f"the saturation axis has {2 * len(SATURATION_NODES_ABOVE) + 1} nodes, not {size}")
     return np.concatenate([np.linspace(0.0, 1.0, len(SATURATION_NODES_ABOVE) + 1), SATURATION_NODES_ABOVE])
 
 
@@ -160,53 +155,53 @@ def _half_values() -> np.ndarray:
     return np.arange(65536, dtype=np.uint16).view(np.float16).astype(np.float64)
 
 
-def shared_table(size: int = HSV_SIZE) -> np.ndarray:
-    """The shared half-domain table (65536 entries by half-float bit pattern, 3 columns) of
-    ``(H, t = 2 - S, V)``: ``H / 6``; ``u``'s lattice coordinate (``u = 2 - t`` up to 1,
-    ``1 / t`` beyond; linear in ``u`` between nodes); V's, linear between :data:`VALUE_NODES`. NaN goes to 0;
-    values beyond the nodes are clamped."""
-    x = _half_values()
-    finite = np.nan_to_num(x, nan=0.0, posinf=np.inf, neginf=-np.inf)
-    coordinate = np.linspace(0.0, 1.0, size)
-    hue = np.clip(finite, 0.0, 1.0) / SHARED_SCALE
+def _coordinates(hue: np.ndarray, t: np.ndarray, value: np.ndarray) -> np.ndarray:
+    """Lattice coordinates ``(H / 6, u's, V's)`` of hue, ``t = 2 - S`` and value, float64:
+    ``u = 2 - t`` up to 1, ``1 / t`` beyond, linear in ``u`` between its nodes; V linear
+    between :data:`VALUE_NODES` (+0 and -0 both at 0); beyond the nodes, clamped."""
+    grid = np.linspace(0.0, 1.0, HSV_SIZE)
     with np.errstate(divide="ignore"):
-        u = np.where(finite >= 1.0, 2.0 - finite, 1.0 / np.maximum(finite, 0.0))
-    saturation = np.interp(u, saturation_nodes(size), coordinate)
-    values = np.array(VALUE_NODES)
-    positive, negative = slice(0, POSITIVE_VALUE_NODES), slice(POSITIVE_VALUE_NODES, None)
-    value = np.interp(finite, values[positive], coordinate[positive])
-    value = np.where(np.signbit(x) & (finite != 0.0), np.interp(finite, values[negative], coordinate[negative]),
-                     value)
-    value = np.where(finite == 0.0, 0.0, value)  # +0 and -0 alike
-    return np.stack([hue, saturation, value], axis=-1)
+        u = np.where(t >= 1.0, 2.0 - t, 1.0 / np.maximum(t, 0.0))
+    nodes, split = np.array(VALUE_NODES), POSITIVE_VALUE_NODES
+    v = np.where(value > 0.0, np.interp(value, nodes[:split], grid[:split]),
+                 np.interp(value, nodes[split:], grid[split:]))
+    return np.stack([np.clip(hue, 0.0, 1.0) / SHARED_SCALE, np.interp(u, saturation_nodes(), grid),
+                     np.where(value == 0.0, 0.0, v)], axis=-1)
+
+
+def shared_table() -> np.ndarray:
+    """The shared half-domain table (65536 entries by half-float bit pattern, 3 columns) of
+    ``(H, t = 2 - S, V)``: :func:`_coordinates` of each half float; NaN goes to 0."""
+    x = np.nan_to_num(_half_values(), nan=0.0, posinf=np.inf, neginf=-np.inf)
+    return _coordinates(x, x, x)
 
 
 def _saturation_of_u(u: np.ndarray) -> np.ndarray:
     return np.where(u <= 1.0, u, 2.0 - 1.0 / np.maximum(u, 1.0))
 
 
-def shared_coordinates(values: np.ndarray, size: int = HSV_SIZE) -> np.ndarray:
+def shared_coordinates(values: np.ndarray) -> np.ndarray:
     """What the shared file does to OCIO HSV ``values`` (n, 3), in float64 without its
     sampling: ``(H / 6, u's coordinate, V's coordinate)``, clamped as the table clamps."""
     values = np.asarray(values, dtype=np.float64)
-    coordinate = np.linspace(0.0, 1.0, size)
-    t = 2.0 - values[:, 1]
-    with np.errstate(divide="ignore"):
-        u = np.where(t >= 1.0, 2.0 - t, 1.0 / np.maximum(t, 0.0))
-    nodes, split = np.array(VALUE_NODES), POSITIVE_VALUE_NODES
-    value = np.where(values[:, 2] > 0.0, np.interp(values[:, 2], nodes[:split], coordinate[:split]),
-                     np.interp(values[:, 2], nodes[split:], coordinate[split:]))
-    value = np.where(values[:, 2] == 0.0, 0.0, value)
-    return np.stack([np.clip(values[:, 0], 0.0, 1.0) / SHARED_SCALE,
-                     np.interp(u, saturation_nodes(size), coordinate), value], axis=-1)
+    return _coordinates(values[:, 0], 2.0 - values[:, 1], values[:, 2])
 
 
-def hsv_of_coordinates(coordinates: np.ndarray, size: int = HSV_SIZE) -> np.ndarray:
+def lattice_coordinates(values: np.ndarray, weights: np.ndarray) -> np.ndarray:
+    """The display lattice's coordinates of OCIO HSV ``values`` (n, 3), in float64 without
+    the files' sampling: :func:`shared_coordinates` with the hue through :func:`hue_to_kappa`
+    (the display file's first table; ``weights``, its luminance weights summing to 1)."""
+    coordinates = shared_coordinates(values)
+    coordinates[:, 0] = hue_to_kappa(np.clip(np.asarray(values, dtype=np.float64)[:, 0], 0.0, 1.0), weights)
+    return coordinates
+
+
+def hsv_of_coordinates(coordinates: np.ndarray) -> np.ndarray:
     """The OCIO HSV values a display file's input ``coordinates`` (n, 3) stand for (the
     inverse of :func:`shared_coordinates` within its clamps)."""
     c = np.asarray(coordinates, dtype=np.float64)
-    grid = np.linspace(0.0, 1.0, size)
-    u = np.interp(c[:, 1], grid, saturation_nodes(size))
+    grid = np.linspace(0.0, 1.0, HSV_SIZE)
+    u = np.interp(c[:, 1], grid, saturation_nodes())
     nodes, split = np.array(VALUE_NODES), POSITIVE_VALUE_NODES
     value = np.where(c[:, 2] <= grid[split - 1], np.interp(c[:, 2], grid[:split], nodes[:split]),
                      np.interp(c[:, 2], grid[split:], nodes[split:]))
@@ -220,7 +215,7 @@ def _cell_width(nodes: np.ndarray, x: np.ndarray) -> np.ndarray:
     return nodes[k + 1] - nodes[k]
 
 
-def float32_resolution(values: np.ndarray, size: int = HSV_SIZE) -> np.ndarray:
+def float32_resolution(values: np.ndarray) -> np.ndarray:
     """How far float32 leaves each of OCIO HSV ``values`` (n, 3) uncertain on the way through
     the view, absolute: the hue, a value in [0, 1] rounded by each of the
     FLOAT32_HSV_ROUNDINGS operators it passes (:mod:`generator.tolerances`); saturation and
@@ -228,16 +223,16 @@ def float32_resolution(values: np.ndarray, size: int = HSV_SIZE) -> np.ndarray:
     coordinates, which float32 resolves to 6e-8 relative at each of
     FLOAT32_COORDINATE_ROUNDINGS steps, times the width of their cell per unit of coordinate."""
     values = np.asarray(values, dtype=np.float64)
-    u32, n = tolerances.FLOAT32_UNIT_ROUNDOFF, size - 1
+    u32, n = tolerances.FLOAT32_UNIT_ROUNDOFF, HSV_SIZE - 1
     operators, steps = tolerances.FLOAT32_HSV_ROUNDINGS * u32, tolerances.FLOAT32_COORDINATE_ROUNDINGS * u32
     saturation, value = values[:, 1], values[:, 2]
+    coordinates = shared_coordinates(values)
     with np.errstate(divide="ignore"):
         u = np.where(saturation <= 1.0, saturation, 1.0 / np.maximum(2.0 - saturation, 1.0 / SATURATION_REACH))
-    coordinate = np.interp(u, saturation_nodes(size), np.linspace(0.0, 1.0, size))
-    du = steps * coordinate * n * _cell_width(saturation_nodes(size), u)
+    du = steps * coordinates[:, 1] * n * _cell_width(saturation_nodes(), u)
     ds = operators * np.maximum(saturation, 1.0) + np.where(u > 1.0, du / np.maximum(u, 1.0) ** 2, du)
     nodes = np.array(VALUE_NODES)
     positive, negative = nodes[:POSITIVE_VALUE_NODES], -nodes[POSITIVE_VALUE_NODES:][::-1]
     cell = np.where(value >= 0.0, _cell_width(positive, np.abs(value)), _cell_width(negative, np.abs(value)))
-    dv = operators * np.abs(value) + steps * shared_coordinates(values, size)[:, 2] * n * cell
+    dv = operators * np.abs(value) + steps * coordinates[:, 2] * n * cell
     return np.stack([np.full(len(values), operators), ds, dv], axis=-1)

@@ -74,6 +74,10 @@ def ends_in_light(display: Display) -> bool:
 
 
 def view_filename(display: Display, method: str, size: int | None = None) -> str:
+    """The file of the config's view of ``method`` on ``display`` (``size``: a lattice in
+    display axes of that size, for a desaturate bake other than the config's HSV view)."""
+    if method == HSV_METHOD and size is None:
+        return f"view_{slug(display.name)}_{method}_hsv{hsv_axes.HSV_SIZE}.clf"
     return f"view_{slug(display.name)}_{method}_{size or view_size(display, method)}.clf"
 
 
@@ -143,15 +147,23 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
     text = (f"ocioforge view LUT: normalised {display.name} linear RGB (1 = peak, after the config's matrix) "
             f"to {output.format(method, size)}")
     data = formats.clf(lat, f"ocioforge:{name[:-4]}", text, include_matrix=False)
-    matrix = tuple(tuple(float(v) for v in row) for row in lat.matrix)
+    return _measured(spec, display, method, name, data, {}, lat.matrix, light)
+
+
+def _measured(spec: Spec, display: Display, method: str, name: str, data: bytes, beside: dict, matrix,
+              light: bool, hsv_view: bool = False) -> ViewLut:
+    """The view file ``data`` (with the files ``beside`` it, name to bytes) measured through
+    OCIO as the config runs it, as a :class:`ViewLut`."""
+    matrix = tuple(tuple(float(v) for v in row) for row in matrix)
     with tempfile.TemporaryDirectory() as folder:
-        path = Path(folder) / name
-        path.write_bytes(data)
-        gamut_source = _gamut_source(spec)
-        transform = view_transform(matrix, str(path), *((spec, display) if light else ()))
-        figures = probes.measure(spec, None, display, method, probes.ocio_apply(transform), gamut_source=gamut_source)
+        for filename, content in {name: data, **beside}.items():
+            (Path(folder) / filename).write_bytes(content)
+        transform = view_transform(matrix, str(Path(folder) / name), *((spec, display) if light else ()),
+                                   hsv_folder=folder if hsv_view else None)
+        figures = probes.measure(spec, None, display, method, probes.ocio_apply(transform),
+                                 gamut_source=_gamut_source(spec))
     unit = next(iter(figures.values())).unit
-    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, light)
+    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, light, hsv_view)
 
 
 def _gamut_source(spec: Spec):
@@ -161,25 +173,14 @@ def _gamut_source(spec: Spec):
         return None
 
 
-def hsv_view_filename(display: Display) -> str:
-    return f"view_{slug(display.name)}_{HSV_METHOD}_hsv{hsv_axes.HSV_SIZE}.clf"
-
-
 def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:
     """The desaturate view of ``display`` as an HSV lattice, measured through OCIO."""
     from generator.colorimetry import reference
 
-    name = hsv_view_filename(display)
+    name = view_filename(display, HSV_METHOD)
     text = (f"ocioforge view LUT: OCIO HSV of normalised {display.name} linear RGB (1 = peak, after the config's "
             f"matrix, RGB_TO_HSV and {hsv.SHARED_FILE}) to the HSV of its desaturated colour (before "
             "HSV_TO_RGB); trilinear.")
     data = hsv.hsv_clf(hsv.hsv_lattice(display), f"ocioforge:{name[:-4]}", text)
-    matrix = tuple(tuple(float(v) for v in row) for row in reference.normalised_display_matrix(spec, display))
-    with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / name).write_bytes(data)
-        (Path(folder) / hsv.SHARED_FILE).write_bytes(hsv.shared_clf())
-        transform = view_transform(matrix, str(Path(folder) / name), spec, display, hsv_folder=folder)
-        figures = probes.measure(spec, None, display, HSV_METHOD, probes.ocio_apply(transform),
-                                 gamut_source=_gamut_source(spec))
-    unit = next(iter(figures.values())).unit
-    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, True, True)
+    return _measured(spec, display, HSV_METHOD, name, data, {hsv.SHARED_FILE: hsv.shared_clf()},
+                     reference.normalised_display_matrix(spec, display), True, True)

@@ -91,8 +91,9 @@ def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.n
         return tolerances.RGC_OCIO_SCALED * scale * display.clip_high * np.ones_like(linear)
     if method != "desaturate":
         return np.zeros_like(linear)
-    weights = reference.display_gamut(display).luminance_weights
-    weights = weights / weights.sum()
+    from generator.luts.hsv import luminance_weights
+
+    weights = luminance_weights(display)
     luminance = linear @ weights
     low = np.minimum(linear.min(axis=-1), 0.0)
     with np.errstate(all="ignore"):

@@ -46,10 +46,8 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
     applied tetrahedrally) against its view's mapping."""
     from generator.ocio.emit import LUT_FOLDER
 
-    try:
-        from generator.luts.view import HSV_METHOD, ends_in_light, view_filename
-    except ImportError:
-        return []
+    from generator.luts.view import HSV_METHOD, ends_in_light, view_filename
+
     out = []
     for display in spec.displays:
         to_display = reference.normalised_display_matrix(spec, display)
@@ -82,7 +80,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
     judged as the view is, in display codes (the verifier turns the output back into RGB
     with OCIO's HSV_TO_RGB, in float64, and encodes it)."""
     from generator.luts import hsv, hsv_axes
-    from generator.luts.view import hsv_view_filename
+    from generator.luts.view import HSV_METHOD, view_filename
     from generator.ocio.emit import LUT_FOLDER
 
     to_display = reference.normalised_display_matrix(spec, display)
@@ -96,7 +94,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
 
     light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
     expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
-    name = f"{LUT_FOLDER}/{hsv_view_filename(display)}"
+    name = f"{LUT_FOLDER}/{view_filename(display, HSV_METHOD)}"
     return [Check(LUT, shared_name, src=view, lut=shared_name, probes=shared,
                   expected=hsv_axes.shared_coordinates(shared.values), output=paths.CODE),
             Check(LUT, name, src=view, lut=name, probes=coordinates, expected=expected, output=paths.DISPLAY,

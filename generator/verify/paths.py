@@ -188,11 +188,9 @@ def lut_range(display: Display, method: str | None = None) -> tuple[float, float
     """Display-linear range (1.0 = 100 cd/m²) a baked view LUT covers per channel; it clamps
     beyond. None for an HSV view, whose lattice clamps OCIO's HSV value instead (from -256
     to 1024 times the peak, :mod:`generator.luts.hsv`)."""
-    try:
-        from generator.luts.lattice import DISPLAY_RANGE
-        from generator.luts.view import HSV_METHOD
-    except ImportError:
-        return None
+    from generator.luts.lattice import DISPLAY_RANGE
+    from generator.luts.view import HSV_METHOD
+
     if method == HSV_METHOD:
         return None
     return (DISPLAY_RANGE[0] * display.clip_high, DISPLAY_RANGE[1] * display.clip_high)
@@ -209,7 +207,7 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
     method = view_method(view)
     if method == "clip":
         return lambda ref: reference.colorimetric_view(spec, display, ref)
-    if method is None or not hasattr(reference, "map_display_linear"):
+    if method is None:
         return None
     to_display = reference.scene_to_display_matrix(spec, display)
     bounds = None if method in ANALYTIC_METHODS else lut_range(display, method)

@@ -20,18 +20,6 @@ def _display(spec, name):
     return next(d for d in spec.displays if d.name == name)
 
 
-def _exact_coordinates(values: np.ndarray, weights: np.ndarray) -> np.ndarray:
-    """Lattice coordinates of OCIO HSV values in float64, the 1D tables' functions without their sampling."""
-    n = hsv_axes.HSV_SIZE
-    u = np.where(values[:, 1] <= 1.0, values[:, 1], 1.0 / (2.0 - values[:, 1]))
-    nodes, coordinate = np.array(hsv_axes.VALUE_NODES), np.linspace(0.0, 1.0, n)
-    split = hsv_axes.POSITIVE_VALUE_NODES
-    value = np.where(values[:, 2] >= 0.0, np.interp(values[:, 2], nodes[:split], coordinate[:split]),
-                     np.interp(values[:, 2], nodes[split:], coordinate[split:]))
-    return np.stack([hsv_axes.hue_to_kappa(values[:, 0], weights), np.interp(u, hsv_axes.saturation_nodes(n), coordinate),
-                     value], axis=-1)
-
-
 @pytest.mark.parametrize("name", SDR)
 def test_the_lattice_is_exact(default_spec, name):
     """Trilinear interpolation of the lattice, with its 1D tables' exact functions and the
@@ -40,16 +28,13 @@ def test_the_lattice_is_exact(default_spec, name):
     (saturation within 1 / SATURATION_REACH of 2: 6e-5 from the cone)."""
     display = _display(default_spec, name)
     gamut = reference.display_gamut(display)
-    weights = gamut.luminance_weights / gamut.luminance_weights.sum()
     lattice = hsv.hsv_lattice(display)
     colours = hsv_cases.colours()
     values = hsv_axes.ocio_rgb_to_hsv(colours)
     reached = 2.0 - values[:, 1] >= 1.0 / hsv_axes.SATURATION_REACH
     assert (~reached).sum() < 0.01 * len(colours)
     colours, values = colours[reached], values[reached]
-    mapped = hsv.trilinear(lattice.cube, _exact_coordinates(values, weights))
-    out = np.stack([hsv_axes.kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
-    result = hsv_axes.ocio_hsv_to_rgb(out)
+    result = hsv_axes.ocio_hsv_to_rgb(hsv.apply(lattice, values))
     scale = np.maximum(1.0, np.abs(colours).max(axis=-1, keepdims=True))
     assert np.abs(result - desaturate(colours, gamut)).max() < 1e-9 * scale.max()
     assert np.all(np.abs(result - desaturate(colours, gamut)) <= 1e-10 * scale * hsv_axes.SATURATION_REACH)

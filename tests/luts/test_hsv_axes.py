@@ -35,4 +35,4 @@ def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
     assert np.array_equal(table[[at[0.25], at[0.5]], 0], np.array([0.25, 0.5]) / hsv_axes.SHARED_SCALE)
     # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at the smallest normal half.
     assert table[at[2.0**-14], 1] == 1.0 and table[at[0.5], 1] == pytest.approx(
-        np.interp(2.0, hsv_axes.saturation_nodes(n), np.linspace(0, 1, n)), abs=1e-15)
+        np.interp(2.0, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), abs=1e-15)
