@@ -1,4 +1,4 @@
-"""Writing a whole folder so that it is never seen half-written."""
+"""Writing files and whole folders so that they are never seen half-written."""
 
 from __future__ import annotations
 
@@ -29,3 +29,36 @@ def staged_folder(folder: Path) -> Iterator[Path]:
     finally:
         if staging.exists():
             shutil.rmtree(staging)
+
+
+def _plain_mode() -> int:
+    """The permissions a plain write gives a new file (0666 less the umask)."""
+    umask = os.umask(0)
+    os.umask(umask)
+    return 0o666 & ~umask
+
+
+def write_files(files: dict[Path, bytes]) -> None:
+    """Write every file or none: each goes to a private temporary sibling first, gets a
+    plain write's permissions, and only once all are complete are they renamed into place."""
+    staged: list[tuple[str, Path]] = []
+    mode = _plain_mode()
+    try:
+        for path, data in files.items():
+            path.parent.mkdir(parents=True, exist_ok=True)
+            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+            staged.append((temporary, path))
+            with os.fdopen(handle, "wb") as stream:
+                stream.write(data)
+            os.chmod(temporary, mode)
+        for temporary, path in staged:
+            os.replace(temporary, path)
+    finally:
+        for temporary, _ in staged:
+            if os.path.exists(temporary):
+                os.unlink(temporary)
+
+
+def write_atomic(path: Path, data: bytes) -> None:
+    """One file through :func:`write_files`."""
+    write_files({Path(path): data})

@@ -115,9 +115,10 @@ FLOAT32_HSV_ROUNDINGS = 8
 #: file's table (its index and its interpolation) and the lattice's index.
 FLOAT32_COORDINATE_ROUNDINGS = 4
 
-#: A colour a bounded encoding (ADX) represents decodes back to itself within float64
-#: rounding, relative to its largest component; colours that do not (non-positive
-#: printing-density exposure has no unique density) are left out of its checks.
+#: A colour a bounded encoding (ADX, a tabulated curve) represents decodes back to itself
+#: within float64 rounding, relative to its largest component; colours that do not
+#: (non-positive printing-density exposure has no unique density, a table clamps beyond its
+#: ends) are left out of its checks and of a LUT's probes and fit.
 REPRESENTABLE_RELATIVE = 1e-9
 
 #: A baked LUT read back through OCIO against the values the baker stored at the

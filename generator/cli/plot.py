@@ -21,7 +21,7 @@ def command(config, output, mapping):
     from generator.spec import resolved
     from generator.spec.schema import SpecError
     from generator.verify.figures import chromaticity, png
-    from generator.verify.report import write_atomic
+    from generator.files import write_atomic
 
     fmt = Path(output).suffix.lower().lstrip(".")
     if fmt not in FORMATS:

@@ -10,11 +10,10 @@ layout each format gets is in :mod:`generator.luts.lattice`; bad requests raise
 
 from __future__ import annotations
 
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from generator.files import write_files
 from generator.luts import formats, lattice
 from generator.spec.schema import ColourSpace, Display, Spec, SpecError
 
@@ -202,23 +201,11 @@ def paths(files: dict[str, bytes], output: str | Path) -> dict[Path, bytes]:
 
 
 def write(files: dict[Path, bytes], force: bool = False) -> None:
-    """Write every file or none: each goes to a temporary sibling first, then all are renamed."""
+    """Write every file or none (:func:`generator.files.write_files`), after checking each
+    path's folder exists and, without ``force``, that no file is there."""
     for path in files:
         if not path.parent.is_dir():
             raise SpecError(WHERE, "-o", f"folder {str(path.parent)!r} does not exist")
         if path.exists() and not force:
             raise SpecError(WHERE, "-o", f"{str(path)!r} exists; pass --force to replace it")
-    staged: list[tuple[str, Path]] = []
-    try:
-        for path, data in files.items():
-            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-            staged.append((temporary, path))
-            with os.fdopen(handle, "wb") as stream:
-                stream.write(data)
-            os.chmod(temporary, 0o644)
-        for temporary, path in staged:
-            os.replace(temporary, path)
-    finally:
-        for temporary, _ in staged:
-            if os.path.exists(temporary):
-                os.unlink(temporary)
+    write_files(files)

@@ -11,6 +11,10 @@ seed so the same call always gives the same colours:
 * ``over_range``: source-gamut colours scaled by 1 to 16 times the display's
   peak, log-uniform, whose largest display channel exceeds the peak.
 
+Colours the source encoding cannot hold (they do not decode back to themselves: a
+tabulated curve's clamp beyond its table, a curve with no negative values) are left
+out of both, as a file in that encoding never holds them.
+
 Errors are ten-bit code values (largest channel difference times 1023) for SDR
 displays and ΔE ITP (ITU-R BT.2124, :func:`~generator.verify.metrics.delta_e_itp`)
 for HDR ones; each set reports its maximum and 99th percentile.
@@ -22,6 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from generator import tolerances
 from generator.colorimetry import reference
 from generator.spec.schema import ColourSpace, Display, Spec
 
@@ -62,6 +67,21 @@ def _display_linear(spec: Spec, source: ColourSpace, display: Display, rng, coun
     return sets
 
 
+def representable(spec: Spec, source: ColourSpace, ref: np.ndarray, code: np.ndarray | None = None) -> np.ndarray:
+    """Which scene-reference colours ``ref`` (n, 3) the encoding of ``source`` holds: their
+    codes (``code``, computed if not given) decode back to them within float64 rounding
+    (REPRESENTABLE_RELATIVE of the largest component). Every colour, for a linear source."""
+    from generator.colorimetry.transfer import Linear
+    from generator.verify.metrics import colour_relative_error
+
+    if isinstance(source.curve, Linear):
+        return np.ones(len(ref), dtype=bool)
+    with np.errstate(all="ignore"):
+        code = reference.from_reference(spec, source, ref) if code is None else code
+        return colour_relative_error(reference.to_reference(spec, source, code), ref) <= \
+            tolerances.REPRESENTABLE_RELATIVE
+
+
 def probes(spec: Spec, source: ColourSpace, display: Display, count: int = COUNT,
            gamut_source: ColourSpace | None = None) -> dict[str, np.ndarray]:
     """The probe sets as scene-reference linear RGB, shape (n, 3) each.
@@ -85,8 +105,9 @@ def training(spec: Spec, source: ColourSpace, display: Display, method: str, cou
     for name, linear in sets.items():
         ref = reference.apply_matrix(to_reference, linear)
         with np.errstate(all="ignore"):
-            out[name] = (reference.from_reference(spec, source, ref),
-                         reference.mapped_view(spec, display, method, ref, params))
+            code = reference.from_reference(spec, source, ref)
+            keep = representable(spec, source, ref, code)
+            out[name] = (code[keep], reference.mapped_view(spec, display, method, ref[keep], params))
     return out
 
 
@@ -106,13 +127,16 @@ def set_errors(spec: Spec, source: ColourSpace | None, display: Display, method:
     """Per-colour errors of ``apply`` (source code values (n, 3) -> display code values)
     on every set, and their unit. ``source`` None means the input is scene-reference
     linear RGB. A set with no colours (no out-of-gamut colours when the source gamut
-    is the display's) is left out."""
+    is the display's, no over-range ones a bounded source holds) is left out."""
     space = source or spec.reference
     result, unit = {}, ""
     for name, ref in probes(spec, space, display, count, gamut_source).items():
+        code = ref if source is None else reference.from_reference(spec, source, ref)
+        if source is not None:
+            keep = representable(spec, source, ref, code)
+            ref, code = ref[keep], code[keep]
         if not len(ref):
             continue
-        code = ref if source is None else reference.from_reference(spec, source, ref)
         with np.errstate(all="ignore"):
             expected = reference.mapped_view(spec, display, method, ref)
         result[name], unit = errors(display, apply(code), expected)

@@ -75,22 +75,19 @@ def determinate(src: paths.Endpoint, dst: paths.Endpoint, codes: np.ndarray) -> 
         return np.all(np.abs(apply_matrix(np.linalg.inv(dst.matrix), ref)) > shift, axis=-1)
 
 
-def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.ndarray) -> np.ndarray:
-    """The departure OCIO's own operators for a view's mapping may make, in display-linear
-    RGB, given the float32 ``shift`` of the display's linear values ``linear``: for the ACES
-    gamut compression (a fixed function), RGC_OCIO_SCALED of max(1, largest component) of
-    the normalised display RGB; for desaturate, the luminance's share of ``shift`` times
-    the mixed colour per unit luminance, ``(c - m) / (Y - m)`` for a colour whose smallest
-    channel ``m`` is negative (a colour of luminance near 0 maps near black, up to
-    1 / (smallest luminance weight) times its luminance's rounding), plus the float32
-    resolution of its HSV values through the view (:func:`hsv_rounding_shift`); 0 for the
-    others."""
-    method = paths.view_method(view)
-    if method == "rgc":
-        scale = np.maximum(1.0, np.max(np.abs(linear / display.clip_high), axis=-1, keepdims=True))
-        return tolerances.RGC_OCIO_SCALED * scale * display.clip_high * np.ones_like(linear)
-    if method != "desaturate":
-        return np.zeros_like(linear)
+def _rgc_shift(display: Display, linear: np.ndarray, shift: np.ndarray) -> np.ndarray:
+    """The ACES gamut compression (a fixed function): RGC_OCIO_SCALED of max(1, largest
+    component) of the normalised display RGB."""
+    scale = np.maximum(1.0, np.max(np.abs(linear / display.clip_high), axis=-1, keepdims=True))
+    return tolerances.RGC_OCIO_SCALED * scale * display.clip_high * np.ones_like(linear)
+
+
+def _desaturate_shift(display: Display, linear: np.ndarray, shift: np.ndarray) -> np.ndarray:
+    """Desaturate: the luminance's share of ``shift`` times the mixed colour per unit
+    luminance, ``(c - m) / (Y - m)`` for a colour whose smallest channel ``m`` is negative (a
+    colour of luminance near 0 maps near black, up to 1 / (smallest luminance weight) times
+    its luminance's rounding), plus the float32 resolution of its HSV values through the
+    view (:func:`hsv_rounding_shift`)."""
     from generator.luts.hsv import luminance_weights
 
     weights = luminance_weights(display)
@@ -99,6 +96,19 @@ def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.n
     with np.errstate(all="ignore"):
         per_luminance = np.where(low[..., None] < 0.0, (linear - low[..., None]) / (luminance - low)[..., None], 0.0)
     return np.nan_to_num(per_luminance) * (shift @ weights)[..., None] + hsv_rounding_shift(display, linear)
+
+
+#: Views whose mapping OCIO computes with operators of its own (a fixed function, OCIO's
+#: HSV), method to the departure those may make (:func:`_operator_shift`).
+OPERATOR_SHIFTS = {"rgc": _rgc_shift, "desaturate": _desaturate_shift}
+
+
+def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.ndarray) -> np.ndarray:
+    """The departure OCIO's own operators for a view's mapping may make, in display-linear
+    RGB, given the float32 ``shift`` of the display's linear values ``linear``
+    (:data:`OPERATOR_SHIFTS`; 0 for the other views)."""
+    method = OPERATOR_SHIFTS.get(paths.view_method(view))
+    return np.zeros_like(linear) if method is None else method(display, linear, shift)
 
 
 def hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:

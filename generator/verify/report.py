@@ -9,13 +9,12 @@ from __future__ import annotations
 import base64
 import html
 import json
-import os
-import tempfile
 from collections import defaultdict
 from pathlib import Path
 
 import numpy as np
 
+from generator.files import write_atomic
 from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS
 from generator.verify.run import Verification
 
@@ -103,23 +102,6 @@ def to_json(verification: Verification) -> dict:
                      "compared": o.compared, "undefined": o.undefined, "policy_violations": o.violations,
                      "note": o.note} for o in verification.outcomes],
     }
-
-
-def write_atomic(path: Path, data: bytes) -> None:
-    """Write ``data`` to ``path`` through a temporary sibling and a rename, with the
-    permissions a plain write would give (the temporary file is private)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(handle, "wb") as out:
-            out.write(data)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(temporary, 0o666 & ~umask)
-        os.replace(temporary, path)
-    finally:
-        if os.path.exists(temporary):
-            os.unlink(temporary)
 
 
 def _html_table(header, body) -> str:

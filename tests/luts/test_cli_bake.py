@@ -79,10 +79,11 @@ def test_a_failed_bake_leaves_no_file(tmp_path, monkeypatch):
 
 
 def test_a_failed_write_leaves_no_file(tmp_path, monkeypatch):
+    from generator import files as writer
     from generator.luts import bake
 
     files = {tmp_path / "a.spi3d": b"1", tmp_path / "a.spi1d": b"2"}
-    real_replace = bake.os.replace
+    real_replace = writer.os.replace
     calls = []
 
     def failing(src, dst):
@@ -91,7 +92,7 @@ def test_a_failed_write_leaves_no_file(tmp_path, monkeypatch):
             raise OSError("no space")
         real_replace(src, dst)
 
-    monkeypatch.setattr(bake.os, "replace", failing)
+    monkeypatch.setattr(writer.os, "replace", failing)
     with pytest.raises(OSError):
         bake.write(files)
     assert list(tmp_path.iterdir()) == []
