@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import importlib
+import signal
 import sys
+import threading
 
 import click
 
@@ -45,7 +47,25 @@ def fail(message: str) -> None:
     sys.exit(2)
 
 
+def _terminated(signum, frame) -> None:
+    """SIGTERM ends the command as an exception would, so staged output is removed."""
+    raise SystemExit(128 + signum)
+
+
 def main(argv=None) -> None:
+    """Run a command; on the main thread, SIGTERM ends it as an exception would (staged
+    output removed), the previous handler restored after."""
+    if threading.current_thread() is not threading.main_thread():
+        _run(argv)
+        return
+    previous = signal.signal(signal.SIGTERM, _terminated)
+    try:
+        _run(argv)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _run(argv) -> None:
     from generator.colour_science import skip_plotting
     from generator.spec.schema import SpecError
 

@@ -12,7 +12,7 @@ import click
 @click.argument("spec", required=False, type=click.Path(dir_okay=False))
 @click.option("-o", "--output", type=click.Path(file_okay=False), help="Folder to write (default: configs/<name>).")
 @click.option("--ocio-version", help="Config version to write, e.g. 2.1 (overrides the spec).")
-@click.option("--force", is_flag=True, help="Replace a non-empty output folder.")
+@click.option("--force", is_flag=True, help="Replace the output folder if it holds a previous build.")
 def command(spec, output, ocio_version, force):
     from generator.ocio.write import build, for_folder
     from generator.spec import load

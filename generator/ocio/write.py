@@ -50,11 +50,35 @@ def write_files(spec: Spec, folder: Path) -> BuildResult:
     return BuildResult(folder, len(cfg.getColorSpaceNames()), len(cfg.getDisplays()), views, files, worst)
 
 
+#: What a build writes into its folder: only a folder holding these alone, the resolved spec
+#: among them, is a previous build that ``--force`` may replace.
+BUILD_ENTRIES = (CONFIG_FILENAME, LUT_FOLDER, resolved.FILENAME)
+
+
+def _replace_problem(out_dir: Path) -> str:
+    """Why ``--force`` may not replace the existing ``out_dir`` ("" when it may: a previous build)."""
+    if not out_dir.is_dir():
+        return "is a file; -o takes a folder"
+    names = sorted(entry.name for entry in out_dir.iterdir())
+    foreign = [name for name in names if name not in BUILD_ENTRIES]
+    if foreign:
+        return (f"holds {foreign[0]!r}, which no build writes; --force replaces only a previous build "
+                f"(a folder of {', '.join(BUILD_ENTRIES)})")
+    if resolved.FILENAME not in names:
+        return f"has no {resolved.FILENAME}, so it is not a previous build; --force replaces only those"
+    return ""
+
+
 def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
-    """Build ``spec`` into ``out_dir`` (replacing a non-empty one only with ``force``)."""
+    """Build ``spec`` into ``out_dir``: a new or empty folder, or with ``force`` a previous
+    build (never a folder holding anything a build does not write)."""
     out_dir = Path(out_dir).absolute()
-    if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())) and not force:
-        raise SpecError(str(out_dir), "-o", "exists and is not empty; pass --force to replace it")
+    if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())):
+        if not force and out_dir.is_dir():
+            raise SpecError(str(out_dir), "-o", "exists and is not empty; pass --force to replace a previous build")
+        problem = _replace_problem(out_dir)
+        if problem:
+            raise SpecError(str(out_dir), "-o", problem)
     with staged_folder(out_dir) as staging:
         result = write_files(spec, staging)
     return replace(result, path=out_dir)

@@ -50,6 +50,35 @@ def test_build_writes_a_named_config_and_refuses_to_overwrite(tmp_path, capsys):
     assert run(capsys, "build", "-o", str(out), "--force")[0] == 0
 
 
+@pytest.mark.parametrize("foreign", ("footage/shot.exr", "config.ocio"))
+def test_force_replaces_only_a_previous_build(tmp_path, capsys, foreign):
+    """A folder holding anything a build does not write (footage), or not holding the resolved
+    spec a build writes (a hand-made config alone), is never replaced, --force or not."""
+    out = tmp_path / "show"
+    (out / foreign).parent.mkdir(parents=True, exist_ok=True)
+    (out / foreign).write_bytes(b"keep")
+    code, _, err = run(capsys, "build", "-o", str(out), "--force")
+    assert code == 2 and err.count("\n") == 1 and "previous build" in err
+    assert (out / foreign).read_bytes() == b"keep"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["show"]
+
+
+def test_terminated_build_leaves_nothing(tmp_path):
+    """SIGTERM while the folder is being written removes the staging folder."""
+    import signal
+    import time
+
+    build = subprocess.Popen([sys.executable, "-m", "generator", "build", "-o", str(tmp_path / "show")],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while not any(tmp_path.iterdir()) and build.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.01)
+    assert build.poll() is None, "the build ended before it could be terminated"
+    build.send_signal(signal.SIGTERM)
+    assert build.wait(timeout=60) == 128 + signal.SIGTERM
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_bad_spec_gives_one_line_exit_2_and_writes_nothing(tmp_path, capsys):
     spec = tmp_path / "bad.toml"
     spec.write_text('colour_spaces = ["ACEScg", "Linear Rec.709 (sRGB)", "S-Log3 S-Gamut9"]\n')
