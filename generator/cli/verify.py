@@ -17,7 +17,7 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
 @click.option("--report", "report_dir", type=click.Path(file_okay=False),
               help="Folder to write report.html (self-contained) and summary.json into.")
 @click.option("--quick", is_flag=True, help="Small probe sets: every check, far fewer samples.")
-@click.option("--only", default="", help="Run only the checks whose title contains this text (e.g. HLG).")
+@click.option("--only", default="", help="Run only the checks whose title contains this text (e.g. HLG); an error if none does.")
 @click.option("--summary", "summary_only", is_flag=True, help="Print the summary, not every row.")
 def command(config, engines, report_dir, quick, only, summary_only):
     from generator.cli import fail

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import tolerances
+from generator.luts.spi1d import format_spi1d
 from generator.verify.metrics import relative_error
 
 MIN_SIZE = 1024
@@ -51,6 +52,11 @@ class _Shaped:
 
     def decode(self, u):
         return self.curve.decode(self.code(u))
+
+
+def curve_file(baked: BakedCurve) -> bytes:
+    """The .spi1d file of ``baked``, as the config references it."""
+    return format_spi1d(baked.values).encode("ascii")
 
 
 def slug(name: str) -> str:

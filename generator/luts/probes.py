@@ -150,8 +150,9 @@ def measure(spec: Spec, source: ColourSpace | None, display: Display, method: st
     return {name: Figures(float(e.max()), float(np.percentile(e, 99)), unit) for name, e in sets.items()}
 
 
-def ocio_apply(transform, interpolation=None):
-    """A function applying an OCIO transform (e.g. a FileTransform) in float32 on the CPU.
+def ocio_apply(transform, interpolation=None, search_path: str = ""):
+    """A function applying an OCIO transform (e.g. a FileTransform) in float32 on the CPU;
+    files named by a relative path are looked up on ``search_path``.
 
     OCIO caches files by path; the cache is cleared first so a file rewritten at
     the same path is read anew."""
@@ -160,7 +161,9 @@ def ocio_apply(transform, interpolation=None):
     ocio.ClearAllCaches()
     if interpolation is not None:
         transform.setInterpolation(interpolation)
-    processor = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
+    config = ocio.Config.CreateRaw()
+    config.setSearchPath(search_path)
+    processor = config.getProcessor(transform).getDefaultCPUProcessor()
 
     def apply(code):
         pixels = np.ascontiguousarray(np.asarray(code, dtype=np.float32))

@@ -20,7 +20,7 @@ import numpy as np
 
 from generator.luts import formats, hsv, hsv_axes, lattice, probes
 from generator.luts.axes import LOG_METHODS
-from generator.luts.curve1d import slug
+from generator.luts.curve1d import curve_file, slug
 from generator.spec.schema import Display, Spec
 
 #: Lattice size of the config's view LUTs.
@@ -99,10 +99,11 @@ def lut_steps(matrix, path: str, hsv_folder: str | None = None) -> list:
 
 
 def view_transform(matrix, path: str, spec: Spec | None = None, display: Display | None = None,
-                   hsv_folder: str | None = None):
+                   hsv_folder: str | None = None, bakes: dict | None = None):
     """:func:`lut_steps` as a GroupTransform; with ``spec`` and ``display``, for a LUT ending
     in display light, then the display's own encoding (from normalised display-linear RGB
-    through CIE XYZ)."""
+    through CIE XYZ), whose baked curve files (a tabulated EOTF's, by name, for the search
+    path to find) go into ``bakes`` as in the config."""
     import PyOpenColorIO as ocio
 
     from generator.colorimetry import reference
@@ -111,7 +112,7 @@ def view_transform(matrix, path: str, spec: Spec | None = None, display: Display
     steps = lut_steps(matrix, path, hsv_folder)
     if display is not None:
         steps += [matrix_transform(reference.normalised_display_to_xyz(spec, display)),
-                  *display_steps(spec, display, {})]
+                  *display_steps(spec, display, {} if bakes is None else bakes)]
     return ocio.GroupTransform(steps)
 
 
@@ -153,14 +154,17 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
 def _measured(spec: Spec, display: Display, method: str, name: str, data: bytes, beside: dict, matrix,
               light: bool, hsv_view: bool = False) -> ViewLut:
     """The view file ``data`` (with the files ``beside`` it, name to bytes) measured through
-    OCIO as the config runs it, as a :class:`ViewLut`."""
+    OCIO as the config runs it (every file by name on the search path, the display's baked
+    curve among them), as a :class:`ViewLut`."""
     matrix = tuple(tuple(float(v) for v in row) for row in matrix)
+    bakes: dict = {}
+    transform = view_transform(matrix, name, *((spec, display) if light else ()),
+                               hsv_folder="" if hsv_view else None, bakes=bakes)
+    files = {name: data, **beside, **{filename: curve_file(baked) for filename, baked in bakes.items()}}
     with tempfile.TemporaryDirectory() as folder:
-        for filename, content in {name: data, **beside}.items():
+        for filename, content in files.items():
             (Path(folder) / filename).write_bytes(content)
-        transform = view_transform(matrix, str(Path(folder) / name), *((spec, display) if light else ()),
-                                   hsv_folder=folder if hsv_view else None)
-        figures = probes.measure(spec, None, display, method, probes.ocio_apply(transform),
+        figures = probes.measure(spec, None, display, method, probes.ocio_apply(transform, search_path=folder),
                                  gamut_source=_gamut_source(spec))
     unit = next(iter(figures.values())).unit
     return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, light, hsv_view)

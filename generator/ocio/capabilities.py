@@ -39,6 +39,16 @@ BUILTIN_CODE_DOMAIN = {
     "CURVE - APPLE_LOG_to_LINEAR": (0.0, float("inf")),
 }
 
+#: OCIO's library evaluates its ST-2084 builtin (PQ code to light, 1 = 100 cd/m²) as a LUT1D,
+#: not the formula: libraries before 2.4 over 4096 codes from 0 to 1, 2.4 and later over every
+#: half-float code (OpenColorIO's Displays.cpp). A display encodes through its inverse, which
+#: OCIO's default optimisation replaces with a table over every half-float light. First library
+#: version -> table size (HALF_DOMAIN: every half-float code).
+PQ_BUILTIN = "CURVE - ST-2084_to_LINEAR"
+HALF_DOMAIN = 0
+PQ_BUILTIN_TABLES = {(2, 0): 4096, (2, 4): HALF_DOMAIN}
+
+
 #: Whole-space builtins: encodings that are not a per-channel curve and a gamut.
 SPACE_BUILTINS = {
     "adx10": "ADX10_to_ACES2065-1",
@@ -70,3 +80,10 @@ def builtin_code_domain(curve_name: str, version: tuple[int, int]) -> tuple[floa
     if not domains:
         return None
     return max(lo for lo, _ in domains), min(hi for _, hi in domains)
+
+
+def pq_builtin_tables(version: tuple[int, int]) -> tuple[int, ...]:
+    """The ST-2084 tables (:data:`PQ_BUILTIN_TABLES`) of the libraries that read a config of
+    ``version``: the oldest such library's (the last entry at or before ``version``) and every later one."""
+    first = max(v for v in PQ_BUILTIN_TABLES if v <= version)
+    return tuple(size for v, size in sorted(PQ_BUILTIN_TABLES.items()) if v >= first)

@@ -10,7 +10,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from generator.files import staged_folder
-from generator.luts.spi1d import format_spi1d
+from generator.luts.curve1d import curve_file
 from generator.ocio.emit import LUT_FOLDER, emit
 from generator.spec import resolved
 from generator.spec.schema import Spec, SpecError
@@ -39,7 +39,7 @@ def write_files(spec: Spec, folder: Path) -> BuildResult:
     if emitted.luts or emitted.view_luts:
         (folder / LUT_FOLDER).mkdir()
     for name, lut in emitted.luts.items():
-        (folder / LUT_FOLDER / name).write_text(format_spi1d(lut.values), encoding="utf-8")
+        (folder / LUT_FOLDER / name).write_bytes(curve_file(lut))
     for name, data in emitted.view_luts.items():
         (folder / LUT_FOLDER / name).write_bytes(data)
     (folder / resolved.FILENAME).write_text(resolved.dumps(spec), encoding="utf-8")

@@ -6,17 +6,21 @@ proportion to |M||x| (Higham 2002, 3.5), so a channel near zero beside large
 ones carries an absolute error, and a display or camera curve that is steep
 there (a pure power law at 0) turns it into a visible code difference. The
 verifier takes exactly that much off before its metric, computed here from
-the reference evaluation; tolerances are never widened for it.
+the reference evaluation; tolerances are never widened for it. So it does for
+OCIO's own tabulation of the PQ curve, which no config can change either
+(:func:`builtin_encoding_allowance`).
 """
 
 from __future__ import annotations
+
+from functools import lru_cache
 
 import numpy as np
 
 from generator import tolerances
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import apply_matrix
-from generator.spec.schema import Display
+from generator.spec.schema import Display, Spec
 from generator.verify import paths
 
 
@@ -183,3 +187,68 @@ def view_allowance(src, back, display, view, codes, expected, clip_encode):
     if paths.view_method(view) == "clip":
         return float32_allowance(src, back, clip_encode, codes)
     return mapped_allowance(src, back, display, view, codes, expected)
+
+
+def _half_floats(top: float = np.inf) -> np.ndarray:
+    """Every finite half float from 0 to ``top``, ascending, as float64."""
+    halves = np.arange(0x7C00, dtype=np.uint16).view(np.float16).astype(np.float64)
+    return halves[halves <= top]
+
+
+@lru_cache(maxsize=8)
+def _pq_table(curve, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """OCIO's ST-2084 table of ``size`` codes from 0 to 1 (HALF_DOMAIN: every half-float code
+    up to 1) as (lights, codes), the lights in float32 as OCIO stores them; where several codes
+    give one light (the codes below PQ's black), the first, so the inverse departs most there."""
+    from generator.ocio.capabilities import HALF_DOMAIN
+
+    codes = _half_floats(1.0) if size == HALF_DOMAIN else np.linspace(0.0, 1.0, size)
+    lights = np.asarray(curve.decode(codes), dtype=np.float32).astype(np.float64)
+    lights, first = np.unique(lights, return_index=True)
+    return lights, codes[first]
+
+
+def pq_table_departure(curve, size: int, light: np.ndarray) -> np.ndarray:
+    """How far OCIO's encoding of display ``light`` (1 = 100 cd/m²) through the inverse of its
+    ST-2084 table of ``size`` (:data:`generator.ocio.capabilities.PQ_BUILTIN_TABLES`) lands from
+    PQ ``curve``: the larger of the exact inverse (PQ interpolated linearly between the lights of
+    the table's codes) and the default optimisation's (that inverse tabulated at every half-float
+    light, interpolated linearly). Both chords cut PQ's steep curvature near black, where the
+    half floats and the table's codes are coarse: up to 0.07 ten-bit codes below 1e-4 cd/m², 0.003
+    up to 0.01 cd/m² (4096 codes)."""
+    lights, codes = _pq_table(curve, size)
+    halves = _half_floats()
+    light = np.asarray(light, dtype=np.float64)
+    with np.errstate(all="ignore"):
+        exact = np.asarray(curve.encode(light), dtype=np.float64)
+        inverse = np.interp(light, lights, codes)
+        fast = np.interp(light, halves, np.interp(halves, lights, codes))
+    return np.nan_to_num(np.maximum(np.abs(inverse - exact), np.abs(fast - exact)))
+
+
+def builtin_encoding_allowance(spec: Spec, display: Display, expected: np.ndarray) -> np.ndarray | None:
+    """The code departure of OCIO's own evaluation of ``display``'s encoding at codes ``expected``,
+    per sample and channel, over the libraries that read the config (:func:`pq_table_departure`
+    for a display the ST-2084 builtin encodes); None when the encoding is exact."""
+    from generator.ocio.capabilities import PQ_BUILTIN, curve_chain, pq_builtin_tables
+    from generator.ocio.curves import curve_label
+
+    chain = curve_chain(curve_label(display.name, display.eotf_name), spec.ocio_version) or ()
+    if PQ_BUILTIN not in {style for style, _ in chain}:
+        return None
+    with np.errstate(all="ignore"):
+        light = np.clip(reference.display_decode(display, expected), 0.0, display.clip_high)
+    return np.max([pq_table_departure(display.eotf, size, light) for size in pq_builtin_tables(spec.ocio_version)],
+                  axis=0)
+
+
+def with_encoding(allowance: np.ndarray | None, spec: Spec, display: Display | None,
+                  expected: np.ndarray | None) -> np.ndarray | None:
+    """``allowance`` plus :func:`builtin_encoding_allowance` for a check whose output is
+    ``display``'s codes ``expected`` (unchanged otherwise)."""
+    if display is None or expected is None:
+        return allowance
+    encoding = builtin_encoding_allowance(spec, display, expected)
+    if encoding is None:
+        return allowance
+    return encoding if allowance is None else allowance + encoding

@@ -17,7 +17,7 @@ import numpy as np
 from generator import tolerances
 from generator.colorimetry import reference
 from generator.verify import paths, probes
-from generator.verify.allowance import determinate, float32_allowance, view_allowance
+from generator.verify.allowance import determinate, float32_allowance, view_allowance, with_encoding
 from generator.verify.probes import Family, Probes, Sizes
 from generator.spec.schema import Display, Spec
 
@@ -213,6 +213,7 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
                                             end.encode)
             else:
                 allowance = float32_allowance(ref, end.matrix, end.encode, inputs.values)
+            allowance = with_encoding(allowance, spec, end.display, expected)
         keep = _keep(None, end, end.display, inputs.values, expected)
         if end.valid is not None and keep is not None:
             keep &= determinate(ref, end, inputs.values)
@@ -256,7 +257,8 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
                     continue
                 through = None if fn is None else (lambda v, f=fn, s=src: f(s.decode(v)))
                 expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
-                allowance = view_allowance(src, back, display, view, inputs.values, expected, clip)
+                allowance = with_encoding(view_allowance(src, back, display, view, inputs.values, expected, clip),
+                                          spec, display, expected)
                 out.append(Check(VIEW, f"{display.name} / {view}", src.name, output=paths.DISPLAY, expected=expected,
                                  problem=problem, allowance=allowance,
                                  keep=_keep(src, None, display, inputs.values, expected), **common,

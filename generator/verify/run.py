@@ -145,7 +145,8 @@ def _explained(config: Path, outcomes: list[Outcome]) -> list[Outcome]:
 def verify(config_path: str | Path, engines=("ocio",), density: str = "full", kinds=checks_module.KINDS,
            workdir: str | Path | None = None, only: str = "") -> Verification:
     """Verify the config at ``config_path`` through the named engine families: the checks
-    of the given ``kinds`` whose title contains ``only`` (every one when empty)."""
+    of the given ``kinds`` whose title contains ``only`` (every one when empty; SpecError when
+    it matches none)."""
     import PyOpenColorIO as ocio
 
     started = time.perf_counter()
@@ -156,6 +157,9 @@ def verify(config_path: str | Path, engines=("ocio",), density: str = "full", ki
     if unknown:
         raise SpecError("--engines", ",".join(unknown), f"unknown engine; allowed: {', '.join(registry)}")
     checks = [c for c in checks_module.build_checks(spec, density, kinds) if only in c.title]
+    if only and not checks:
+        raise SpecError("--only", only, "matches no check title (titles are 'SPACE -> SPACE', "
+                                        "'DISPLAY / VIEW from SPACE' and LUT file paths such as 'luts/NAME.clf')")
     timings = {"checks": time.perf_counter() - started}
     runs, outcomes = [], []
     with tempfile.TemporaryDirectory(prefix="ocioforge-verify-", dir=workdir) as tmp:

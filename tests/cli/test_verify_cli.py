@@ -48,6 +48,7 @@ def test_verify_fails_and_names_the_broken_lut(config):
 @pytest.mark.parametrize("args, message", [
     (["missing/config.ocio"], "no such config file"),
     (["{config}", "--engines", "ocio,nuke"], "unknown engine"),
+    (["{config}", "--engines", "ocio", "--quick", "--only", "zzz"], "--only:zzz: matches no check title"),
 ])
 def test_verify_bad_input_is_one_line_and_exit_2(config, args, message):
     result = CliRunner().invoke(verify, [a.format(config=config) for a in args])

@@ -48,6 +48,27 @@ def test_hdr_view_lut_ends_in_display_light_and_meets_the_targets(default_spec, 
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP
 
 
+
+def test_a_display_with_a_tabulated_eotf_has_its_views_measured_through_its_baked_curve(tmp_path):
+    """No CLF operator encodes a tabulated EOTF: the view file ends in display light and the
+    config encodes it with the display's baked curve, which the measurement must find (it
+    looked the file up before it was written)."""
+    from generator.spec import load
+
+    code = np.linspace(0.0, 1.0, 65)
+    rows = "".join(f"{c:.17g},{c ** 2.4:.17g}\n" for c in code)
+    (tmp_path / "eotf.csv").write_text("code,linear\n" + rows)
+    (tmp_path / "show.toml").write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[display]]\nname = "Tab EOTF"\ngamut = "Rec.709"\neotf = { family = "tabulated", file = "eotf.csv" }\n'
+        'views = ["Colorimetric", "Scale", "Desaturate", "Raw"]\n')
+    spec = load.load(tmp_path / "show.toml")
+    for method in ("scale", "desaturate"):
+        view = bake_view_lut(spec, spec.displays[0], method)
+        assert view.light and view.unit == "10-bit codes"
+        assert view.figures["in_gamut"].maximum <= tolerances.LUT_CLF_IN_GAMUT_CODES, method
+        assert view.bound <= tolerances.LUT_CLF_SCALE_CODES, method
+
 def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
     monkeypatch.setattr(pack, "SOURCES", ("ACEScct",))
     monkeypatch.setattr(pack, "DISPLAYS", ("sRGB - Display",))

@@ -60,3 +60,15 @@ def test_builtin_code_domains_are_where_ocio_clamps(style):
         assert decode(hi + 0.2) == decode(hi) != decode(hi - 0.05)
     else:
         assert decode(1.2) > decode(1.0)
+
+
+def test_the_pq_tables_are_those_of_every_library_reading_a_version():
+    """Before 2.4 OCIO tabulates PQ over 4096 codes, from 2.4 over every half-float code; a
+    config of 2.1 to 2.3 meets both, a newer one only the second, which this library has."""
+    assert capabilities.pq_builtin_tables((2, 1)) == (4096, capabilities.HALF_DOMAIN)
+    assert capabilities.pq_builtin_tables((2, 3)) == (4096, capabilities.HALF_DOMAIN)
+    assert capabilities.pq_builtin_tables((2, 4)) == (capabilities.HALF_DOMAIN,)
+    if tuple(int(v) for v in ocio.__version__.split(".")[:2]) >= (2, 4):
+        transform = ocio.BuiltinTransform(capabilities.PQ_BUILTIN)
+        (table,) = ocio.Config.CreateRaw().getProcessor(transform).createGroupTransform()
+        assert isinstance(table, ocio.Lut1DTransform) and table.getInputHalfDomain() and table.getLength() == 65536

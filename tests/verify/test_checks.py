@@ -155,3 +155,36 @@ def test_custom_curves_are_checked_under_their_files_names_and_as_code_values(tm
                     kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
     assert "luts/tab_to_linear.spi1d" in {o.check.item for o in result.outcomes}
     assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
+
+
+
+@pytest.mark.parametrize("size", [4096, 0])
+def test_the_pq_table_departure_is_what_ocio_makes_of_its_tabulated_pq(default_spec, size):
+    """OCIO tabulates PQ (4096 codes before 2.4, every half-float code after: size 0) and a
+    display encodes through the table's inverse, which default flags tabulate again over
+    half-float light: the modelled departure bounds both evaluations through PyOpenColorIO (to
+    a few float32 roundings of a code up to 1) and is what they reach, near black."""
+    import PyOpenColorIO as ocio
+
+    from generator.ocio.capabilities import HALF_DOMAIN, PQ_BUILTIN
+    from generator.verify.allowance import pq_table_departure
+
+    curve = next(d for d in default_spec.displays if d.eotf_name == "ST 2084").eotf
+    if size == HALF_DOMAIN:
+        transform = ocio.BuiltinTransform(PQ_BUILTIN, ocio.TRANSFORM_DIR_INVERSE)
+    else:  # the table of libraries before 2.4, through this library's inverse
+        transform = ocio.Lut1DTransform(length=size, direction=ocio.TRANSFORM_DIR_INVERSE)
+        for index, value in enumerate(np.asarray(curve.decode(np.linspace(0.0, 1.0, size)), dtype=np.float32)):
+            transform.setValue(index, float(value), float(value), float(value))
+    light = np.concatenate([[0.0], np.geomspace(1e-9, 10.0, 2001)]).astype(np.float32).astype(np.float64)
+    exact = curve.encode(light)
+    model = pq_table_departure(curve, size, light)
+    processor = ocio.Config.CreateRaw().getProcessor(transform)
+    reached = 0.0
+    for flags in (ocio.OPTIMIZATION_DEFAULT, ocio.OPTIMIZATION_LOSSLESS):
+        pixels = np.ascontiguousarray(np.repeat(light[:, None], 3, axis=1), dtype=np.float32)
+        processor.getOptimizedCPUProcessor(flags).applyRGB(pixels)
+        departure = np.abs(pixels[:, 0] - exact)
+        assert np.all(departure <= model + tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF)
+        reached = max(reached, float(departure.max()))
+    assert reached >= 0.95 * model.max() and 1023 * model[light < 1e-6].max() > 0.05
