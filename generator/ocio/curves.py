@@ -23,8 +23,9 @@ def curve_label(space_name: str, curve_name: str) -> str:
 
 
 def _log(curve: transfer.LogCamera) -> ocio.Transform:
+    """LogCameraTransform, or LogAffineTransform without a break. The base is set apart:
+    LogAffineTransform's constructor has no ``base`` argument in any OCIO 2.x Python."""
     args = dict(
-        base=curve.base,
         logSideSlope=[curve.log_side_slope] * 3,
         logSideOffset=[curve.log_side_offset] * 3,
         linSideSlope=[curve.lin_side_slope] * 3,
@@ -32,10 +33,12 @@ def _log(curve: transfer.LogCamera) -> ocio.Transform:
         direction=INVERSE,
     )
     if curve.lin_side_break is None:
-        return ocio.LogAffineTransform(**args)
-    t = ocio.LogCameraTransform(linSideBreak=[curve.lin_side_break] * 3, **args)
-    if curve.linear_slope is not None:
-        t.setLinearSlopeValue([curve.linear_slope] * 3)
+        t = ocio.LogAffineTransform(**args)
+    else:
+        t = ocio.LogCameraTransform(linSideBreak=[curve.lin_side_break] * 3, **args)
+        if curve.linear_slope is not None:
+            t.setLinearSlopeValue([curve.linear_slope] * 3)
+    t.setBase(curve.base)
     return t
 
 
