@@ -8,12 +8,12 @@ size doubles until linear interpolation between nodes stays within
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import numpy as np
 
 from generator import tolerances
+from generator.luts.names import slug
 from generator.verify.metrics import relative_error
 
 MIN_SIZE = 1024
@@ -51,10 +51,6 @@ class _Shaped:
 
     def decode(self, u):
         return self.curve.decode(self.code(u))
-
-
-def slug(name: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
 
 
 def _lut_errors(curve, domain, size: int, jumps=()) -> tuple[float, float]:

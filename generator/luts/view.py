@@ -20,7 +20,7 @@ import numpy as np
 
 from generator.luts import formats, hsv, hsv_axes, lattice, probes
 from generator.luts.axes import LOG_METHODS
-from generator.luts.curve1d import slug
+from generator.luts.names import slug
 from generator.spec.schema import Display, Spec
 
 #: Lattice size of the config's view LUTs.

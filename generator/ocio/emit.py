@@ -55,7 +55,8 @@ def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
     if space.special:
         ap0_to_ref = reference.adx_reference_matrix(spec)
         return [ocio.BuiltinTransform(SPACE_BUILTINS[space.special]), *_matrix_unless_identity(ap0_to_ref)]
-    decode = curves.decode_transforms(curves.curve_label(space.name, space.curve_name), space.curve, spec.ocio_version, bakes)
+    label = curves.curve_label(spec, space.name, space.curve_name)
+    decode = curves.decode_transforms(label, space.curve, spec.ocio_version, bakes)
     return decode + _matrix_unless_identity(reference.space_matrix(spec, space))
 
 
@@ -94,7 +95,7 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
         # The signal ends at code 1 (OCIO 2.1's builtin clamps there, later versions do not).
         return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),
                         ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0)]
-    decode = curves.decode_transforms(curves.curve_label(display.name, display.eotf_name), display.eotf,
+    decode = curves.decode_transforms(curves.curve_label(spec, display.name, display.eotf_name), display.eotf,
                                       spec.ocio_version, bakes)
     return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
 

@@ -24,7 +24,8 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
     (a quarter, a half, three quarters of the way) and on a ramp."""
     from generator.ocio.emit import LUT_FOLDER
 
-    curves = {curve_label(s.name, s.curve_name): s.curve for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
+    curves = {curve_label(spec, s.name, s.curve_name): s.curve
+              for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
     out = []
     for name, curve in curves.items():
         baked = baked_lut(name, curve)

@@ -119,7 +119,8 @@ def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
     def encode(ref):
         return np.clip(reference.from_reference(spec, space, ref), low, high)
 
-    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=curve_label(space.name, space.curve_name) if baked else "",
+    label = curve_label(spec, space.name, space.curve_name) if baked else ""
+    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=label,
                     matrix=matrix, linear=lambda c: space.curve.decode(np.clip(c, low, high)), curve=space.curve)
 
 

@@ -7,9 +7,11 @@ import PyOpenColorIO as ocio
 import pytest
 
 from generator import tolerances
-from generator.colorimetry import transfer
-from generator.ocio.curves import decode_transforms, group
-from generator.verify.metrics import relative_error
+from generator.colorimetry import reference, transfer
+from generator.colorimetry.curves import CURVES
+from generator.luts.names import slug
+from generator.ocio.curves import curve_label, decode_transforms, group, is_baked
+from generator.verify.metrics import colour_relative_error, relative_error
 
 
 def decode_through_ocio(transforms: list, codes: np.ndarray) -> np.ndarray:
@@ -33,3 +35,33 @@ def test_log_camera_decodes_as_the_reference(curve):
     codes = np.linspace(0.1, 1.0, 91).astype(np.float32).astype(np.float64)
     out = decode_through_ocio(decode_transforms("custom", curve, (2, 1), {}), codes)
     assert relative_error(out, curve.decode(codes)).max() < tolerances.ANALYTIC_RELATIVE
+
+
+# --- baked curve files: one per curve --------------------------------------------------------
+
+def test_curves_named_alike_get_files_of_their_own(slugging_alike):
+    spec, folder = slugging_alike
+    labels = {s.name: curve_label(spec, s.name, s.curve_name) for s in spec.colour_spaces if is_baked(
+        s.curve_name, s.curve, spec.ocio_version)}
+    assert labels["CanonLog2 CinemaGamut D55"] == "Canon Log 2"
+    assert len(set(map(slug, labels.values()))) == len(labels)
+    files = {p.name for p in (folder / "luts").iterdir()}
+    assert {f"{slug(label)}_to_linear.spi1d" for label in labels.values()} == files
+
+
+def test_each_space_decodes_with_its_own_curve(slugging_alike):
+    """Through the built config, every baked space decodes as its own curve does (the spaces
+    named alike shared one file before, and all but one decoded with another's curve)."""
+    spec, folder = slugging_alike
+    cfg = ocio.Config.CreateFromFile(str(folder / "config.ocio"))
+    codes = np.repeat(np.linspace(0.0, 1.0, 257)[:, None], 3, axis=1)
+    for space in (s for s in spec.colour_spaces if is_baked(s.curve_name, s.curve, spec.ocio_version)):
+        out = np.ascontiguousarray(codes, dtype=np.float32)
+        cfg.getProcessor(space.name, spec.scene_reference).getDefaultCPUProcessor().applyRGB(out)
+        gain = np.abs(reference.space_matrix(spec, space)).sum(1).max()
+        error = colour_relative_error(out, reference.to_reference(spec, space, codes)) / gain
+        assert error.max() < tolerances.BAKED_CURVE_RELATIVE, space.name
+
+
+def test_library_curves_slug_apart():
+    assert len({slug(name) for name in CURVES}) == len(CURVES)

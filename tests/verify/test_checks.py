@@ -155,3 +155,17 @@ def test_custom_curves_are_checked_under_their_files_names_and_as_code_values(tm
                     kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
     assert "luts/tab_to_linear.spi1d" in {o.check.item for o in result.outcomes}
     assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
+
+
+def test_verify_checks_each_space_against_its_own_curve_file(slugging_alike):
+    """Spaces whose names slug alike (one as a library curve's) each have a file; verify
+    checks every one, and each space through its own (they shared one file before, and
+    verify failed the spaces decoding with another's curve)."""
+    from generator.verify.run import verify
+
+    spec, folder = slugging_alike
+    result = verify(folder / "config.ocio", ("ocio",), density="quick",
+                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
+    files = {f"luts/{p.name}" for p in (folder / "luts").iterdir()}
+    assert len(files) == 4 and files <= {o.check.item for o in result.outcomes}
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
