@@ -13,6 +13,7 @@ import PyOpenColorIO as ocio
 
 from generator.colorimetry import reference
 from generator.luts.curve1d import BakedCurve
+from generator.luts.names import add_file
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
 from generator.spec.load import DISPLAY_REFERENCE, VIEW_METHODS
@@ -121,9 +122,9 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
                  matrix_transform(to_xyz)]
     else:
         lut = bake_view_lut_cached(spec, display, method)
-        view_luts[lut.filename] = lut.data
+        add_file(view_luts, lut.filename, lut.data)
         if lut.hsv:
-            view_luts[hsv.SHARED_FILE] = hsv.shared_clf()
+            add_file(view_luts, hsv.SHARED_FILE, hsv.shared_clf())
         back = (matrix_transform(to_xyz) if lut.light else
                 ocio.GroupTransform(display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE))
         steps = [*lut_steps(lut.matrix, lut.filename, "" if lut.hsv else None), back]

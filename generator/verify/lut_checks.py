@@ -66,7 +66,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
                 continue
             fn = paths.view_function(spec, display, view)
             expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
-            name = f"{LUT_FOLDER}/{view_filename(display, method)}"
+            name = f"{LUT_FOLDER}/{view_filename(spec, display, method)}"
             encode = partial(_encode_light, display) if ends_in_light(display) else None
             out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=inputs,
                              expected=expected, output=paths.DISPLAY, encode=encode,
@@ -95,7 +95,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
 
     light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
     expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
-    name = f"{LUT_FOLDER}/{view_filename(display, HSV_METHOD)}"
+    name = f"{LUT_FOLDER}/{view_filename(spec, display, HSV_METHOD)}"
     return [Check(LUT, shared_name, src=view, lut=shared_name, probes=shared,
                   expected=hsv_axes.shared_coordinates(shared.values), output=paths.CODE),
             Check(LUT, name, src=view, lut=name, probes=coordinates, expected=expected, output=paths.DISPLAY,
