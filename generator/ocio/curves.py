@@ -12,7 +12,7 @@ from generator.colorimetry import transfer
 from generator.colorimetry.curves import CURVES
 from generator.luts.curve1d import BakedCurve, bake_curve
 from generator.luts.names import add_file, file_stems, slug
-from generator.ocio.capabilities import curve_chain
+from generator.ocio.capabilities import clamped_code_domain, curve_chain
 from generator.spec.schema import Spec
 
 INVERSE = ocio.TRANSFORM_DIR_INVERSE
@@ -96,6 +96,17 @@ def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[st
     if is_baked(name, curve, version):
         return _baked(name, curve, bakes)
     return [ocio.BuiltinTransform(style, INVERSE if inverse else FORWARD) for style, inverse in curve_chain(name, version)]
+
+
+def code_clamp(curve_name: str, version: tuple[int, int]) -> list:
+    """A RangeTransform clamping a scene space's codes to where the builtin expressing
+    ``curve_name`` at ``version`` is defined, when the builtin does not clamp by itself
+    (:data:`~generator.ocio.capabilities.BUILTIN_CLAMPED_DOMAIN`); otherwise nothing."""
+    domain = clamped_code_domain(curve_name, version)
+    if domain is None:
+        return []
+    lo, hi = domain
+    return [ocio.RangeTransform(minInValue=lo, maxInValue=hi, minOutValue=lo, maxOutValue=hi)]
 
 
 def group(transforms: list, direction=FORWARD) -> ocio.Transform | None:

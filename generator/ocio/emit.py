@@ -58,7 +58,8 @@ def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
         return [ocio.BuiltinTransform(SPACE_BUILTINS[space.special]), *_matrix_unless_identity(ap0_to_ref)]
     label = curves.curve_label(spec, space.name, space.curve_name)
     decode = curves.decode_transforms(label, space.curve, spec.ocio_version, bakes)
-    return decode + _matrix_unless_identity(reference.space_matrix(spec, space))
+    clamp = curves.code_clamp(space.curve_name, spec.ocio_version)
+    return clamp + decode + _matrix_unless_identity(reference.space_matrix(spec, space))
 
 
 def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace:

@@ -14,7 +14,8 @@ Two documented policies of the generated configs enter the expectation:
   values are clamped to it (:class:`generator.colorimetry.transfer.Function`);
   so is a curve an OCIO builtin expresses, on the codes the builtin decodes
   (:data:`generator.ocio.capabilities.BUILTIN_CODE_DOMAIN`: Canon Log 2 and 3
-  from 0 to 1, Apple Log from 0);
+  from 0 to 1, Apple Log from 0) or the scene space clamps its codes to
+  (:data:`generator.ocio.capabilities.BUILTIN_CLAMPED_DOMAIN`: ST 2084 from 0 to 1);
 * a display space decodes its code values, clips display light to
   [0, peak] (OCIO's range clamp runs both ways) and goes to CIE XYZ-D65; OCIO
   reaches the scene reference from there through the config's default view

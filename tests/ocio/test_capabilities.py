@@ -60,3 +60,16 @@ def test_builtin_code_domains_are_where_ocio_clamps(style):
         assert decode(hi + 0.2) == decode(hi) != decode(hi - 0.05)
     else:
         assert decode(1.2) > decode(1.0)
+
+
+@pytest.mark.parametrize("style", sorted(capabilities.BUILTIN_CLAMPED_DOMAIN))
+def test_builtins_a_config_clamps_do_not_clamp_by_themselves(style):
+    """Outside its domain the builtin goes on (or mirrors), so a scene space clamps first."""
+    import numpy as np
+
+    processor = ocio.Config.CreateRaw().getProcessor(ocio.BuiltinTransform(style)).getDefaultCPUProcessor()
+    lo, hi = capabilities.BUILTIN_CLAMPED_DOMAIN[style]
+    pixel = np.repeat(np.array([[lo - 0.2], [lo], [hi], [hi + 0.2]], dtype=np.float32), 3, axis=1)
+    processor.applyRGB(pixel)
+    below, low, high, above = pixel[:, 0]
+    assert below != low and above != high

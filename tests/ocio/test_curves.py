@@ -10,14 +10,15 @@ from generator import tolerances
 from generator.colorimetry import reference, transfer
 from generator.colorimetry.curves import CURVES
 from generator.luts.names import slug
-from generator.ocio.curves import curve_label, decode_transforms, group, is_baked
+from generator.ocio.curves import code_clamp, curve_label, decode_transforms, is_baked
 from generator.verify.metrics import colour_relative_error, relative_error
+from tests.conftest import VERSIONS
 
 
-def decode_through_ocio(transforms: list, codes: np.ndarray) -> np.ndarray:
-    """``codes`` (one per channel) through the transforms in an empty config."""
+def decode_through_ocio(transforms: list, codes: np.ndarray, direction=ocio.TRANSFORM_DIR_FORWARD) -> np.ndarray:
+    """``codes`` (one per channel) through the transforms in an empty config (or the reverse)."""
     cfg = ocio.Config.CreateRaw()
-    processor = cfg.getProcessor(group(transforms)).getDefaultCPUProcessor()
+    processor = cfg.getProcessor(ocio.GroupTransform(transforms), direction).getDefaultCPUProcessor()
     rgb = np.ascontiguousarray(np.repeat(codes[:, None], 3, axis=1), dtype=np.float32)
     processor.applyRGB(rgb)
     return rgb[:, 0].astype(np.float64)
@@ -35,6 +36,21 @@ def test_log_camera_decodes_as_the_reference(curve):
     codes = np.linspace(0.1, 1.0, 91).astype(np.float32).astype(np.float64)
     out = decode_through_ocio(decode_transforms("custom", curve, (2, 1), {}), codes)
     assert relative_error(out, curve.decode(codes)).max() < tolerances.ANALYTIC_RELATIVE
+
+
+@pytest.mark.parametrize("version", VERSIONS, ids=lambda v: f"ocio{v[0]}.{v[1]}")
+def test_a_pq_scene_space_is_defined_on_the_signal_range_only(version):
+    """OCIO's PQ builtin mirrors negative codes and light and decodes codes from 2 up to 0;
+    a scene space clamps its codes first, and decodes and encodes as the reference does
+    beyond the signal range too (the space failed verify by 1.45 relative before)."""
+    pq = CURVES["ST 2084"]
+    transforms = code_clamp("ST 2084", version) + decode_transforms("ST 2084", pq, version, {})
+    codes = np.array([-1.0, -0.457, -0.01, 0.0, 0.5, 1.0, 1.01, 1.5, 2.5, 10.04, 11.5])
+    decoded = decode_through_ocio(transforms, codes)
+    assert relative_error(decoded, pq.decode(codes)).max() < tolerances.ANALYTIC_RELATIVE
+    light = np.array([-1.0, -0.1, -1e-4, 0.0, 1.0, 100.0, 101.0, 1e5])
+    encoded = decode_through_ocio(transforms, light, ocio.TRANSFORM_DIR_INVERSE)
+    assert relative_error(encoded, pq.encode(light)).max() < tolerances.ANALYTIC_RELATIVE
 
 
 # --- baked curve files: one per curve --------------------------------------------------------
