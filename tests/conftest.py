@@ -53,3 +53,30 @@ def build_config(tmp_path_factory, default_spec):
         return built[version]
 
     return _build
+
+
+CURVE_A = "code,linear\n0,0\n0.25,0.02\n0.5,0.12\n0.75,0.45\n1,1\n"
+CURVE_B = "code,linear\n0,0\n0.5,0.4\n1,1.5\n"
+#: Custom spaces whose names slug alike, one of them as a library curve's name does.
+SLUGGING_ALIKE = (("Tab Log", "a.csv"), ("Tab-Log", "b.csv"), ("Canon Log 2", "b.csv"))
+
+
+@pytest.fixture(scope="session")
+def slugging_alike(tmp_path_factory):
+    """A 2.1 config of custom tabulated spaces whose names slug alike, one as the library's
+    Canon Log 2 (whose space the config has too): the spec and the config's folder."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    folder = tmp_path_factory.mktemp("alike")
+    (folder / "a.csv").write_text(CURVE_A)
+    (folder / "b.csv").write_text(CURVE_B)
+    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+            '"CanonLog2 CinemaGamut D55"]\n')
+    for name, csv in SLUGGING_ALIKE:
+        text += (f'[[custom_space]]\nname = "{name}"\ngamut = "P3-D65"\n'
+                 f'transfer = {{ family = "tabulated", file = "{csv}" }}\n')
+    (folder / "alike.toml").write_text(text + '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+    spec = for_folder(load.load(folder / "alike.toml"), folder / "config", (2, 1))
+    build(spec, folder / "config")
+    return spec, folder / "config"

@@ -25,7 +25,7 @@ def _ocio_snippet(matrix) -> str:
 
 def _node_name(space) -> str:
     """The space's first alias usable as a node name (letters, digits, underscores)."""
-    from generator.luts.curve1d import slug
+    from generator.luts.names import slug
 
     return next((a for a in space.aliases if a.replace("_", "").isalnum()), slug(space.name))
 

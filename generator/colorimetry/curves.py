@@ -289,14 +289,22 @@ def _colour_models(name: str, **kwargs):
     return call
 
 
+#: Where SMPTE ST 2084 is defined: codes 0 to 1, light 0 to 10000 cd/m² (100 in units of 100 cd/m²).
+PQ_CODE_DOMAIN = (0.0, 1.0)
+PQ_PEAK = 100.0
+
+
 def _pq_decode(code):
-    """SMPTE ST 2084 EOTF, in units of 100 cd/m² (1.0 = 100 cd/m², 100.0 = 10000)."""
-    return _colour_models("eotf_ST2084")(code) / 100.0
+    """SMPTE ST 2084 EOTF, in units of 100 cd/m² (1.0 = 100 cd/m², 100.0 = 10000); codes
+    outside the signal range are clamped to it (the formula decodes codes above about 1.99
+    to negative light, and negative codes to 0)."""
+    return _colour_models("eotf_ST2084")(np.clip(code, *PQ_CODE_DOMAIN)) / 100.0
 
 
 def _pq_encode(linear):
-    """SMPTE ST 2084 inverse EOTF from units of 100 cd/m²."""
-    return _colour_models("eotf_inverse_ST2084")(np.asarray(linear, dtype=np.float64) * 100.0)
+    """SMPTE ST 2084 inverse EOTF from units of 100 cd/m²; light outside 0 to 10000 cd/m² is
+    clamped to it (the formula encodes negative light to codes far above 1)."""
+    return _colour_models("eotf_inverse_ST2084")(np.clip(np.asarray(linear, dtype=np.float64), 0.0, PQ_PEAK) * 100.0)
 
 
 def _quiet(fn):

@@ -189,7 +189,7 @@ def bake(req: Request) -> dict[str, bytes]:
 
 
 def identifier(req: Request) -> str:
-    from generator.luts.curve1d import slug
+    from generator.luts.names import slug
 
     return f"ocioforge:{slug(req.source.name)}_to_{slug(req.display.name)}_{req.method}_{req.size}"
 

@@ -8,12 +8,12 @@ size doubles until linear interpolation between nodes stays within
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
 
 import numpy as np
 
 from generator import tolerances
+from generator.luts.names import slug
 from generator.luts.spi1d import format_spi1d
 from generator.verify.metrics import relative_error
 
@@ -57,10 +57,6 @@ class _Shaped:
 def curve_file(baked: BakedCurve) -> bytes:
     """The .spi1d file of ``baked``, as the config references it."""
     return format_spi1d(baked.values).encode("ascii")
-
-
-def slug(name: str) -> str:
-    return re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
 
 
 def _lut_errors(curve, domain, size: int, jumps=()) -> tuple[float, float]:

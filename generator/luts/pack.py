@@ -14,7 +14,7 @@ from pathlib import Path
 
 from generator.files import staged_folder
 from generator.luts import bake, probes
-from generator.luts.curve1d import slug
+from generator.luts.names import slug
 from generator.luts.view import LOG_VIEW_SIZE
 from generator.spec.schema import Spec
 

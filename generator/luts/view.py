@@ -20,7 +20,8 @@ import numpy as np
 
 from generator.luts import formats, hsv, hsv_axes, lattice, probes
 from generator.luts.axes import LOG_METHODS
-from generator.luts.curve1d import curve_file, slug
+from generator.luts.curve1d import curve_file
+from generator.luts.names import file_stems
 from generator.spec.schema import Display, Spec
 
 #: Lattice size of the config's view LUTs.
@@ -73,12 +74,14 @@ def ends_in_light(display: Display) -> bool:
     return display.is_hdr or not lattice.encodes_in_clf(display)
 
 
-def view_filename(display: Display, method: str, size: int | None = None) -> str:
+def view_filename(spec: Spec, display: Display, method: str, size: int | None = None) -> str:
     """The file of the config's view of ``method`` on ``display`` (``size``: a lattice in
-    display axes of that size, for a desaturate bake other than the config's HSV view)."""
+    display axes of that size, for a desaturate bake other than the config's HSV view),
+    named after the display, uniquely among ``spec``'s displays (:func:`file_stems`)."""
+    stem = file_stems([*(d.name for d in spec.displays), display.name])[display.name]
     if method == HSV_METHOD and size is None:
-        return f"view_{slug(display.name)}_{method}_hsv{hsv_axes.HSV_SIZE}.clf"
-    return f"view_{slug(display.name)}_{method}_{size or view_size(display, method)}.clf"
+        return f"view_{stem}_{method}_hsv{hsv_axes.HSV_SIZE}.clf"
+    return f"view_{stem}_{method}_{size or view_size(display, method)}.clf"
 
 
 def lut_steps(matrix, path: str, hsv_folder: str | None = None) -> list:
@@ -142,7 +145,7 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
     size = size or view_size(display, method)
     light = ends_in_light(display)
     lat = lattice.display_lattice(spec, display, method, size, params=params, light=light)
-    name = view_filename(display, method, size)
+    name = view_filename(spec, display, method, size)
     output = ("normalised linear RGB (the config encodes it), gamut mapping {}, {}^3 lattice." if light else
               "code values, gamut mapping {}, {}^3 lattice in the display's code values.")
     text = (f"ocioforge view LUT: normalised {display.name} linear RGB (1 = peak, after the config's matrix) "
@@ -181,7 +184,7 @@ def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:
     """The desaturate view of ``display`` as an HSV lattice, measured through OCIO."""
     from generator.colorimetry import reference
 
-    name = view_filename(display, HSV_METHOD)
+    name = view_filename(spec, display, HSV_METHOD)
     text = (f"ocioforge view LUT: OCIO HSV of normalised {display.name} linear RGB (1 = peak, after the config's "
             f"matrix, RGB_TO_HSV and {hsv.SHARED_FILE}) to the HSV of its desaturated colour (before "
             "HSV_TO_RGB); trilinear.")

@@ -48,6 +48,16 @@ PQ_BUILTIN = "CURVE - ST-2084_to_LINEAR"
 HALF_DOMAIN = 0
 PQ_BUILTIN_TABLES = {(2, 0): 4096, (2, 4): HALF_DOMAIN}
 
+#: Curve builtins that do not clamp where their curve ends, and the codes a scene space's
+#: decoding clamps first (a RangeTransform), so that the config defines the curve there only,
+#: as a clamping builtin or a baked curve does: OCIO's CURVE - ST-2084_to_LINEAR mirrors
+#: negative codes, goes on past code 1 (10000 cd/m², where ST 2084 ends) to 2.7e9 at code 1.9
+#: and decodes codes from 2 up to 0, and its inverse mirrors negative light (measured through
+#: PyOpenColorIO). A display's PQ codes need no clamp: its light is clipped to the display's
+#: peak, at most 10000 cd/m², before it is encoded.
+BUILTIN_CLAMPED_DOMAIN = {
+    "CURVE - ST-2084_to_LINEAR": (0.0, 1.0),
+}
 
 #: Whole-space builtins: encodings that are not a per-channel curve and a gamut.
 SPACE_BUILTINS = {
@@ -72,11 +82,19 @@ def curve_chain(curve_name: str, version: tuple[int, int]):
     return None
 
 
-def builtin_code_domain(curve_name: str, version: tuple[int, int]) -> tuple[float, float] | None:
-    """The codes a config of ``version`` decodes ``curve_name`` on when a clamping builtin
-    expresses it (:data:`BUILTIN_CODE_DOMAIN`), or None."""
+def clamped_code_domain(curve_name: str, version: tuple[int, int]) -> tuple[float, float] | None:
+    """The codes a scene space of ``version`` clamps ``curve_name``'s codes to before the builtin
+    expressing it (:data:`BUILTIN_CLAMPED_DOMAIN`), or None."""
     chain = curve_chain(curve_name, version)
-    domains = [BUILTIN_CODE_DOMAIN[style] for style, _ in chain or () if style in BUILTIN_CODE_DOMAIN]
+    return next((BUILTIN_CLAMPED_DOMAIN[style] for style, _ in chain or () if style in BUILTIN_CLAMPED_DOMAIN), None)
+
+
+def builtin_code_domain(curve_name: str, version: tuple[int, int]) -> tuple[float, float] | None:
+    """The codes a scene space of ``version`` decodes ``curve_name`` on when a builtin expresses
+    it that clamps (:data:`BUILTIN_CODE_DOMAIN`) or is clamped (:data:`BUILTIN_CLAMPED_DOMAIN`), or None."""
+    chain = curve_chain(curve_name, version)
+    clamps = {**BUILTIN_CODE_DOMAIN, **BUILTIN_CLAMPED_DOMAIN}
+    domains = [clamps[style] for style, _ in chain or () if style in clamps]
     if not domains:
         return None
     return max(lo for lo, _ in domains), min(hi for _, hi in domains)

@@ -9,22 +9,39 @@ from __future__ import annotations
 import PyOpenColorIO as ocio
 
 from generator.colorimetry import transfer
+from generator.colorimetry.curves import CURVES
 from generator.luts.curve1d import BakedCurve, bake_curve
-from generator.ocio.capabilities import curve_chain
+from generator.luts.names import add_file, file_stems, slug
+from generator.ocio.capabilities import clamped_code_domain, curve_chain
+from generator.spec.schema import Spec
 
 INVERSE = ocio.TRANSFORM_DIR_INVERSE
 FORWARD = ocio.TRANSFORM_DIR_FORWARD
 
 
-def curve_label(space_name: str, curve_name: str) -> str:
-    """The name a curve's baked file takes (``<label>_to_linear.spi1d``): a library curve's
-    own, or for a spec's custom curve the name of the space (or display) it belongs to."""
-    return space_name if curve_name.startswith("custom") else curve_name
+def _is_custom(curve_name: str) -> bool:
+    return curve_name.startswith("custom")
+
+
+def curve_label(spec: Spec, owner: str, curve_name: str) -> str:
+    """The stem of a curve's baked file (``<stem>_to_linear.spi1d``) in ``spec``'s config: a
+    library curve's own name, or for a custom curve the name of the space or display
+    (``owner``) it belongs to, unique among the library's curves and the spec's other baked
+    custom curves (:func:`generator.luts.names.file_stems`). The build and the verifier
+    both name a space's file here."""
+    if not _is_custom(curve_name):
+        return curve_name
+    owners = [(s.name, s.curve_name, s.curve) for s in spec.colour_spaces if not (s.is_data or s.special)]
+    owners += [(d.name, d.eotf_name, d.eotf) for d in spec.displays]
+    baked = [name for name, c_name, curve in owners
+             if _is_custom(c_name) and is_baked(c_name, curve, spec.ocio_version)]
+    return file_stems(baked + [owner], taken=(slug(n) for n in CURVES))[owner]
 
 
 def _log(curve: transfer.LogCamera) -> ocio.Transform:
+    """LogCameraTransform, or LogAffineTransform without a break. The base is set apart:
+    LogAffineTransform's constructor has no ``base`` argument in any OCIO 2.x Python."""
     args = dict(
-        base=curve.base,
         logSideSlope=[curve.log_side_slope] * 3,
         logSideOffset=[curve.log_side_offset] * 3,
         linSideSlope=[curve.lin_side_slope] * 3,
@@ -32,17 +49,19 @@ def _log(curve: transfer.LogCamera) -> ocio.Transform:
         direction=INVERSE,
     )
     if curve.lin_side_break is None:
-        return ocio.LogAffineTransform(**args)
-    t = ocio.LogCameraTransform(linSideBreak=[curve.lin_side_break] * 3, **args)
-    if curve.linear_slope is not None:
-        t.setLinearSlopeValue([curve.linear_slope] * 3)
+        t = ocio.LogAffineTransform(**args)
+    else:
+        t = ocio.LogCameraTransform(linSideBreak=[curve.lin_side_break] * 3, **args)
+        if curve.linear_slope is not None:
+            t.setLinearSlopeValue([curve.linear_slope] * 3)
+    t.setBase(curve.base)
     return t
 
 
 def _baked(name: str, curve, bakes: dict[str, BakedCurve]) -> list:
     """Normalise the code to [0, 1] over the domain, apply the shaper, look up the LUT."""
     baked = bake_curve(name, curve, curve.domain)
-    bakes[baked.filename] = baked
+    add_file(bakes, baked.filename, baked)
     lo, hi = baked.domain
     steps = []
     if (lo, hi) != (0.0, 1.0):
@@ -77,6 +96,17 @@ def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[st
     if is_baked(name, curve, version):
         return _baked(name, curve, bakes)
     return [ocio.BuiltinTransform(style, INVERSE if inverse else FORWARD) for style, inverse in curve_chain(name, version)]
+
+
+def code_clamp(curve_name: str, version: tuple[int, int]) -> list:
+    """A RangeTransform clamping a scene space's codes to where the builtin expressing
+    ``curve_name`` at ``version`` is defined, when the builtin does not clamp by itself
+    (:data:`~generator.ocio.capabilities.BUILTIN_CLAMPED_DOMAIN`); otherwise nothing."""
+    domain = clamped_code_domain(curve_name, version)
+    if domain is None:
+        return []
+    lo, hi = domain
+    return [ocio.RangeTransform(minInValue=lo, maxInValue=hi, minOutValue=lo, maxOutValue=hi)]
 
 
 def group(transforms: list, direction=FORWARD) -> ocio.Transform | None:

@@ -13,6 +13,7 @@ import PyOpenColorIO as ocio
 
 from generator.colorimetry import reference
 from generator.luts.curve1d import BakedCurve
+from generator.luts.names import add_file
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
 from generator.spec.load import DISPLAY_REFERENCE, VIEW_METHODS
@@ -55,8 +56,10 @@ def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
     if space.special:
         ap0_to_ref = reference.adx_reference_matrix(spec)
         return [ocio.BuiltinTransform(SPACE_BUILTINS[space.special]), *_matrix_unless_identity(ap0_to_ref)]
-    decode = curves.decode_transforms(curves.curve_label(space.name, space.curve_name), space.curve, spec.ocio_version, bakes)
-    return decode + _matrix_unless_identity(reference.space_matrix(spec, space))
+    label = curves.curve_label(spec, space.name, space.curve_name)
+    decode = curves.decode_transforms(label, space.curve, spec.ocio_version, bakes)
+    clamp = curves.code_clamp(space.curve_name, spec.ocio_version)
+    return clamp + decode + _matrix_unless_identity(reference.space_matrix(spec, space))
 
 
 def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace:
@@ -94,7 +97,7 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
         # The signal ends at code 1 (OCIO 2.1's builtin clamps there, later versions do not).
         return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),
                         ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0)]
-    decode = curves.decode_transforms(curves.curve_label(display.name, display.eotf_name), display.eotf,
+    decode = curves.decode_transforms(curves.curve_label(spec, display.name, display.eotf_name), display.eotf,
                                       spec.ocio_version, bakes)
     return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
 
@@ -120,9 +123,9 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
                  matrix_transform(to_xyz)]
     else:
         lut = bake_view_lut_cached(spec, display, method)
-        view_luts[lut.filename] = lut.data
+        add_file(view_luts, lut.filename, lut.data)
         if lut.hsv:
-            view_luts[hsv.SHARED_FILE] = hsv.shared_clf()
+            add_file(view_luts, hsv.SHARED_FILE, hsv.shared_clf())
         back = (matrix_transform(to_xyz) if lut.light else
                 ocio.GroupTransform(display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE))
         steps = [*lut_steps(lut.matrix, lut.filename, "" if lut.hsv else None), back]

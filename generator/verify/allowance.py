@@ -233,7 +233,7 @@ def builtin_encoding_allowance(spec: Spec, display: Display, expected: np.ndarra
     from generator.ocio.capabilities import PQ_BUILTIN, curve_chain, pq_builtin_tables
     from generator.ocio.curves import curve_label
 
-    chain = curve_chain(curve_label(display.name, display.eotf_name), spec.ocio_version) or ()
+    chain = curve_chain(curve_label(spec, display.name, display.eotf_name), spec.ocio_version) or ()
     if PQ_BUILTIN not in {style for style, _ in chain}:
         return None
     with np.errstate(all="ignore"):

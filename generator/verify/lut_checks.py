@@ -24,7 +24,8 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
     (a quarter, a half, three quarters of the way) and on a ramp."""
     from generator.ocio.emit import LUT_FOLDER
 
-    curves = {curve_label(s.name, s.curve_name): s.curve for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
+    curves = {curve_label(spec, s.name, s.curve_name): s.curve
+              for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
     out = []
     for name, curve in curves.items():
         baked = baked_lut(name, curve)
@@ -65,7 +66,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
                 continue
             fn = paths.view_function(spec, display, view)
             expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
-            name = f"{LUT_FOLDER}/{view_filename(display, method)}"
+            name = f"{LUT_FOLDER}/{view_filename(spec, display, method)}"
             encode = partial(_encode_light, display) if ends_in_light(display) else None
             out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=inputs,
                              expected=expected, output=paths.DISPLAY, encode=encode,
@@ -94,7 +95,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
 
     light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
     expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
-    name = f"{LUT_FOLDER}/{view_filename(display, HSV_METHOD)}"
+    name = f"{LUT_FOLDER}/{view_filename(spec, display, HSV_METHOD)}"
     return [Check(LUT, shared_name, src=view, lut=shared_name, probes=shared,
                   expected=hsv_axes.shared_coordinates(shared.values), output=paths.CODE),
             Check(LUT, name, src=view, lut=name, probes=coordinates, expected=expected, output=paths.DISPLAY,

@@ -14,7 +14,8 @@ Two documented policies of the generated configs enter the expectation:
   values are clamped to it (:class:`generator.colorimetry.transfer.Function`);
   so is a curve an OCIO builtin expresses, on the codes the builtin decodes
   (:data:`generator.ocio.capabilities.BUILTIN_CODE_DOMAIN`: Canon Log 2 and 3
-  from 0 to 1, Apple Log from 0);
+  from 0 to 1, Apple Log from 0) or the scene space clamps its codes to
+  (:data:`generator.ocio.capabilities.BUILTIN_CLAMPED_DOMAIN`: ST 2084 from 0 to 1);
 * a display space decodes its code values, clips display light to
   [0, peak] (OCIO's range clamp runs both ways) and goes to CIE XYZ-D65; OCIO
   reaches the scene reference from there through the config's default view
@@ -119,7 +120,8 @@ def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
     def encode(ref):
         return np.clip(reference.from_reference(spec, space, ref), low, high)
 
-    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=curve_label(space.name, space.curve_name) if baked else "",
+    label = curve_label(spec, space.name, space.curve_name) if baked else ""
+    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=label,
                     matrix=matrix, linear=lambda c: space.curve.decode(np.clip(c, low, high)), curve=space.curve)
 
 

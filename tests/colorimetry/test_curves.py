@@ -184,6 +184,18 @@ def test_pq_reference_white():
     assert round(float(CURVES["ST 2084"].encode(2.03)) * 100.0) == 58
 
 
+def test_pq_is_clamped_to_its_signal_range():
+    """ST 2084 ends at code 1 (10000 cd/m²) and starts at 0: codes and light beyond are
+    clamped (the formula decoded code 11.5 to negative light and encoded negative light to
+    codes above 10)."""
+    pq = CURVES["ST 2084"]
+    codes = np.array([-1.0, -0.457, 0.0, 1.0, 1.5, 2.5, 10.04, 11.5])
+    assert np.array_equal(pq.decode(codes), pq.decode(np.clip(codes, 0.0, 1.0)))
+    light = np.array([-1.0, -0.1, 0.0, 100.0, 150.0, 1e5])
+    assert np.array_equal(pq.encode(light), pq.encode(np.clip(light, 0.0, 100.0)))
+    assert 0.0 <= pq.encode(-1.0) < 1e-6 and pq.encode(1e5) == pytest.approx(1.0, rel=1e-12)
+
+
 # --- Against PyOpenColorIO's builtins -----------------------------------------------------
 
 _CONFIG = ocio.Config.CreateRaw()

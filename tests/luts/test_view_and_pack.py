@@ -7,7 +7,7 @@ import pytest
 
 from generator import tolerances
 from generator.luts import pack, probes
-from generator.luts.view import bake_view_lut, view_transform
+from generator.luts.view import bake_view_lut, view_filename, view_transform
 from generator.verify.metrics import delta_e_itp
 
 
@@ -21,6 +21,23 @@ def test_view_lut_reads_back_and_is_measured(default_spec, tmp_path):
     figures = probes.measure(default_spec, None, display, "clip", apply, count=512)
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_IN_GAMUT_CODES
     assert bake_view_lut(default_spec, display, "clip").data == view.data
+
+
+def test_view_files_of_displays_named_alike_are_apart(default_spec, tmp_path):
+    """Displays whose names slug alike each name their own view files (they shared one, and
+    one display's view read the other's lattice); a display named apart keeps its slug."""
+    from generator.spec import load
+
+    walls = (("Wall A", "P3-D65"), ("Wall-A", "Rec.709"))
+    text = "".join(f'[[display]]\nname = "{name}"\ngamut = "{gamut}"\neotf = "Gamma 2.4"\n'
+                   'views = ["Colorimetric", "Scale"]\n' for name, gamut in walls)
+    (tmp_path / "walls.toml").write_text(text)
+    spec = load.load(tmp_path / "walls.toml")
+    names = {view_filename(spec, d, method) for d in spec.displays if d.name.startswith("Wall")
+             for method in ("scale", "desaturate")}
+    assert len(names) == 4 and all(n.startswith("view_wall_a_") for n in names)
+    srgb = next(d for d in default_spec.displays if d.name == "sRGB - Display")
+    assert view_filename(default_spec, srgb, "scale") == "view_srgb_display_scale_17.clf"
 
 
 def test_one_pq_code_on_a_grey_is_the_delta_e_itp_the_hdr_targets_use(default_spec):

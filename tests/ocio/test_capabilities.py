@@ -72,3 +72,16 @@ def test_the_pq_tables_are_those_of_every_library_reading_a_version():
         transform = ocio.BuiltinTransform(capabilities.PQ_BUILTIN)
         (table,) = ocio.Config.CreateRaw().getProcessor(transform).createGroupTransform()
         assert isinstance(table, ocio.Lut1DTransform) and table.getInputHalfDomain() and table.getLength() == 65536
+
+
+@pytest.mark.parametrize("style", sorted(capabilities.BUILTIN_CLAMPED_DOMAIN))
+def test_builtins_a_config_clamps_do_not_clamp_by_themselves(style):
+    """Outside its domain the builtin goes on (or mirrors), so a scene space clamps first."""
+    import numpy as np
+
+    processor = ocio.Config.CreateRaw().getProcessor(ocio.BuiltinTransform(style)).getDefaultCPUProcessor()
+    lo, hi = capabilities.BUILTIN_CLAMPED_DOMAIN[style]
+    pixel = np.repeat(np.array([[lo - 0.2], [lo], [hi], [hi + 0.2]], dtype=np.float32), 3, axis=1)
+    processor.applyRGB(pixel)
+    below, low, high, above = pixel[:, 0]
+    assert below != low and above != high

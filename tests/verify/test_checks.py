@@ -188,3 +188,37 @@ def test_the_pq_table_departure_is_what_ocio_makes_of_its_tabulated_pq(default_s
         assert np.all(departure <= model + tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF)
         reached = max(reached, float(departure.max()))
     assert reached >= 0.95 * model.max() and 1023 * model[light < 1e-6].max() > 0.05
+
+
+def test_verify_checks_each_space_against_its_own_curve_file(slugging_alike):
+    """Spaces whose names slug alike (one as a library curve's) each have a file; verify
+    checks every one, and each space through its own (they shared one file before, and
+    verify failed the spaces decoding with another's curve)."""
+    from generator.verify.run import verify
+
+    spec, folder = slugging_alike
+    result = verify(folder / "config.ocio", ("ocio",), density="quick",
+                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
+    files = {f"luts/{p.name}" for p in (folder / "luts").iterdir()}
+    assert len(files) == 4 and files <= {o.check.item for o in result.outcomes}
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
+
+
+@pytest.mark.parametrize("version", [(2, 1), "newest"])
+def test_a_pq_scene_space_passes_beyond_the_signal_range(tmp_path, version):
+    """A scene space encoded with ST 2084 is judged on negative and over-range colours too:
+    config and reference both clamp to the signal range (it failed by 1.45 relative)."""
+    from tests.conftest import NEWEST
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from generator.verify.run import verify
+
+    (tmp_path / "pq.toml").write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = "P3 PQ"\ngamut = "P3-D65"\ntransfer = "ST 2084"\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+    folder = tmp_path / "pq"
+    build(for_folder(load.load(tmp_path / "pq.toml"), folder, NEWEST if version == "newest" else version), folder)
+    result = verify(folder / "config.ocio", ("ocio",), density="quick",
+                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE), only="P3 PQ")
+    assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
