@@ -70,6 +70,28 @@ def primaries(value, source: str, field: str) -> tuple:
     return tuple(xy_pair(v, source, f"{field}[{i}]") for i, v in enumerate(value))
 
 
+def _area(a, b, c) -> float:
+    """Signed area of the xy triangle a, b, c (positive when counter-clockwise)."""
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
+
+
+def check_triangle(primaries: tuple, white: tuple, source: str, field: str, white_field: str) -> None:
+    """The primaries must span a triangle and the white point lie inside it, each by at least
+    :data:`~generator.tolerances.GAMUT_MIN_XY_AREA`, so the gamut's matrix is well conditioned."""
+    from generator.tolerances import GAMUT_MIN_XY_AREA
+
+    area = _area(*primaries)
+    if abs(area) < GAMUT_MIN_XY_AREA:
+        raise SpecError(source, field, f"the primaries span no triangle (xy area {abs(area):.3g}: collinear or "
+                        f"repeated); allowed: three chromaticities enclosing an area of at least {GAMUT_MIN_XY_AREA:g}")
+    r, g, b = primaries
+    shares = [_area(white, g, b), _area(r, white, b), _area(r, g, white)]
+    if min(s * math.copysign(1.0, area) for s in shares) < GAMUT_MIN_XY_AREA:
+        raise SpecError(source, white_field, f"white point ({white[0]:.5g}, {white[1]:.5g}) is outside the primaries' "
+                        "triangle or on its edge; allowed: a white inside it, making a triangle of xy area at least "
+                        f"{GAMUT_MIN_XY_AREA:g} with any two primaries")
+
+
 def resolve_path(value, base: Path, source: str, field: str) -> Path:
     if not isinstance(value, str) or not value:
         raise SpecError(source, field, f"expected a file path, got {value!r}")

@@ -246,6 +246,7 @@ def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut
         prims = fields.primaries(table["primaries"], source, f"{field}.primaries")
     else:
         prims = fields.spectral_primaries(table["primaries_spectra"], base, source, f"{field}.primaries_spectra")
+    fields.check_triangle(prims, white, source, f"{field}.{given[0]}", f"{field}.white")
     return Gamut(name, prims, white, citation=f"custom, {source}")
 
 
