@@ -111,7 +111,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     if reference.lower() not in names:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
     inactive = tuple(_name_list(raw.get("inactive", []), source, "inactive", names))
-    displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(raw.get("display", _default_displays())))
+    displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
     _unique([d.name for d in displays], source, "display")
     return Spec(
         name=_string(raw.get("name", "ocioforge"), source, "name"),
@@ -122,7 +122,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         colour_spaces=spaces,
         displays=displays,
         roles=_roles(raw.get("roles", {}), source, names | {DISPLAY_REFERENCE.lower()}),
-        file_rules=_file_rules(raw.get("file_rule", None), source),
+        file_rules=_file_rules(raw, source),
         inactive=inactive,
         display_view_spaces=_bool(raw.get("display_view_spaces", False), source, "display_view_spaces"),
         source=source,
@@ -161,6 +161,23 @@ def _unique(names, source: str, field: str) -> None:
         if name.lower() in seen:
             raise SpecError(source, field, f"{name!r} is defined twice")
         seen.add(name.lower())
+
+
+def _tables(raw: dict, key: str, source: str) -> list:
+    """The array of tables ``[[key]]`` (the library's displays when ``display`` is absent)."""
+    if key not in raw:
+        return _default_displays() if key == "display" else []
+    value = raw[key]
+    if not isinstance(value, list):
+        raise SpecError(source, key, f"expected an array of tables ([[{key}]]), got {value!r}")
+    return value
+
+
+def _name(table: dict, source: str, field: str) -> str:
+    name = _string(table.get("name", ""), source, f"{field}.name")
+    if not name:
+        raise SpecError(source, f"{field}.name", "required: a non-empty name")
+    return name
 
 
 def parse_version(value, source: str) -> tuple[int, int]:
@@ -212,7 +229,7 @@ def _spaces(raw: dict, source: str, base: Path, keep=None) -> tuple[ColourSpace,
         names = [n for n in names if not isinstance(n, str) or _library_names(n) & wanted]
     spaces = [library_space(n, source, f"colour_spaces[{i}]")
               for i, n in enumerate(_strings(names, source, "colour_spaces"))]
-    for i, table in enumerate(raw.get("custom_space", [])):
+    for i, table in enumerate(_tables(raw, "custom_space", source)):
         spaces.append(_custom_space(table, source, f"custom_space[{i}]", base))
     _unique([n for s in spaces for n in s.all_names], source, "colour_spaces")
     return tuple(spaces)
@@ -263,9 +280,7 @@ def _default_encoding(curve) -> str:
 
 def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpace:
     _check_keys(table, CUSTOM_SPACE_KEYS, source, f"{field}.")
-    name = _string(table.get("name", ""), source, f"{field}.name")
-    if not name:
-        raise SpecError(source, f"{field}.name", "required")
+    name = _name(table, source, field)
     curve_name, curve = fields.transfer_function(table.get("transfer", "linear"), base, source, f"{field}.transfer")
     encoding = table.get("encoding", _default_encoding(curve))
     if encoding not in ENCODINGS:
@@ -287,11 +302,13 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     from generator.colorimetry.gamuts import gamuts
 
     _check_keys(table, DISPLAY_KEYS, source, f"{field}.")
-    name = _string(table.get("name", ""), source, f"{field}.name")
+    name = _name(table, source, field)
     views = _strings(table["views"], source, f"{field}.views") if "views" in table else None
     for i, view in enumerate(views or ()):
         if view not in VIEWS:
             raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}; allowed: {', '.join(VIEWS)}")
+        if view in views[:i]:
+            raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
     known = {d.name.lower(): d for d in library.DISPLAYS}
     custom = any(k in table for k in ("gamut", "primaries", "eotf"))
     if name.lower() in known and not custom:
@@ -334,14 +351,18 @@ def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
     return tuple(sorted(roles.items()))
 
 
-def _file_rules(value, source: str) -> tuple[FileRule, ...]:
-    if value is None:
+def _file_rules(raw: dict, source: str) -> tuple[FileRule, ...]:
+    if "file_rule" not in raw:
         return (FileRule("OpenEXR", "scene_linear", "*", "exr"), FileRule("PNG", "texture_paint", "*", "png"), FileRule("JPEG", "texture_paint", "*", "jpg"),
                 FileRule("JPEG long", "texture_paint", "*", "jpeg"), FileRule("Default", "default"))
     rules = []
-    for i, table in enumerate(value):
-        _check_keys(table, FILE_RULE_KEYS, source, f"file_rule[{i}].")
-        rules.append(FileRule(**{k: _string(v, source, f"file_rule[{i}].{k}") for k, v in table.items()}))
+    for i, table in enumerate(_tables(raw, "file_rule", source)):
+        field = f"file_rule[{i}]"
+        _check_keys(table, FILE_RULE_KEYS, source, f"{field}.")
+        for key in ("name", "colour_space"):
+            if key not in table:
+                raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
+        rules.append(FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()}))
     if not rules or rules[-1].name != "Default":
         raise SpecError(source, "file_rule", "the last file rule must be named 'Default'")
     return tuple(rules)

@@ -68,6 +68,12 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[custom_space]]\nname = 'x'\nprimaries = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]]\nwhite = 'D66'",
      "custom_space[0].white", "did you mean"),
     ("[[custom_space]]\nname = 'ACEScg'\ngamut = 'Rec.709'", "colour_spaces", "defined twice"),
+    ("display = 5", "display", "expected an array of tables ([[display]])"),
+    ("[custom_space]\nname = 'x'", "custom_space", "expected an array of tables ([[custom_space]])"),
+    ("[[display]]\nname = ''\ngamut = 'Rec.709'\neotf = 'sRGB'", "display[0].name", "required"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['Raw', 'Colorimetric', 'Raw']", "display[0].views[2]",
+     "listed twice"),
+    ("[[file_rule]]\nname = 'Default'", "file_rule[0].colour_space", "required"),
     ("name = = 1", "-", "not valid TOML"),
 ])
 def test_bad_specs_name_the_field_and_what_is_allowed(text, field, words):
