@@ -80,7 +80,8 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
 
     With ``keep``, library colour spaces other than those named there, the scene
     reference and the roles' targets are left out: commands that use one space
-    (bake) load faster, and never derive gamuts they do not use.
+    (bake) load faster, and never derive gamuts they do not use. The spec is
+    checked whole all the same: what a build accepts, they accept.
     """
     if path is None:
         return parse(default_text(), "<default>", Path.cwd(), keep)
@@ -103,16 +104,23 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     if cat not in CATS:
         raise SpecError(source, "chromatic_adaptation", f"unknown {cat!r}; allowed: {', '.join(CATS)}")
     reference = _string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
-    if keep is not None:
-        roles = raw.get("roles", {})
-        keep = (*keep, reference, *DEFAULT_ROLES.values(), *(roles.values() if isinstance(roles, dict) else ()))
-    spaces = _spaces(raw, source, base, keep)
-    names = {n.lower() for s in spaces for n in s.all_names}
-    if reference.lower() not in names:
-        raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
-    inactive = tuple(_name_list(raw.get("inactive", []), source, "inactive", names))
+    roles = raw.get("roles", {})
+    if not isinstance(roles, dict):
+        raise SpecError(source, "roles", "expected a table of role = colour space")
+    listed = _listed(raw, source)
+    customs = tuple(_custom_space(t, source, f"custom_space[{i}]", base)
+                    for i, t in enumerate(_tables(raw, "custom_space", source)))
+    all_names = [n for s in (*listed, *customs) for n in (s.name, *s.aliases)]
+    _unique(all_names, source, "colour_spaces")
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
     _unique([d.name for d in displays], source, "display")
+    every = {n.lower() for n in all_names}
+    if reference.lower() not in every:
+        raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
+    if keep is not None:
+        keep = (*keep, reference, *DEFAULT_ROLES.values(), *roles.values())
+    spaces = (*_kept(listed, keep), *customs)
+    present = {n.lower() for s in spaces for n in s.all_names}
     return Spec(
         name=_string(raw.get("name", "ocioforge"), source, "name"),
         description=_string(raw.get("description", ""), source, "description"),
@@ -121,9 +129,9 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles(raw.get("roles", {}), source, names | {DISPLAY_REFERENCE.lower()}),
+        roles=_roles(roles, source, every | {DISPLAY_REFERENCE.lower()}),
         file_rules=_file_rules(raw, source),
-        inactive=inactive,
+        inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
         display_view_spaces=_bool(raw.get("display_view_spaces", False), source, "display_view_spaces"),
         source=source,
     )
@@ -197,12 +205,17 @@ def _allowed() -> str:
     return f"2.{OCIO_MIN_VERSION[1]} to {newest[0]}.{newest[1]}"
 
 
-def library_space(name: str, source: str, field: str) -> ColourSpace:
+def library_def(name: str, source: str, field: str) -> library.SpaceDef:
+    """The library's record of the colour space called ``name`` or one of its aliases."""
     for space in library.SPACES:
         if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
-            return from_library(space)
+            return space
     choices = [n for s in library.SPACES for n in (s.name, *s.aliases)]
     raise SpecError(source, field, f"unknown colour space {name!r}{fields.suggest(name, choices)}; see ocioforge list")
+
+
+def library_space(name: str, source: str, field: str) -> ColourSpace:
+    return from_library(library_def(name, source, field))
 
 
 def from_library(space: library.SpaceDef) -> ColourSpace:
@@ -220,27 +233,19 @@ def from_library(space: library.SpaceDef) -> ColourSpace:
     )
 
 
-def _spaces(raw: dict, source: str, base: Path, keep=None) -> tuple[ColourSpace, ...]:
-    names = raw.get("colour_spaces", ["*"])
-    if names == ["*"]:
-        names = [s.name for s in library.SPACES]
-    if keep is not None and isinstance(names, list):
-        wanted = {str(k).lower() for k in keep}
-        names = [n for n in names if not isinstance(n, str) or _library_names(n) & wanted]
-    spaces = [library_space(n, source, f"colour_spaces[{i}]")
-              for i, n in enumerate(_strings(names, source, "colour_spaces"))]
-    for i, table in enumerate(_tables(raw, "custom_space", source)):
-        spaces.append(_custom_space(table, source, f"custom_space[{i}]", base))
-    _unique([n for s in spaces for n in s.all_names], source, "colour_spaces")
-    return tuple(spaces)
+def _listed(raw: dict, source: str) -> tuple[library.SpaceDef, ...]:
+    """The library colour spaces the spec names (["*"]: all of them)."""
+    value = raw.get("colour_spaces", ["*"])
+    if value == ["*"]:
+        return library.SPACES
+    return tuple(library_def(n, source, f"colour_spaces[{i}]") for i, n in enumerate(_strings(value, source, "colour_spaces")))
 
 
-def _library_names(name: str) -> set[str]:
-    """Every name of the library space called ``name`` (lower case), or {name}."""
-    for space in library.SPACES:
-        if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
-            return {n.lower() for n in (space.name, *space.aliases)}
-    return {name.lower()}
+def _kept(listed, keep: tuple[str, ...] | None) -> tuple[ColourSpace, ...]:
+    """The listed library spaces resolved: all, or with ``keep`` those it names."""
+    wanted = None if keep is None else {str(k).lower() for k in keep}
+    return tuple(from_library(d) for d in listed
+                 if wanted is None or {n.lower() for n in (d.name, *d.aliases)} & wanted)
 
 
 def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut:
@@ -342,8 +347,6 @@ def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
 
 
 def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
-    if not isinstance(table, dict):
-        raise SpecError(source, "roles", "expected a table of role = colour space")
     roles = {**DEFAULT_ROLES, **table}
     for role, target in roles.items():
         if not isinstance(target, str) or target.lower() not in names:

@@ -152,3 +152,16 @@ def test_resolved_spec_round_trips_and_evaluates_identically(default_spec):
 
 def test_embedded_default_is_the_documented_file():
     assert load.parse(load.default_text(), "<default>", Path(".")) == load.load()
+
+
+def test_a_spec_loaded_for_one_space_is_checked_whole():
+    """bake loads a spec keeping only the spaces it uses: a spec build accepts must load (an inactive
+    space left out is no error), and one build refuses must not (an unknown space left out is)."""
+    text = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", "ADX10"]\n'
+    whole = parse(text + 'inactive = ["ADX10"]\n')
+    kept = load.parse(text + 'inactive = ["ADX10"]\n', "show.toml", Path("."), keep=("ACEScg",))
+    assert whole.inactive == ("ADX10",) and kept.inactive == ()
+    assert "ADX10" not in {s.name for s in kept.colour_spaces}
+    with pytest.raises(SpecError) as error:
+        load.parse(text.replace('"ADX10"', '"ADX11"'), "show.toml", Path("."), keep=("ACEScg",))
+    assert error.value.field == "colour_spaces[5]"
