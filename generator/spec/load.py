@@ -12,7 +12,7 @@ from pathlib import Path
 
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
-from generator.spec import fields
+from generator.spec import fields, namespace
 from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
@@ -56,8 +56,6 @@ DEFAULT_ROLES = {
     "cie_xyz_d65_interchange": "CIE XYZ-D65 - Display-referred", "default_byte": "sRGB Encoded Rec.709 (sRGB)",
     "default_float": "ACEScg", "default_sequencer": "sRGB Encoded Rec.709 (sRGB)",
 }
-#: The name of the display-referred reference space every config has.
-DISPLAY_REFERENCE = "CIE XYZ-D65 - Display-referred"
 
 OCIO_MIN_VERSION = (2, 1)
 
@@ -113,7 +111,9 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     all_names = [n for s in (*listed, *customs) for n in (s.name, *s.aliases)]
     _unique(all_names, source, "colour_spaces")
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
-    _unique([d.name for d in displays], source, "display")
+    view_spaces = _bool(raw.get("display_view_spaces", False), source, "display_view_spaces")
+    taken = namespace.generated(displays, view_spaces, (*DEFAULT_ROLES, *roles), source)
+    namespace.check_free(listed, customs, taken, source)
     every = {n.lower() for n in all_names}
     if reference.lower() not in every:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
@@ -129,10 +129,10 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles(roles, source, every | {DISPLAY_REFERENCE.lower()}),
-        file_rules=_file_rules(raw, source),
+        roles=_roles(roles, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
+        file_rules=_file_rules(raw, source, every | set(taken)),
         inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
-        display_view_spaces=_bool(raw.get("display_view_spaces", False), source, "display_view_spaces"),
+        display_view_spaces=view_spaces,
         source=source,
     )
 
@@ -354,7 +354,8 @@ def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
     return tuple(sorted(roles.items()))
 
 
-def _file_rules(raw: dict, source: str) -> tuple[FileRule, ...]:
+def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]:
+    """The file rules; each names a colour space, display or role of the config (``names``)."""
     if "file_rule" not in raw:
         return (FileRule("OpenEXR", "scene_linear", "*", "exr"), FileRule("PNG", "texture_paint", "*", "png"), FileRule("JPEG", "texture_paint", "*", "jpg"),
                 FileRule("JPEG long", "texture_paint", "*", "jpeg"), FileRule("Default", "default"))
@@ -365,7 +366,11 @@ def _file_rules(raw: dict, source: str) -> tuple[FileRule, ...]:
         for key in ("name", "colour_space"):
             if key not in table:
                 raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
-        rules.append(FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()}))
+        rule = FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()})
+        if rule.colour_space.lower() not in names:
+            raise SpecError(source, f"{field}.colour_space", f"{rule.colour_space!r} is not among the colour spaces; "
+                            "allowed: a colour space, display or role of the config")
+        rules.append(rule)
     if not rules or rules[-1].name != "Default":
         raise SpecError(source, "file_rule", "the last file rule must be named 'Default'")
     return tuple(rules)
