@@ -133,8 +133,14 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         file_rules=_file_rules(raw, source, every | set(taken)),
         inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
         display_view_spaces=view_spaces,
-        source=source,
+        source=recorded(source),
     )
+
+
+def recorded(source: str) -> str:
+    """How a built config records the spec it came from: the file's name alone, so that the same
+    spec gives the same bytes however its path was typed, and no machine's paths are written."""
+    return Path(source).name
 
 
 def _check_keys(table: dict, allowed, source: str, prefix: str) -> None:
@@ -269,7 +275,7 @@ def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut
     else:
         prims = fields.spectral_primaries(table["primaries_spectra"], base, source, f"{field}.primaries_spectra")
     fields.check_triangle(prims, white, source, f"{field}.{given[0]}", f"{field}.white")
-    return Gamut(name, prims, white, citation=f"custom, {source}")
+    return Gamut(name, prims, white, citation=f"custom, {recorded(source)}")
 
 
 def _default_encoding(curve) -> str:

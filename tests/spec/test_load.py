@@ -165,3 +165,14 @@ def test_a_spec_loaded_for_one_space_is_checked_whole():
     with pytest.raises(SpecError) as error:
         load.parse(text.replace('"ADX10"', '"ADX11"'), "show.toml", Path("."), keep=("ACEScg",))
     assert error.value.field == "colour_spaces[5]"
+
+
+def test_the_resolved_spec_records_the_spec_files_name_alone(tmp_path, monkeypatch):
+    """The same spec builds the same bytes however its path is typed, and no path is written."""
+    (tmp_path / "show.toml").write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", '
+                                        '"sRGB Encoded Rec.709 (sRGB)", "Raw"]\n[[custom_space]]\nname = "Wall"\n'
+                                        'primaries = [[0.68, 0.31], [0.2, 0.72], [0.14, 0.05]]\nwhite = "D65"\n')
+    monkeypatch.chdir(tmp_path)
+    typed = resolved.dumps(load.load("show.toml"))
+    assert resolved.dumps(load.load(tmp_path / "show.toml")) == typed
+    assert str(tmp_path) not in typed and '"custom, show.toml"' in typed
