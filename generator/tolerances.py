@@ -29,6 +29,14 @@ FLOAT32_UNIT_ROUNDOFF = 2.0**-24
 #: A baked 1D LUT standing in for a curve OCIO cannot express for the target version.
 BAKED_CURVE_RELATIVE = 1e-4
 
+#: Smallest xy area of a spec's gamut triangle, and of the triangle its white point makes with
+#: any two of its primaries: a smaller one makes the RGB to XYZ matrix near singular (measured:
+#: a sliver of this area gives a condition number of 210, a white this close to an edge 110,
+#: ten times more at a tenth of the area), and float32 evaluation with it departs from the
+#: reference by that factor times FLOAT32_UNIT_ROUNDOFF, near ANALYTIC_RELATIVE. The library's
+#: smallest is 0.024.
+GAMUT_MIN_XY_AREA = 1e-3
+
 
 #: The CIE 1931 RGB -> XYZ matrix derived from today's 1 nm CMF tables against the
 #: 5-decimal matrix of 1931: the 1931 figures came from the Wright-Guild data, the

@@ -16,7 +16,8 @@ from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
-from generator.spec.load import DISPLAY_REFERENCE, VIEW_METHODS
+from generator.spec.load import VIEW_METHODS
+from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES, display_view_space
 from generator.spec.schema import ColourSpace, Display, Spec
 
 SCENE = ocio.REFERENCE_SPACE_SCENE
@@ -83,7 +84,7 @@ def _display_space(spec: Spec, display: Display, bakes: dict) -> ocio.ColorSpace
 
 
 def _display_reference_space() -> ocio.ColorSpace:
-    return ocio.ColorSpace(DISPLAY, name=DISPLAY_REFERENCE, aliases=["cie_xyz_d65_display", "lin_ciexyzd65_display"],
+    return ocio.ColorSpace(DISPLAY, name=DISPLAY_REFERENCE, aliases=list(DISPLAY_REFERENCE_ALIASES),
                            family="", encoding="display-linear", description="CIE XYZ relative to D65, 1.0 = 100 cd/m²",
                            categories=["file-io"])
 
@@ -161,7 +162,7 @@ def _display_view_spaces(spec: Spec, cfg: ocio.Config) -> None:
         for view in display.views:
             if view == "Raw":
                 continue
-            cs = ocio.ColorSpace(SCENE, name=f"{view} - {display.name}", family="Display-View",
+            cs = ocio.ColorSpace(SCENE, name=display_view_space(view, display.name), family="Display-View",
                                  encoding=display.encoding, categories=["file-io"],
                                  description=f"The {view} view of {display.name}, for writing display-ready files")
             dvt = ocio.DisplayViewTransform(src=spec.scene_reference, display=display.name, view=view)

@@ -24,6 +24,20 @@ TRANSFER_FAMILIES = {
 }
 _OPTIONAL = {"lin_side_break", "linear_slope"}
 
+#: Allowed values of the analytic families' parameters: (low, high, whether low itself is
+#: excluded). Gamma's exponent decodes (linear = code ** exponent; the encoding raises scene
+#: values to 1 / exponent): OCIO's ExponentTransform accepts 0.01 to 100, but beyond 0.2 to
+#: 10 float32 evaluation leaves the range of the values verify probes (measured: at 0.11 the
+#: encoding of 23160 overflows, at 50 the darkest ramp values underflow). piecewise_gamma's
+#: are the bounds of OCIO's ExponentWithLinearTransform. log_camera's give an increasing
+#: curve (OCIO only asks for non-zero slopes and a positive base other than 1).
+PARAMETER_RANGES = {
+    "gamma": {"exponent": (0.2, 10.0, False)},
+    "piecewise_gamma": {"gamma": (1.0, 10.0, True), "offset": (0.0, 0.9, True)},
+    "log_camera": {"base": (1.0, math.inf, True), "log_side_slope": (0.0, math.inf, True),
+                   "lin_side_slope": (0.0, math.inf, True), "linear_slope": (0.0, math.inf, True)},
+}
+
 
 def suggest(name: str, choices) -> str:
     """' (did you mean …?)' for close matches of ``name`` among ``choices``, or ''."""
@@ -54,6 +68,28 @@ def primaries(value, source: str, field: str) -> tuple:
     if not isinstance(value, list) or len(value) != 3:
         raise SpecError(source, field, "expected three chromaticities [[xr, yr], [xg, yg], [xb, yb]]")
     return tuple(xy_pair(v, source, f"{field}[{i}]") for i, v in enumerate(value))
+
+
+def _area(a, b, c) -> float:
+    """Signed area of the xy triangle a, b, c (positive when counter-clockwise)."""
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
+
+
+def check_triangle(primaries: tuple, white: tuple, source: str, field: str, white_field: str) -> None:
+    """The primaries must span a triangle and the white point lie inside it, each by at least
+    :data:`~generator.tolerances.GAMUT_MIN_XY_AREA`, so the gamut's matrix is well conditioned."""
+    from generator.tolerances import GAMUT_MIN_XY_AREA
+
+    area = _area(*primaries)
+    if abs(area) < GAMUT_MIN_XY_AREA:
+        raise SpecError(source, field, f"the primaries span no triangle (xy area {abs(area):.3g}: collinear or "
+                        f"repeated); allowed: three chromaticities enclosing an area of at least {GAMUT_MIN_XY_AREA:g}")
+    r, g, b = primaries
+    shares = [_area(white, g, b), _area(r, white, b), _area(r, g, white)]
+    if min(s * math.copysign(1.0, area) for s in shares) < GAMUT_MIN_XY_AREA:
+        raise SpecError(source, white_field, f"white point ({white[0]:.5g}, {white[1]:.5g}) is outside the primaries' "
+                        "triangle or on its edge; allowed: a white inside it, making a triangle of xy area at least "
+                        f"{GAMUT_MIN_XY_AREA:g} with any two primaries")
 
 
 def resolve_path(value, base: Path, source: str, field: str) -> Path:
@@ -141,14 +177,36 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
         code, linear = _csv(spectral.read_curve_csv, path, source, f"{field}.file")
         return label, transfer.Tabulated(path.name, tuple(map(float, code)), tuple(map(float, linear)))
     params = {k: number(v, source, f"{field}.{k}") for k, v in value.items() if k != "family"}
+    for key, limits in PARAMETER_RANGES[family].items():
+        if key in params and not _within(params[key], *limits):
+            raise SpecError(source, f"{field}.{key}", f"{params[key]:g} is out of range; allowed: {_describe(*limits)}")
     if family == "gamma":
-        if params["exponent"] <= 0:
-            raise SpecError(source, f"{field}.exponent", "must be positive")
         return label, transfer.Power(params["exponent"])
     if family == "piecewise_gamma":
-        if params["gamma"] <= 1 or params["offset"] <= 0:
-            raise SpecError(source, field, "piecewise_gamma needs gamma > 1 and offset > 0")
         return label, transfer.PiecewisePower(params["gamma"], params["offset"])
-    if params["base"] <= 1 or params["log_side_slope"] == 0 or params["lin_side_slope"] == 0:
-        raise SpecError(source, field, "log_camera needs base > 1 and non-zero slopes")
+    _check_log_break(params, source, field)
     return label, transfer.LogCamera(**params)
+
+
+def _within(value: float, low: float, high: float, open_low: bool) -> bool:
+    return (value > low if open_low else value >= low) and value <= high
+
+
+def _describe(low: float, high: float, open_low: bool) -> str:
+    if high == math.inf:
+        return f"> {low:g}" if open_low else f">= {low:g}"
+    return f"> {low:g} and <= {high:g}" if open_low else f"{low:g} to {high:g}"
+
+
+def _check_log_break(params: dict, source: str, field: str) -> None:
+    """A log_camera's linear segment starts at lin_side_break, where the log segment must be
+    defined (its argument positive); linear_slope is that segment's slope, so needs the break."""
+    if "lin_side_break" not in params:
+        if "linear_slope" in params:
+            raise SpecError(source, f"{field}.linear_slope", "needs lin_side_break, where the linear segment starts")
+        return
+    lowest = -params["lin_side_offset"] / params["lin_side_slope"]
+    if params["lin_side_break"] <= lowest:
+        raise SpecError(source, f"{field}.lin_side_break",
+                        f"at {params['lin_side_break']:g} the log segment is undefined "
+                        f"(lin_side_slope * lin_side_break + lin_side_offset <= 0); allowed: > {lowest:g}")

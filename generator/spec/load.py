@@ -12,7 +12,7 @@ from pathlib import Path
 
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
-from generator.spec import fields
+from generator.spec import fields, namespace
 from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
@@ -56,8 +56,6 @@ DEFAULT_ROLES = {
     "cie_xyz_d65_interchange": "CIE XYZ-D65 - Display-referred", "default_byte": "sRGB Encoded Rec.709 (sRGB)",
     "default_float": "ACEScg", "default_sequencer": "sRGB Encoded Rec.709 (sRGB)",
 }
-#: The name of the display-referred reference space every config has.
-DISPLAY_REFERENCE = "CIE XYZ-D65 - Display-referred"
 
 OCIO_MIN_VERSION = (2, 1)
 
@@ -80,7 +78,8 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
 
     With ``keep``, library colour spaces other than those named there, the scene
     reference and the roles' targets are left out: commands that use one space
-    (bake) load faster, and never derive gamuts they do not use.
+    (bake) load faster, and never derive gamuts they do not use. The spec is
+    checked whole all the same: what a build accepts, they accept.
     """
     if path is None:
         return parse(default_text(), "<default>", Path.cwd(), keep)
@@ -103,16 +102,25 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     if cat not in CATS:
         raise SpecError(source, "chromatic_adaptation", f"unknown {cat!r}; allowed: {', '.join(CATS)}")
     reference = _string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
-    if keep is not None:
-        roles = raw.get("roles", {})
-        keep = (*keep, reference, *DEFAULT_ROLES.values(), *(roles.values() if isinstance(roles, dict) else ()))
-    spaces = _spaces(raw, source, base, keep)
-    names = {n.lower() for s in spaces for n in s.all_names}
-    if reference.lower() not in names:
+    roles = raw.get("roles", {})
+    if not isinstance(roles, dict):
+        raise SpecError(source, "roles", "expected a table of role = colour space")
+    listed = _listed(raw, source)
+    customs = tuple(_custom_space(t, source, f"custom_space[{i}]", base)
+                    for i, t in enumerate(_tables(raw, "custom_space", source)))
+    all_names = [n for s in (*listed, *customs) for n in (s.name, *s.aliases)]
+    _unique(all_names, source, "colour_spaces")
+    displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
+    view_spaces = _bool(raw.get("display_view_spaces", False), source, "display_view_spaces")
+    taken = namespace.generated(displays, view_spaces, (*DEFAULT_ROLES, *roles), source)
+    namespace.check_free(listed, customs, taken, source)
+    every = {n.lower() for n in all_names}
+    if reference.lower() not in every:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
-    inactive = tuple(_name_list(raw.get("inactive", []), source, "inactive", names))
-    displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(raw.get("display", _default_displays())))
-    _unique([d.name for d in displays], source, "display")
+    if keep is not None:
+        keep = (*keep, reference, *DEFAULT_ROLES.values(), *roles.values())
+    spaces = (*_kept(listed, keep), *customs)
+    present = {n.lower() for s in spaces for n in s.all_names}
     return Spec(
         name=_string(raw.get("name", "ocioforge"), source, "name"),
         description=_string(raw.get("description", ""), source, "description"),
@@ -121,12 +129,18 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles(raw.get("roles", {}), source, names | {DISPLAY_REFERENCE.lower()}),
-        file_rules=_file_rules(raw.get("file_rule", None), source),
-        inactive=inactive,
-        display_view_spaces=_bool(raw.get("display_view_spaces", False), source, "display_view_spaces"),
-        source=source,
+        roles=_roles(roles, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
+        file_rules=_file_rules(raw, source, every | set(taken)),
+        inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
+        display_view_spaces=view_spaces,
+        source=recorded(source),
     )
+
+
+def recorded(source: str) -> str:
+    """How a built config records the spec it came from: the file's name alone, so that the same
+    spec gives the same bytes however its path was typed, and no machine's paths are written."""
+    return Path(source).name
 
 
 def _check_keys(table: dict, allowed, source: str, prefix: str) -> None:
@@ -163,6 +177,23 @@ def _unique(names, source: str, field: str) -> None:
         seen.add(name.lower())
 
 
+def _tables(raw: dict, key: str, source: str) -> list:
+    """The array of tables ``[[key]]`` (the library's displays when ``display`` is absent)."""
+    if key not in raw:
+        return _default_displays() if key == "display" else []
+    value = raw[key]
+    if not isinstance(value, list):
+        raise SpecError(source, key, f"expected an array of tables ([[{key}]]), got {value!r}")
+    return value
+
+
+def _name(table: dict, source: str, field: str) -> str:
+    name = _string(table.get("name", ""), source, f"{field}.name")
+    if not name:
+        raise SpecError(source, f"{field}.name", "required: a non-empty name")
+    return name
+
+
 def parse_version(value, source: str) -> tuple[int, int]:
     """The spec's config version; the oldest supported one is accepted without asking the
     installed PyOpenColorIO (every supported release writes it), which spares its import."""
@@ -180,12 +211,17 @@ def _allowed() -> str:
     return f"2.{OCIO_MIN_VERSION[1]} to {newest[0]}.{newest[1]}"
 
 
-def library_space(name: str, source: str, field: str) -> ColourSpace:
+def library_def(name: str, source: str, field: str) -> library.SpaceDef:
+    """The library's record of the colour space called ``name`` or one of its aliases."""
     for space in library.SPACES:
         if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
-            return from_library(space)
+            return space
     choices = [n for s in library.SPACES for n in (s.name, *s.aliases)]
     raise SpecError(source, field, f"unknown colour space {name!r}{fields.suggest(name, choices)}; see ocioforge list")
+
+
+def library_space(name: str, source: str, field: str) -> ColourSpace:
+    return from_library(library_def(name, source, field))
 
 
 def from_library(space: library.SpaceDef) -> ColourSpace:
@@ -203,27 +239,19 @@ def from_library(space: library.SpaceDef) -> ColourSpace:
     )
 
 
-def _spaces(raw: dict, source: str, base: Path, keep=None) -> tuple[ColourSpace, ...]:
-    names = raw.get("colour_spaces", ["*"])
-    if names == ["*"]:
-        names = [s.name for s in library.SPACES]
-    if keep is not None and isinstance(names, list):
-        wanted = {str(k).lower() for k in keep}
-        names = [n for n in names if not isinstance(n, str) or _library_names(n) & wanted]
-    spaces = [library_space(n, source, f"colour_spaces[{i}]")
-              for i, n in enumerate(_strings(names, source, "colour_spaces"))]
-    for i, table in enumerate(raw.get("custom_space", [])):
-        spaces.append(_custom_space(table, source, f"custom_space[{i}]", base))
-    _unique([n for s in spaces for n in s.all_names], source, "colour_spaces")
-    return tuple(spaces)
+def _listed(raw: dict, source: str) -> tuple[library.SpaceDef, ...]:
+    """The library colour spaces the spec names (["*"]: all of them)."""
+    value = raw.get("colour_spaces", ["*"])
+    if value == ["*"]:
+        return library.SPACES
+    return tuple(library_def(n, source, f"colour_spaces[{i}]") for i, n in enumerate(_strings(value, source, "colour_spaces")))
 
 
-def _library_names(name: str) -> set[str]:
-    """Every name of the library space called ``name`` (lower case), or {name}."""
-    for space in library.SPACES:
-        if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
-            return {n.lower() for n in (space.name, *space.aliases)}
-    return {name.lower()}
+def _kept(listed, keep: tuple[str, ...] | None) -> tuple[ColourSpace, ...]:
+    """The listed library spaces resolved: all, or with ``keep`` those it names."""
+    wanted = None if keep is None else {str(k).lower() for k in keep}
+    return tuple(from_library(d) for d in listed
+                 if wanted is None or {n.lower() for n in (d.name, *d.aliases)} & wanted)
 
 
 def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut:
@@ -246,7 +274,8 @@ def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut
         prims = fields.primaries(table["primaries"], source, f"{field}.primaries")
     else:
         prims = fields.spectral_primaries(table["primaries_spectra"], base, source, f"{field}.primaries_spectra")
-    return Gamut(name, prims, white, citation=f"custom, {source}")
+    fields.check_triangle(prims, white, source, f"{field}.{given[0]}", f"{field}.white")
+    return Gamut(name, prims, white, citation=f"custom, {recorded(source)}")
 
 
 def _default_encoding(curve) -> str:
@@ -262,9 +291,7 @@ def _default_encoding(curve) -> str:
 
 def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpace:
     _check_keys(table, CUSTOM_SPACE_KEYS, source, f"{field}.")
-    name = _string(table.get("name", ""), source, f"{field}.name")
-    if not name:
-        raise SpecError(source, f"{field}.name", "required")
+    name = _name(table, source, field)
     curve_name, curve = fields.transfer_function(table.get("transfer", "linear"), base, source, f"{field}.transfer")
     encoding = table.get("encoding", _default_encoding(curve))
     if encoding not in ENCODINGS:
@@ -286,11 +313,13 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     from generator.colorimetry.gamuts import gamuts
 
     _check_keys(table, DISPLAY_KEYS, source, f"{field}.")
-    name = _string(table.get("name", ""), source, f"{field}.name")
+    name = _name(table, source, field)
     views = _strings(table["views"], source, f"{field}.views") if "views" in table else None
     for i, view in enumerate(views or ()):
         if view not in VIEWS:
             raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}; allowed: {', '.join(VIEWS)}")
+        if view in views[:i]:
+            raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
     known = {d.name.lower(): d for d in library.DISPLAYS}
     custom = any(k in table for k in ("gamut", "primaries", "eotf"))
     if name.lower() in known and not custom:
@@ -324,8 +353,6 @@ def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
 
 
 def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
-    if not isinstance(table, dict):
-        raise SpecError(source, "roles", "expected a table of role = colour space")
     roles = {**DEFAULT_ROLES, **table}
     for role, target in roles.items():
         if not isinstance(target, str) or target.lower() not in names:
@@ -333,14 +360,23 @@ def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
     return tuple(sorted(roles.items()))
 
 
-def _file_rules(value, source: str) -> tuple[FileRule, ...]:
-    if value is None:
+def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]:
+    """The file rules; each names a colour space, display or role of the config (``names``)."""
+    if "file_rule" not in raw:
         return (FileRule("OpenEXR", "scene_linear", "*", "exr"), FileRule("PNG", "texture_paint", "*", "png"), FileRule("JPEG", "texture_paint", "*", "jpg"),
                 FileRule("JPEG long", "texture_paint", "*", "jpeg"), FileRule("Default", "default"))
     rules = []
-    for i, table in enumerate(value):
-        _check_keys(table, FILE_RULE_KEYS, source, f"file_rule[{i}].")
-        rules.append(FileRule(**{k: _string(v, source, f"file_rule[{i}].{k}") for k, v in table.items()}))
+    for i, table in enumerate(_tables(raw, "file_rule", source)):
+        field = f"file_rule[{i}]"
+        _check_keys(table, FILE_RULE_KEYS, source, f"{field}.")
+        for key in ("name", "colour_space"):
+            if key not in table:
+                raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
+        rule = FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()})
+        if rule.colour_space.lower() not in names:
+            raise SpecError(source, f"{field}.colour_space", f"{rule.colour_space!r} is not among the colour spaces; "
+                            "allowed: a colour space, display or role of the config")
+        rules.append(rule)
     if not rules or rules[-1].name != "Default":
         raise SpecError(source, "file_rule", "the last file rule must be named 'Default'")
     return tuple(rules)

@@ -34,7 +34,7 @@ from generator.colorimetry.matrices import apply_matrix
 from generator.colorimetry.transfer import Linear
 from generator.ocio.capabilities import builtin_code_domain
 from generator.ocio.curves import curve_label, is_baked
-from generator.spec.load import DISPLAY_REFERENCE
+from generator.spec.namespace import DISPLAY_REFERENCE, display_view_space
 from generator.spec.schema import ColourSpace, Display, Spec
 
 #: Output kinds, which choose the metric: scene or display light, code values, a display's codes.
@@ -227,7 +227,7 @@ def display_view_spaces(spec: Spec) -> list[Endpoint]:
         return []
     back = {d.name: np.linalg.inv(reference.display_matrix(spec, d) @ reference.scene_to_display_reference(spec))
             for d in spec.displays}
-    return [Endpoint(f"{view} - {display.name}", None, view_function(spec, display, view), (0.0, 1.0), DISPLAY,
+    return [Endpoint(display_view_space(view, display.name), None, view_function(spec, display, view), (0.0, 1.0), DISPLAY,
                      display, matrix=back[display.name], view=view) for display in spec.displays for view in display.views
             if view != RAW]
 

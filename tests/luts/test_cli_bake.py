@@ -24,6 +24,17 @@ def test_spi3d_writes_its_shaper_beside(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.spi1d", "a.spi3d"]
 
 
+def test_bakes_from_a_spec_whose_inactive_spaces_it_does_not_load(tmp_path):
+    spec = tmp_path / "show.toml"
+    spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+                    '"ADX10"]\ninactive = ["ADX10"]\n')
+    out = tmp_path / "a.cube"
+    result = CliRunner().invoke(command, ["--spec", str(spec), "--from", "ACEScg", "--to", "sRGB - Display", "--size",
+                                          "9", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.exists()
+
+
 BAD = {
     "display as source": ["--from", "sRGB - Display", "--to", "sRGB - Display"],
     "data source": ["--from", "Raw", "--to", "sRGB - Display"],

@@ -68,6 +68,12 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[custom_space]]\nname = 'x'\nprimaries = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]]\nwhite = 'D66'",
      "custom_space[0].white", "did you mean"),
     ("[[custom_space]]\nname = 'ACEScg'\ngamut = 'Rec.709'", "colour_spaces", "defined twice"),
+    ("display = 5", "display", "expected an array of tables ([[display]])"),
+    ("[custom_space]\nname = 'x'", "custom_space", "expected an array of tables ([[custom_space]])"),
+    ("[[display]]\nname = ''\ngamut = 'Rec.709'\neotf = 'sRGB'", "display[0].name", "required"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['Raw', 'Colorimetric', 'Raw']", "display[0].views[2]",
+     "listed twice"),
+    ("[[file_rule]]\nname = 'Default'", "file_rule[0].colour_space", "required"),
     ("name = = 1", "-", "not valid TOML"),
 ])
 def test_bad_specs_name_the_field_and_what_is_allowed(text, field, words):
@@ -146,3 +152,27 @@ def test_resolved_spec_round_trips_and_evaluates_identically(default_spec):
 
 def test_embedded_default_is_the_documented_file():
     assert load.parse(load.default_text(), "<default>", Path(".")) == load.load()
+
+
+def test_a_spec_loaded_for_one_space_is_checked_whole():
+    """bake loads a spec keeping only the spaces it uses: a spec build accepts must load (an inactive
+    space left out is no error), and one build refuses must not (an unknown space left out is)."""
+    text = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", "ADX10"]\n'
+    whole = parse(text + 'inactive = ["ADX10"]\n')
+    kept = load.parse(text + 'inactive = ["ADX10"]\n', "show.toml", Path("."), keep=("ACEScg",))
+    assert whole.inactive == ("ADX10",) and kept.inactive == ()
+    assert "ADX10" not in {s.name for s in kept.colour_spaces}
+    with pytest.raises(SpecError) as error:
+        load.parse(text.replace('"ADX10"', '"ADX11"'), "show.toml", Path("."), keep=("ACEScg",))
+    assert error.value.field == "colour_spaces[5]"
+
+
+def test_the_resolved_spec_records_the_spec_files_name_alone(tmp_path, monkeypatch):
+    """The same spec builds the same bytes however its path is typed, and no path is written."""
+    (tmp_path / "show.toml").write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", '
+                                        '"sRGB Encoded Rec.709 (sRGB)", "Raw"]\n[[custom_space]]\nname = "Wall"\n'
+                                        'primaries = [[0.68, 0.31], [0.2, 0.72], [0.14, 0.05]]\nwhite = "D65"\n')
+    monkeypatch.chdir(tmp_path)
+    typed = resolved.dumps(load.load("show.toml"))
+    assert resolved.dumps(load.load(tmp_path / "show.toml")) == typed
+    assert str(tmp_path) not in typed and '"custom, show.toml"' in typed
