@@ -100,8 +100,13 @@ class OiiotoolEngine:
             return ["--ociofiletransform", Path(check.lut).name, "-o", f"{stem}.exr"]
         return ["--colorconvert", check.src, check.dst, "-o", f"{stem}.exr"]
 
+    def _command(self, config: Path) -> list[str]:
+        """oiiotool reading ``config``, with its frame wildcards off: a colour space, display or
+        view name that reads as a path with a '#' ('Cam #1/A') is a name, not a file sequence."""
+        return [self.executable(), "--wildcardoff", "--colorconfig", str(config)]
+
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
-        loaded = run_host([self.executable(), "--colorconfig", str(config), "--echo", "ok"])
+        loaded = run_host([*self._command(config), "--echo", "ok"])
         if TOO_NEW in loaded.stdout + loaded.stderr:
             raise NotRunnable(_message(loaded))
         inputs = write_inputs(checks, workdir, "oiiotool")
@@ -109,7 +114,7 @@ class OiiotoolEngine:
         failures = {}
         start = 0
         while start < len(checks):
-            command = [self.executable(), "--colorconfig", str(config)]
+            command = self._command(config)
             for index in range(start, len(checks)):
                 command += [str(inputs[index]), *self._ops(checks[index], stems[index])]
             result = run_host(command)

@@ -91,3 +91,23 @@ def test_ocio_21s_tabulated_pq_is_carried_near_black(tmp_path):
     result = verify(folder / "config.ocio", ("ocioconvert",), kinds=(VIEW,), only="Colorimetric from Tab Log")
     assert result.outcomes and not [e for e in result.engines if e.skipped]
     assert result.passed, [(o.check.title, o.engine, o.worst, o.worst_input) for o in result.failures]
+
+
+def test_oiiotool_reads_names_holding_its_wildcards(tmp_path):
+    """'#' is oiiotool's frame wildcard: a colour space whose name reads as a path with one
+    ('Cam #1/A') made every check of the batch fail ("No filenames found matching pattern")."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from tests.conftest import require_program
+
+    require_program("oiiotool")
+    (tmp_path / "show.toml").write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        "[[custom_space]]\nname = 'Cam #1/A'\ngamut = \"P3-D65\"\n"
+        'transfer = { family = "gamma", exponent = 2.2 }\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+    folder = tmp_path / "show"
+    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
+    result = verify(folder / "config.ocio", ("oiiotool",), density="quick", only="Cam #1/A")
+    assert result.outcomes and not [e for e in result.engines if e.skipped]
+    assert result.passed, [(o.check.title, o.engine, o.note) for o in result.failures]
