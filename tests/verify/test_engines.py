@@ -67,47 +67,46 @@ def test_a_config_newer_than_a_hosts_ocio_is_not_run_there(build_config):
         assert TOO_NEW in run.skipped and all(o.verdict == NOT_RUN for o in outcomes)
 
 
+def _verified_on(tmp_path, program: str, text: str, **options):
+    """Build the spec ``text`` (beside files already in ``tmp_path``) for OCIO 2.1 and verify it
+    with ``program`` alone, which must have run."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from tests.conftest import require_program
+
+    require_program(program)
+    (tmp_path / "show.toml").write_text(text)
+    folder = tmp_path / "show"
+    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
+    result = verify(folder / "config.ocio", (program,), **options)
+    assert result.outcomes and not [e for e in result.engines if e.skipped]
+    return result
+
+
 def test_ocio_21s_tabulated_pq_is_carried_near_black(tmp_path):
     """OCIO 2.1 tabulates PQ over 4096 codes, and its default flags tabulate the display's
     inverse again over half-float light: a blue-only code near black from a log space (red at
     5e-6 cd/m² after the matrices) came back 0.0102 ΔE ITP away, over the 0.01 tolerance, which
     no config can change. Verify carries that departure."""
-    from generator.ocio.write import build, for_folder
-    from generator.spec import load
-    from tests.conftest import require_program
-
-    require_program("ocioconvert")
     rows = "".join(f"{c:.6f},{(10.0 ** (5 * c) - 1) * 1e-3:.9g}\n" for c in (i / 256 for i in range(257)))
     (tmp_path / "curve.csv").write_text("code,linear\n" + rows)
-    (tmp_path / "show.toml").write_text(
+    result = _verified_on(
+        tmp_path, "ocioconvert",
         'chromatic_adaptation = "CAT02"\n'
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[custom_space]]\nname = "Tab Log"\nprimaries = [[0.70, 0.30], [0.17, 0.80], [0.13, 0.04]]\nwhite = 5600\n'
         'transfer = { family = "tabulated", file = "curve.csv" }\nencoding = "log"\n'
         '[[display]]\nname = "Rec.2100-PQ - Display"\nviews = ["Colorimetric", "Raw"]\n'
-        '[roles]\ncompositing_log = "Tab Log"\n')
-    folder = tmp_path / "show"
-    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
-    result = verify(folder / "config.ocio", ("ocioconvert",), kinds=(VIEW,), only="Colorimetric from Tab Log")
-    assert result.outcomes and not [e for e in result.engines if e.skipped]
+        '[roles]\ncompositing_log = "Tab Log"\n', kinds=(VIEW,), only="Colorimetric from Tab Log")
     assert result.passed, [(o.check.title, o.engine, o.worst, o.worst_input) for o in result.failures]
 
 
 def test_oiiotool_reads_names_holding_its_wildcards(tmp_path):
     """'#' is oiiotool's frame wildcard: a colour space whose name reads as a path with one
     ('Cam #1/A') made every check of the batch fail ("No filenames found matching pattern")."""
-    from generator.ocio.write import build, for_folder
-    from generator.spec import load
-    from tests.conftest import require_program
-
-    require_program("oiiotool")
-    (tmp_path / "show.toml").write_text(
+    result = _verified_on(
+        tmp_path, "oiiotool",
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-        "[[custom_space]]\nname = 'Cam #1/A'\ngamut = \"P3-D65\"\n"
-        'transfer = { family = "gamma", exponent = 2.2 }\n'
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
-    folder = tmp_path / "show"
-    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
-    result = verify(folder / "config.ocio", ("oiiotool",), density="quick", only="Cam #1/A")
-    assert result.outcomes and not [e for e in result.engines if e.skipped]
+        "[[custom_space]]\nname = 'Cam #1/A'\ngamut = \"P3-D65\"\ntransfer = { family = \"gamma\", exponent = 2.2 }\n"
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n', density="quick", only="Cam #1/A")
     assert result.passed, [(o.check.title, o.engine, o.note) for o in result.failures]
