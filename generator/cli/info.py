@@ -21,7 +21,8 @@ def _lines(space, spec) -> list[str]:
                 "primaries: " + "  ".join(f"{c} ({x:.5f}, {y:.5f})" for c, (x, y) in zip("RGB", g.primaries)),
                 f"white:     ({g.white[0]:.5f}, {g.white[1]:.5f})", f"curve:     {space.curve_name}: {space.curve!r}"]
         out.append(f"18% grey:  code {float(space.curve.encode(np.float64(0.18))):.6f}")
-        out.append(f"to {spec.scene_reference} ({spec.chromatic_adaptation}):")
+        out.append(f"to {spec.scene_reference} ({reference.adaptation_for(spec, g)}"
+                   f"{', as its publisher' if g.adaptation else ''}):")
         out += ["  " + " ".join(f"{v: .10f}" for v in row) for row in reference.space_matrix(spec, space)]
     newest = newest_ocio_version()
     for minor in range(1, newest[1] + 1):

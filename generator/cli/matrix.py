@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 
 import click
+import numpy as np
 
 FORMATS = ("plain", "json", "nuke", "ocio")
 
@@ -30,6 +31,17 @@ def _node_name(space) -> str:
     return next((a for a in space.aliases if a.replace("_", "").isalnum()), slug(space.name))
 
 
+def published_matrix(source, target):
+    """``source`` to ``target`` linear RGB as a config of the default spec converts: each to
+    ACES2065-1 with the adaptation behind its published matrices, else Bradford."""
+    from generator.colorimetry.gamuts import gamuts
+    from generator.colorimetry.matrices import rgb_to_rgb
+
+    aces = gamuts()["AP0"]
+    to_aces = [rgb_to_rgb(g, aces, g.adaptation or "Bradford") for g in (source, target)]
+    return np.linalg.solve(to_aces[1], to_aces[0])
+
+
 def render(matrix, fmt: str, label: str) -> str:
     rows = [[float(v) for v in row] for row in matrix]
     if fmt == "json":
@@ -45,20 +57,22 @@ def render(matrix, fmt: str, label: str) -> str:
 @click.command(help="Print the 3x3 matrix taking linear SRC RGB to linear DST RGB (column vectors).")
 @click.argument("src")
 @click.argument("dst")
-@click.option("--cat", default="Bradford", show_default=True,
-              help="Chromatic adaptation: Bradford, CAT02, CAT16, von Kries, XYZ scaling, none.")
+@click.option("--cat", default=None,
+              help="Chromatic adaptation: Bradford, CAT02, CAT16, von Kries, XYZ scaling, none (default: the one "
+                   "behind each camera gamut's published matrices, else Bradford, through ACES2065-1 as a config "
+                   "with the default spec converts).")
 @click.option("--format", "fmt", type=click.Choice(FORMATS), default="plain", show_default=True)
 def command(src, dst, cat, fmt):
     from generator.colorimetry.matrices import CATS, rgb_to_rgb
     from generator.spec.load import library_space
     from generator.spec.schema import SpecError
 
-    if cat not in CATS:
+    if cat is not None and cat not in CATS:
         raise SpecError("--cat", cat, f"unknown chromatic adaptation; allowed: {', '.join(CATS)}")
     spaces = [library_space(name, "ocioforge matrix", which) for name, which in ((src, "SRC"), (dst, "DST"))]
     for space, which in zip(spaces, ("SRC", "DST")):
         if space.gamut is None:
             raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
-    matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat)
+    matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat) if cat else published_matrix(*(s.gamut for s in spaces))
     label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
     click.echo(render(matrix, fmt, label))

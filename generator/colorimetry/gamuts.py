@@ -67,12 +67,26 @@ COLOUR_KEYS = {
 }
 
 
+#: The chromatic adaptation behind each camera gamut's published matrices to ACES2065-1,
+#: as OCIO's builtin camera transforms (the ACES studio config's spaces) carry them: ARRI's,
+#: Canon's and Sony's (their ACES input transforms) reproduce with CAT02, Panasonic's and
+#: RED's with Bradford (each within 3e-6 of the builtin's matrix, which the tests hold).
+#: A space of one of these gamuts is adapted so, whatever the spec's chromatic_adaptation,
+#: so that its name means the same numbers as in that config.
+PUBLISHED_ADAPTATION = {
+    "ARRI Wide Gamut 3": "CAT02", "ARRI Wide Gamut 4": "CAT02", "Cinema Gamut": "CAT02",
+    "S-Gamut3": "CAT02", "S-Gamut3.Cine": "CAT02", "Venice S-Gamut3": "CAT02", "Venice S-Gamut3.Cine": "CAT02",
+    "V-Gamut": "Bradford", "REDWideGamutRGB": "Bradford",
+}
+
+
 def _rounded(values) -> tuple:
     return tuple(tuple(float(v) for v in row) for row in values)
 
 
 def _standard() -> dict[str, Gamut]:
-    return {name: Gamut(name, primaries, white, citation=cite) for name, (primaries, white, cite) in STANDARD.items()}
+    return {name: Gamut(name, primaries, white, citation=cite, adaptation=PUBLISHED_ADAPTATION.get(name))
+            for name, (primaries, white, cite) in STANDARD.items()}
 
 
 def _xyz() -> dict[str, Gamut]:

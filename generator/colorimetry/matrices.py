@@ -50,6 +50,9 @@ class Gamut:
     whitepoint: tuple[float, float]
     adapting_white: tuple[float, float] | None = None
     citation: str = ""
+    #: The chromatic adaptation the gamut's publisher derives its matrices to other whites
+    #: with (a key of CATS), where it publishes them; None otherwise.
+    adaptation: str | None = None
 
     @property
     def white(self) -> tuple[float, float]:

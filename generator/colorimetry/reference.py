@@ -14,13 +14,25 @@ from __future__ import annotations
 import numpy as np
 
 from generator.colorimetry.gamuts import D65
-from generator.colorimetry.matrices import adaptation_matrix, apply_matrix, rgb_to_rgb, rgb_to_xyz_adapted
+from generator.colorimetry.matrices import Gamut, adaptation_matrix, apply_matrix, rgb_to_rgb, rgb_to_xyz_adapted
 from generator.spec.schema import ColourSpace, Display, Spec
+
+
+def adaptation_for(spec: Spec, gamut: Gamut) -> str:
+    """The chromatic adaptation between ``gamut`` and the scene reference: the one behind the
+    published matrices of either (:data:`generator.colorimetry.gamuts.PUBLISHED_ADAPTATION`),
+    else the spec's."""
+    return gamut.adaptation or spec.reference.gamut.adaptation or spec.chromatic_adaptation
+
+
+def gamut_matrix(spec: Spec, gamut: Gamut) -> np.ndarray:
+    """Linear RGB of ``gamut`` to the scene reference."""
+    return rgb_to_rgb(gamut, spec.reference.gamut, adaptation_for(spec, gamut))
 
 
 def space_matrix(spec: Spec, space: ColourSpace) -> np.ndarray:
     """Linear RGB of ``space`` to the scene reference."""
-    return rgb_to_rgb(space.gamut, spec.reference.gamut, spec.chromatic_adaptation)
+    return gamut_matrix(spec, space.gamut)
 
 
 def adx_reference_matrix(spec: Spec) -> np.ndarray:

@@ -43,7 +43,8 @@ def _gamut_from_json(data):
     if data is None:
         return None
     return Gamut(data["name"], tuple(tuple(p) for p in data["primaries"]), tuple(data["whitepoint"]),
-                 tuple(data["adapting_white"]) if data["adapting_white"] else None, data["citation"])
+                 tuple(data["adapting_white"]) if data["adapting_white"] else None, data["citation"],
+                 data.get("adaptation"))
 
 
 def _record(obj) -> dict:

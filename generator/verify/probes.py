@@ -23,8 +23,9 @@ from functools import cached_property
 
 import numpy as np
 
+from generator.colorimetry import reference
 from generator.colorimetry.curves import HALF_MAX
-from generator.colorimetry.matrices import apply_matrix, rgb_to_rgb
+from generator.colorimetry.matrices import apply_matrix
 from generator.spec.schema import Spec
 
 NON_FINITE = "non-finite"
@@ -145,7 +146,7 @@ def camera_gamut(spec: Spec) -> Family:
     gamuts = {s.gamut.name: s.gamut for s in spec.colour_spaces if s.gamut is not None}
     values, notes = [], []
     for name, gamut in gamuts.items():
-        matrix = rgb_to_rgb(gamut, spec.reference.gamut, spec.chromatic_adaptation)
+        matrix = reference.gamut_matrix(spec, gamut)
         for level in (0.18, 1.0):
             values.append(apply_matrix(matrix, corners * level))
             notes += [f"{name} {label} x{level:g}" for label in labels]

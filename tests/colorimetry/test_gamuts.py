@@ -4,7 +4,8 @@ import colour
 import numpy as np
 import pytest
 
-from generator.colorimetry.gamuts import COLOUR_KEYS, STANDARD, gamuts
+from generator import tolerances
+from generator.colorimetry.gamuts import COLOUR_KEYS, PUBLISHED_ADAPTATION, STANDARD, gamuts
 
 
 @pytest.mark.parametrize("name", sorted(STANDARD))
@@ -22,3 +23,55 @@ def test_every_library_gamut_resolves():
     names = {s.gamut for s in library.SPACES if s.gamut} | {d.gamut for d in library.DISPLAYS}
     assert names <= set(gamuts())
     assert all(np.isfinite(gamuts()[n].rgb_to_xyz).all() for n in names)
+
+
+#: OCIO's builtin camera transform of each gamut with published matrices, and the curve it decodes.
+BUILTINS = {
+    "ARRI Wide Gamut 3": ("ARRI_ALEXA-LOGC-EI800-AWG_to_ACES2065-1", "ARRI LogC3 (EI800)"),
+    "ARRI Wide Gamut 4": ("ARRI_LOGC4_to_ACES2065-1", "ARRI LogC4"),
+    "Cinema Gamut": ("CANON_CLOG3-CGAMUT_to_ACES2065-1", "Canon Log 3"),
+    "S-Gamut3": ("SONY_SLOG3-SGAMUT3_to_ACES2065-1", "S-Log3"),
+    "S-Gamut3.Cine": ("SONY_SLOG3-SGAMUT3.CINE_to_ACES2065-1", "S-Log3"),
+    "Venice S-Gamut3": ("SONY_SLOG3-SGAMUT3-VENICE_to_ACES2065-1", "S-Log3"),
+    "Venice S-Gamut3.Cine": ("SONY_SLOG3-SGAMUT3.CINE-VENICE_to_ACES2065-1", "S-Log3"),
+    "V-Gamut": ("PANASONIC_VLOG-VGAMUT_to_ACES2065-1", "V-Log"),
+    "REDWideGamutRGB": ("RED_LOG3G10-RWG_to_ACES2065-1", "Log3G10"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(PUBLISHED_ADAPTATION))
+def test_published_adaptation_reproduces_the_builtin_camera_matrix(name):
+    """The gamut's matrix to ACES2065-1, derived with its publisher's adaptation, is OCIO's
+    builtin's (the vendor's published matrix, read back through the builtin on colours whose
+    decoded values are known); the spec's default, Bradford, is not for the CAT02 gamuts."""
+    import PyOpenColorIO as ocio
+
+    from generator.colorimetry.curves import CURVES
+    from generator.colorimetry.matrices import rgb_to_rgb
+
+    builtin, curve = BUILTINS[name]
+    linear = np.eye(3) * 0.5 + 0.1
+    pixels = np.ascontiguousarray(CURVES[curve].encode(linear), dtype=np.float32)
+    ocio.Config.CreateRaw().getProcessor(ocio.BuiltinTransform(builtin)).getDefaultCPUProcessor().applyRGB(pixels)
+    published = np.linalg.solve(linear, pixels.astype(np.float64)).T
+    gamut, aces = gamuts()[name], gamuts()["AP0"]
+    derived = rgb_to_rgb(gamut, aces, gamut.adaptation)
+    assert np.abs(derived - published).max() <= tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+    if gamut.adaptation != "Bradford":
+        assert np.abs(rgb_to_rgb(gamut, aces, "Bradford") - published).max() > 100 * \
+            tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+
+
+def test_a_camera_space_is_adapted_as_its_publisher_whatever_the_spec():
+    """A spec adapting with CAT16 still converts ARRI LogC4 as ARRI publishes (CAT02)."""
+    import dataclasses
+
+    from generator.colorimetry import reference
+    from generator.colorimetry.matrices import rgb_to_rgb
+    from generator.spec import load
+
+    spec = dataclasses.replace(load.load(), chromatic_adaptation="CAT16")
+    space = spec.space("ARRI LogC4")
+    assert np.array_equal(reference.space_matrix(spec, space), rgb_to_rgb(space.gamut, spec.reference.gamut, "CAT02"))
+    srgb = spec.space("Linear Rec.709 (sRGB)")
+    assert np.array_equal(reference.space_matrix(spec, srgb), rgb_to_rgb(srgb.gamut, spec.reference.gamut, "CAT16"))
