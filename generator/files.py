@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import errno
 import os
 import shutil
 import tempfile
@@ -10,25 +11,71 @@ from contextlib import contextmanager
 from pathlib import Path
 
 
+class CannotWrite(Exception):
+    """An output the user named could not be written: the path and the operating system's
+    reason (read-only file system, no permission, a file where a folder should be, disk full)."""
+
+    def __init__(self, path: str | Path, error: OSError):
+        super().__init__(f"{path}: cannot write: {error.strerror or error}")
+        self.path, self.error = Path(path), error
+
+
+@contextmanager
+def _writing(path: Path) -> Iterator[None]:
+    """Any OSError in the block becomes :class:`CannotWrite` naming ``path``."""
+    try:
+        yield
+    except OSError as error:
+        raise CannotWrite(path, error) from error
+
+
+def _make_folder(folder: Path) -> None:
+    """``mkdir -p``; a file in the way reads as the OS says it for a path under a file
+    ("Not a directory"), not as "File exists"."""
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except FileExistsError as error:
+        raise NotADirectoryError(errno.ENOTDIR, os.strerror(errno.ENOTDIR), error.filename) from error
+
+
+def _inside(filename, folder: Path) -> bool:
+    """Whether an OSError's ``filename`` (str, bytes or None) lies in ``folder``."""
+    return filename is not None and Path(os.fsdecode(filename)).is_relative_to(folder)
+
+
 @contextmanager
 def staged_folder(folder: Path) -> Iterator[Path]:
     """Yield an empty temporary sibling of ``folder``; when the block succeeds, it replaces
-    ``folder`` (renamed into place); when it fails, it is removed and ``folder`` is untouched."""
-    folder.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
+    ``folder`` (renamed into place); when it fails, it is removed and ``folder`` is untouched.
+    Failing to create, fill (an OSError on a path inside it) or rename it raises
+    :class:`CannotWrite` naming ``folder``."""
+    with _writing(folder):
+        _make_folder(folder.parent)
+        staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
     try:
-        yield staging
-        os.chmod(staging, 0o755)
-        if folder.exists():
-            old = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent))
-            folder.rename(old / "x")
-            staging.rename(folder)
-            shutil.rmtree(old)
-        else:
-            staging.rename(folder)
+        try:
+            yield staging
+        except OSError as error:
+            if _inside(error.filename, staging):
+                raise CannotWrite(folder, error) from error
+            raise
+        with _writing(folder):
+            _replace_folder(staging, folder)
     finally:
         if staging.exists():
             shutil.rmtree(staging)
+
+
+def _replace_folder(staging: Path, folder: Path) -> None:
+    """Rename the complete ``staging`` to ``folder``, moving a previous ``folder`` aside first."""
+    os.chmod(staging, 0o755)
+    if folder.exists():
+        old = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent))
+        folder.rename(old / "x")
+        staging.rename(folder)
+        shutil.rmtree(old)
+    else:
+        staging.rename(folder)
 
 
 def _plain_mode() -> int:
@@ -40,19 +87,22 @@ def _plain_mode() -> int:
 
 def write_files(files: dict[Path, bytes]) -> None:
     """Write every file or none: each goes to a private temporary sibling first, gets a
-    plain write's permissions, and only once all are complete are they renamed into place."""
+    plain write's permissions, and only once all are complete are they renamed into place.
+    A file that cannot be written raises :class:`CannotWrite` naming it."""
     staged: list[tuple[str, Path]] = []
     mode = _plain_mode()
     try:
         for path, data in files.items():
-            path.parent.mkdir(parents=True, exist_ok=True)
-            handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-            staged.append((temporary, path))
-            with os.fdopen(handle, "wb") as stream:
-                stream.write(data)
-            os.chmod(temporary, mode)
+            with _writing(path):
+                _make_folder(path.parent)
+                handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+                staged.append((temporary, path))
+                with os.fdopen(handle, "wb") as stream:
+                    stream.write(data)
+                os.chmod(temporary, mode)
         for temporary, path in staged:
-            os.replace(temporary, path)
+            with _writing(path):
+                os.replace(temporary, path)
     finally:
         for temporary, _ in staged:
             if os.path.exists(temporary):

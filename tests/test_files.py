@@ -7,7 +7,7 @@ import stat
 
 import pytest
 
-from generator.files import write_atomic, write_files
+from generator.files import CannotWrite, staged_folder, write_atomic, write_files
 
 
 def test_a_written_file_is_readable_as_a_plain_write_would_leave_it(tmp_path):
@@ -27,7 +27,26 @@ def test_files_are_written_all_or_none(tmp_path):
     is not renamed into place, the existing one is kept, and no temporary is left."""
     (tmp_path / "lut.cube").write_bytes(b"old")
     (tmp_path / "blocked").write_bytes(b"")
-    with pytest.raises(OSError):
+    with pytest.raises(CannotWrite, match="lut.spi1d: cannot write: Not a directory"):
         write_files({tmp_path / "lut.cube": b"new", tmp_path / "blocked" / "lut.spi1d": b"shaper"})
     assert (tmp_path / "lut.cube").read_bytes() == b"old"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["blocked", "lut.cube"]
+
+
+def test_a_folder_that_cannot_be_staged_names_the_folder(tmp_path):
+    (tmp_path / "blocked").write_bytes(b"")
+    with pytest.raises(CannotWrite, match=r"show: cannot write: Not a directory$"):
+        with staged_folder(tmp_path / "blocked" / "show"):
+            pass
+
+
+def test_an_error_filling_the_staged_folder_names_the_folder_and_removes_it(tmp_path):
+    """An OSError on a path inside the staging folder is a write failure of the folder; any other
+    (reading an input) passes through unchanged. Either way nothing is left behind."""
+    with pytest.raises(CannotWrite, match=r"show: cannot write: No space left on device$"):
+        with staged_folder(tmp_path / "show") as staging:
+            raise OSError(28, os.strerror(28), str(staging / "config.ocio"))
+    with pytest.raises(FileNotFoundError):
+        with staged_folder(tmp_path / "show"):
+            open(tmp_path / "missing.csv")
+    assert list(tmp_path.iterdir()) == []

@@ -67,6 +67,7 @@ def main(argv=None) -> None:
 
 def _run(argv) -> None:
     from generator.colour_science import skip_plotting
+    from generator.files import CannotWrite
     from generator.spec.schema import SpecError
 
     skip_plotting()
@@ -78,7 +79,7 @@ def _run(argv) -> None:
         click.echo(error.ctx.get_help())
     except click.UsageError as error:
         fail(error.format_message().replace("\n", " "))
-    except SpecError as error:
+    except (SpecError, CannotWrite) as error:
         fail(str(error))
     except click.exceptions.Exit as exit_:
         sys.exit(exit_.exit_code)

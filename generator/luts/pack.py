@@ -4,8 +4,9 @@ Every pair is baked as a Resolve .cube (1D shaper + 3D, source axes, 33³) and a
 CLF (exact decoding and matrix, lattice in display axes, 17³), with
 :data:`~generator.luts.bake.DEFAULT_METHOD`; each file is read back through
 OpenColorIO and measured on :mod:`generator.luts.probes`, and README.md lists
-the figures. The folder is built in a temporary sibling and renamed into place,
-and the same inputs give the same bytes.
+the figures, labelled as what they are: maxima over those random probe sets, not
+bounds over the gamut. The folder is built in a temporary sibling and renamed
+into place, and the same inputs give the same bytes.
 """
 
 from __future__ import annotations
@@ -59,13 +60,22 @@ lattice, in the source's own axes, interpolates across the display's clipping
 planes, and its errors (below) are three orders of magnitude larger.
 
 Errors: read back through OpenColorIO {ocio} (CPU, float32) against the
-reference, on {count} probes per set: in-gamut colours, dark colours (largest
+reference, on {count} random probes per set (`generator.luts.probes`, fixed seed):
+in-gamut colours (uniform in the display's RGB cube), dark colours (largest
 channel 1e-4 to 1e-2 of white), out-of-gamut colours of the source gamut, and
 over-range colours up to 16 times the peak. Ten-bit code values for SDR
-displays, ΔE ITP (ITU-R BT.2124) for Rec.2100-PQ. "in-gamut" is the largest
-error on in-gamut and dark colours; "p99" and "max" are over all four sets.
+displays, ΔE ITP (ITU-R BT.2124) for Rec.2100-PQ. "In-gamut probes max" is the
+largest error on the in-gamut and dark probes; "All probes p99" and "All probes
+max" are over all four sets.
 
-| File | Source | Destination | Method | Size | In-gamut max | p99 | Max | Unit |
+These are the largest errors on the probes, not bounds over the gamut: random
+colours seldom have a display channel at or near 0, and colours on those faces
+and edges of the display's RGB cube err more. On an SDR `.cube` between
+different gamuts that is tens of ten-bit codes more than its in-gamut figure
+below; on a CLF for a pure-power display (Rec.1886, Gamma 2.6), up to a few codes
+where a display channel is exactly 0.
+
+| File | Source | Destination | Method | Size | In-gamut probes max | All probes p99 | All probes max | Unit |
 | --- | --- | --- | --- | --- | --- | --- | --- | --- |
 """
 

@@ -73,6 +73,12 @@ def default_text() -> str:
     return resources.files("generator.spec").joinpath("default.toml").read_text(encoding="utf-8")
 
 
+def embedded_default(key: str):
+    """The embedded default spec's value of the top-level ``key``: what a spec that leaves
+    ``key`` out gets, so that leaving a key out and copying the default spec agree."""
+    return tomllib.loads(default_text())[key]
+
+
 def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) -> Spec:
     """Read and validate the spec at ``path``, or the embedded default when None.
 
@@ -111,7 +117,8 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     all_names = [n for s in (*listed, *customs) for n in (s.name, *s.aliases)]
     _unique(all_names, source, "colour_spaces")
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
-    view_spaces = _bool(raw.get("display_view_spaces", False), source, "display_view_spaces")
+    view_spaces = _bool(raw["display_view_spaces"] if "display_view_spaces" in raw
+                        else embedded_default("display_view_spaces"), source, "display_view_spaces")
     taken = namespace.generated(displays, view_spaces, (*DEFAULT_ROLES, *roles), source)
     namespace.check_free(listed, customs, taken, source)
     every = {n.lower() for n in all_names}

@@ -89,8 +89,8 @@ class Spec:
     displays: tuple[Display, ...]
     roles: tuple[tuple[str, str], ...]
     file_rules: tuple[FileRule, ...]
+    display_view_spaces: bool  # no default here: a spec that leaves it out takes the embedded default spec's
     inactive: tuple[str, ...] = ()
-    display_view_spaces: bool = False
     source: str = "<default>"
 
     def space(self, name: str) -> ColourSpace:

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from generator.files import write_atomic
+from generator.files import write_files
 from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS
 from generator.verify.run import Verification
 
@@ -132,9 +132,9 @@ def html_page(verification: Verification, figures: dict[str, bytes]) -> str:
 
 
 def write_report(verification: Verification, folder: str | Path, figures: dict[str, bytes]) -> list[Path]:
-    """Write summary.json and report.html into ``folder``; returns their paths."""
+    """Write summary.json and report.html into ``folder``, both or neither; returns their paths."""
     folder = Path(folder)
-    written = [folder / "summary.json", folder / "report.html"]
-    write_atomic(written[0], (json.dumps(to_json(verification), indent=1) + "\n").encode())
-    write_atomic(written[1], html_page(verification, figures).encode())
-    return written
+    files = {folder / "summary.json": (json.dumps(to_json(verification), indent=1) + "\n").encode(),
+             folder / "report.html": html_page(verification, figures).encode()}
+    write_files(files)
+    return list(files)

@@ -63,6 +63,18 @@ def test_force_replaces_only_a_previous_build(tmp_path, capsys, foreign):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["show"]
 
 
+@pytest.mark.parametrize("argv", (["build", "-o", "{blocked}/show"], ["init", "{blocked}/show.toml"]))
+def test_an_unwritable_output_is_one_line_and_exit_2(tmp_path, capsys, argv):
+    """An output under a regular file cannot be written, for any user: the path and the OS's
+    reason on one line, exit status 2 (1 is verify's "checks failed"), nothing left behind."""
+    blocked = tmp_path / "blocked"
+    blocked.write_bytes(b"")
+    code, _, err = run(capsys, *(a.format(blocked=blocked) for a in argv))
+    assert code == 2 and err.count("\n") == 1, err
+    assert err == f"error: {blocked / argv[-1].split('/')[-1]}: cannot write: Not a directory\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["blocked"]
+
+
 def test_terminated_build_leaves_nothing(tmp_path):
     """SIGTERM while the folder is being written removes the staging folder."""
     import signal

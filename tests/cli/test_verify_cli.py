@@ -8,6 +8,7 @@ import shutil
 import pytest
 from click.testing import CliRunner
 
+from generator.cli import main
 from generator.cli.plot import command as plot
 from generator.cli.verify import command as verify
 
@@ -72,3 +73,17 @@ def test_plot_refuses_an_unknown_format_and_writes_nothing(config, tmp_path):
     result = CliRunner().invoke(plot, [str(config), "-o", str(tmp_path / "diagram.bmp")])
     assert result.exit_code == 2 and result.stderr.startswith("error: ")
     assert not list(tmp_path.glob("diagram*"))
+
+
+@pytest.mark.parametrize("argv", (["plot", "{config}", "-o", "{blocked}/diagram.png"],
+                                  ["verify", "{config}", "--engines", "ocio", "--quick", "--only", " -> ACES2065-1",
+                                   "--summary", "--report", "{blocked}/report"]))
+def test_an_unwritable_image_or_report_is_one_line_and_exit_2(config, tmp_path, capsys, argv):
+    """The path and the OS's reason, exit status 2 (not verify's 1 for failed checks)."""
+    blocked = tmp_path / "blocked"
+    blocked.write_bytes(b"")
+    with pytest.raises(SystemExit) as exited:
+        main([a.format(config=config, blocked=blocked) for a in argv])
+    err = capsys.readouterr().err
+    assert exited.value.code == 2 and err.count("\n") == 1, err
+    assert err.startswith(f"error: {blocked}/") and err.endswith(": cannot write: Not a directory\n")

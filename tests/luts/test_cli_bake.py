@@ -104,6 +104,16 @@ def test_a_failed_write_leaves_no_file(tmp_path, monkeypatch):
         real_replace(src, dst)
 
     monkeypatch.setattr(writer.os, "replace", failing)
-    with pytest.raises(OSError):
+    with pytest.raises(writer.CannotWrite, match="a.spi3d: cannot write: no space"):
         bake.write(files)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_an_unwritable_output_is_one_line_and_exit_2(tmp_path, run):
+    """A folder where the LUT file should go cannot be replaced, for any user: the path and the
+    OS's reason on one line, exit status 2, the folder and its contents untouched."""
+    out = tmp_path / "out.cube"
+    (out / "keep").mkdir(parents=True)
+    code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out), "--force"])
+    assert code == 2 and err == f"error: {out}: cannot write: Is a directory\n", err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["out.cube"] and (out / "keep").is_dir()

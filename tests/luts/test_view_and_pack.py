@@ -96,8 +96,11 @@ def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
     assert names == ["README.md", "acescct_to_srgb_display.clf", "acescct_to_srgb_display.cube"]
     for name in names:
         assert (first / name).read_bytes() == (second / name).read_bytes()
-    rows = [line for line in (first / "README.md").read_text().splitlines() if line.startswith("| acescct")]
+    readme = (first / "README.md").read_text()
+    rows = [line for line in readme.splitlines() if line.startswith("| acescct")]
     assert len(rows) == 2 and all("scale" in row for row in rows)
+    # the figures are maxima over the random probes, and say so
+    assert "| In-gamut probes max | All probes p99 | All probes max |" in readme and "not bounds" in readme
     assert np.isfinite([float(cell) for row in rows for cell in row.split("|")[6:9]]).all()
 
 

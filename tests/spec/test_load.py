@@ -154,6 +154,17 @@ def test_embedded_default_is_the_documented_file():
     assert load.parse(load.default_text(), "<default>", Path(".")) == load.load()
 
 
+def test_a_key_left_out_takes_the_embedded_default_specs_value(monkeypatch):
+    """display_view_spaces left out is what the default spec (and so ocioforge init) says, not
+    false; the value is read from the embedded default, so the two cannot drift apart."""
+    text = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+    assert load.embedded_default("display_view_spaces") is True
+    assert parse(text).display_view_spaces is True
+    assert parse(text + "display_view_spaces = false\n").display_view_spaces is False
+    monkeypatch.setattr(load, "default_text", lambda: "display_view_spaces = false\n")
+    assert parse(text).display_view_spaces is False
+
+
 def test_a_spec_loaded_for_one_space_is_checked_whole():
     """bake loads a spec keeping only the spaces it uses: a spec build accepts must load (an inactive
     space left out is no error), and one build refuses must not (an unknown space left out is)."""

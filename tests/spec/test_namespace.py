@@ -35,9 +35,15 @@ def test_a_custom_space_may_not_take_a_generated_name(name, aliases, top, field,
 
 
 def test_display_view_names_are_free_without_display_view_spaces():
-    spec = load.parse(SPACES + CUSTOM.format(name="Colorimetric - sRGB - Display", aliases=[]) + SRGB, "show.toml",
-                      Path("."))
+    spec = load.parse(SPACES + "display_view_spaces = false\n" + CUSTOM.format(name="Colorimetric - sRGB - Display",
+                                                                               aliases=[]) + SRGB, "show.toml", Path("."))
     assert spec.space("Colorimetric - sRGB - Display").family == "Custom"
+
+
+def test_display_view_names_are_taken_when_the_spec_leaves_display_view_spaces_out():
+    """Left out, display_view_spaces is the default spec's (true): the build generates the names."""
+    raised = error(CUSTOM.format(name="Colorimetric - sRGB - Display", aliases=[]) + SRGB)
+    assert raised.field == "custom_space[0].name" and "display-view colour space" in raised.message
 
 
 def test_a_display_may_not_take_a_colour_space_or_another_displays_name():
