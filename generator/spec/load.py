@@ -369,9 +369,8 @@ def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
 
 def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]:
     """The file rules; each names a colour space, display or role of the config (``names``)."""
-    if "file_rule" not in raw:
-        return (FileRule("OpenEXR", "scene_linear", "*", "exr"), FileRule("PNG", "texture_paint", "*", "png"), FileRule("JPEG", "texture_paint", "*", "jpg"),
-                FileRule("JPEG long", "texture_paint", "*", "jpeg"), FileRule("Default", "default"))
+    if "file_rule" not in raw:  # the embedded default's, as for every key left out
+        raw = {"file_rule": embedded_default("file_rule")}
     rules = []
     for i, table in enumerate(_tables(raw, "file_rule", source)):
         field = f"file_rule[{i}]"

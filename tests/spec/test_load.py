@@ -165,6 +165,26 @@ def test_a_key_left_out_takes_the_embedded_default_specs_value(monkeypatch):
     assert parse(text).display_view_spaces is False
 
 
+def test_file_rules_left_out_are_the_embedded_defaults_and_cover_both_jpeg_suffixes():
+    """A spec without file rules gets the default spec's (there was a second, different copy),
+    and a built config sends .jpeg as .jpg to the texture space."""
+    import PyOpenColorIO as ocio
+
+    from generator.ocio.emit import emit
+
+    text = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+    assert parse(text).file_rules == load.load().file_rules
+    config = emit(load.load()).config
+
+    def resolved(path):
+        return config.getColorSpace(config.getColorSpaceFromFilepath(path)[0]).getName()
+
+    texture = config.getColorSpace(ocio.ROLE_TEXTURE_PAINT).getName()
+    for path in ("plate.jpg", "plate.jpeg", "plate.JPEG"):
+        assert resolved(path) == texture, path
+    assert resolved("plate.exr") == config.getColorSpace(ocio.ROLE_SCENE_LINEAR).getName()
+
+
 def test_a_spec_loaded_for_one_space_is_checked_whole():
     """bake loads a spec keeping only the spaces it uses: a spec build accepts must load (an inactive
     space left out is no error), and one build refuses must not (an unknown space left out is)."""
