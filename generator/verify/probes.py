@@ -153,6 +153,21 @@ def camera_gamut(spec: Spec) -> Family:
     return Family("camera gamut", np.concatenate(values), tuple(notes))
 
 
+def display_faces(spec: Spec, count: int) -> Family:
+    """Colours on the faces of each display's light cube, ``count`` a display: one channel
+    exactly 0 (where a power law's toe is steepest and float32 rounding shows most) or exactly
+    the peak (where clipping starts), the others random within [0, peak]."""
+    rng = np.random.default_rng(SEED + 2)
+    values, notes = [], []
+    for display in spec.displays:
+        light = rng.random((count, 3)) * display.clip_high
+        row, channel = np.arange(count), rng.integers(0, 3, count)
+        light[row, channel] = np.where(row % 2 == 0, 0.0, display.clip_high)
+        values.append(apply_matrix(np.linalg.inv(reference.scene_to_display_matrix(spec, display)), light))
+        notes += [f"{display.name} {'RGB'[c]} = {'0' if r % 2 == 0 else 'peak'}" for r, c in zip(row, channel)]
+    return Family("display faces", np.concatenate(values) if values else np.zeros((0, 3)), tuple(notes))
+
+
 def negatives(count: int) -> Family:
     rng = np.random.default_rng(SEED + 1)
     all_negative = rng.uniform(-0.5, 0.0, (count // 4, 3))
@@ -185,4 +200,5 @@ def scene_families(spec: Spec, sizes: Sizes) -> tuple[Family, ...]:
     """The scene-referred families, in the scene reference (non-finite last)."""
     checker = colorchecker(spec, "D65")
     return (checker, colorchecker(spec, "A"), monochromatic(spec, sizes.wavelength_step), camera_gamut(spec),
-            negatives(max(16, sizes.random // 16)), over_range(checker), non_finite())
+            display_faces(spec, max(8, sizes.random // 16)), negatives(max(16, sizes.random // 16)),
+            over_range(checker), non_finite())

@@ -161,7 +161,8 @@ def test_a_key_left_out_takes_the_embedded_default_specs_value(monkeypatch):
     assert load.embedded_default("display_view_spaces") is True
     assert parse(text).display_view_spaces is True
     assert parse(text + "display_view_spaces = false\n").display_view_spaces is False
-    monkeypatch.setattr(load, "default_text", lambda: "display_view_spaces = false\n")
+    flipped = load.default_text().replace("display_view_spaces = true", "display_view_spaces = false")
+    monkeypatch.setattr(load, "default_text", lambda: flipped)
     assert parse(text).display_view_spaces is False
 
 

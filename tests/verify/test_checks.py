@@ -46,13 +46,26 @@ def test_every_baked_lut_file_is_checked(build_config, built):
 def test_probe_families_are_float32_and_named(spec):
     families = probes.scene_families(spec, probes.SIZES["quick"])
     names = [f.name for f in families]
-    assert names == ["ColorChecker D65", "ColorChecker A", "monochromatic", "camera gamut", "negative", "over-range",
-                     probes.NON_FINITE]
+    assert names == ["ColorChecker D65", "ColorChecker A", "monochromatic", "camera gamut", "display faces", "negative",
+                     "over-range", probes.NON_FINITE]
     for family in families:
         assert np.array_equal(family.values, family.values.astype(np.float32).astype(np.float64), equal_nan=True)
-    assert np.nanmax(families[5].values) == 65504.0
+    assert np.nanmax(families[6].values) == 65504.0
     special = families[-1].values
     assert np.isnan(special).any() and np.isposinf(special).any() and np.isneginf(special).any()
+
+
+def test_display_faces_lie_on_every_displays_faces(spec):
+    """Each display's share of the family has one channel at 0 or at the peak (to the float32
+    rounding of the reference values) and the others inside."""
+    count = 8
+    faces = probes.display_faces(spec, count)
+    assert len(faces.values) == count * len(spec.displays)
+    for k, display in enumerate(spec.displays):
+        light = reference.apply_matrix(reference.scene_to_display_matrix(spec, display),
+                                       faces.values[k * count:(k + 1) * count]) / display.clip_high
+        on_face = np.minimum(np.abs(light).min(axis=-1), np.abs(light - 1.0).min(axis=-1))
+        assert on_face.max() <= 1e-6 and light.min() >= -1e-6 and light.max() <= 1.0 + 1e-6, display.name
 
 
 def test_the_tungsten_lit_chart_is_warmer(spec):
