@@ -131,15 +131,29 @@ def run_engine(engine, config: Path, spec: Spec, checks: list[Check], workdir: P
     return EngineRun(engine.name, engine.version(), time.perf_counter() - started), outcomes
 
 
-def _explained(config: Path, outcomes: list[Outcome]) -> list[Outcome]:
+def _in_process_for_hosts(config: Path, spec: Spec, outcomes: list[Outcome], workdir: Path) -> list[Outcome]:
+    """When hosts ran without the in-process engines, those engines' outcomes on the checks a
+    host failed, so that the failures OCIO's default flags explain are named as such (they
+    are not reported themselves); none otherwise."""
+    names = {o.engine for o in outcomes}
+    failed = {id(o.check): o.check for o in outcomes if o.verdict == FAIL}
+    if any(e.name in names for e in IN_PROCESS) or not failed:
+        return []
+    return [o for engine in IN_PROCESS for o in run_engine(engine, config, spec, list(failed.values()), workdir)[1]]
+
+
+def _explained(config: Path, outcomes: list[Outcome], extra: list[Outcome] = ()) -> list[Outcome]:
     """Default-flags failures on checks the lossless engine passes, explained (APPROX) when
-    one default flag accounts for them; then hosts' failures that match those."""
+    one default flag accounts for them; then hosts' failures that match those (``extra``:
+    in-process outcomes run only for these explanations, not returned)."""
     default, lossless = (e.name for e in IN_PROCESS)
-    exact = {id(o.check) for o in outcomes if o.engine == lossless and o.verdict == PASS}
-    outcomes = [_explain(config, o) if o.engine == default and o.verdict == FAIL and id(o.check) in exact else o
-                for o in outcomes]
-    explained = {id(o.check): o for o in outcomes if o.engine == default and o.verdict == APPROX}
-    return [_inherit(config, o, explained) if o.engine not in (default, lossless) else o for o in outcomes]
+    everything = [*outcomes, *extra]
+    exact = {id(o.check) for o in everything if o.engine == lossless and o.verdict == PASS}
+    everything = [_explain(config, o) if o.engine == default and o.verdict == FAIL and id(o.check) in exact else o
+                  for o in everything]
+    explained = {id(o.check): o for o in everything if o.engine == default and o.verdict == APPROX}
+    return [_inherit(config, o, explained) if o.engine not in (default, lossless) else o
+            for o in everything[:len(outcomes)]]
 
 
 def verify(config_path: str | Path, engines=("ocio",), density: str = "full", kinds=checks_module.KINDS,
@@ -168,6 +182,7 @@ def verify(config_path: str | Path, engines=("ocio",), density: str = "full", ki
                 run, found = run_engine(engine, config, spec, checks, Path(tmp))
                 runs.append(run)
                 outcomes += found
-    outcomes = _explained(config, outcomes)
+        extra = _in_process_for_hosts(config, spec, outcomes, Path(tmp))
+    outcomes = _explained(config, outcomes, extra)
     return Verification(config, spec, tuple(checks), tuple(outcomes), tuple(runs),
                         time.perf_counter() - started, timings)

@@ -110,3 +110,18 @@ def test_oiiotool_reads_names_holding_its_wildcards(tmp_path):
         "[[custom_space]]\nname = 'Cam #1/A'\ngamut = \"P3-D65\"\ntransfer = { family = \"gamma\", exponent = 2.2 }\n"
         '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n', density="quick", only="Cam #1/A")
     assert result.passed, [(o.check.title, o.engine, o.note) for o in result.failures]
+
+
+def test_a_host_verified_alone_has_its_default_flag_departures_explained(build_config):
+    """oiiotool runs OCIO with its default flags; verified without the in-process engines, its
+    departures the flags explain are named so (APPROX) from in-process runs made for that alone,
+    not failures (they failed when the ocio engine was not asked for)."""
+    from generator.verify.judge import APPROX
+    from tests.conftest import require_program
+
+    require_program("oiiotool")
+    result = verify(build_config((2, 1)), ("oiiotool",), density="quick")
+    assert {run.name for run in result.engines} == {"oiiotool"}
+    assert {o.engine for o in result.outcomes} <= {"oiiotool (EXR float)", "oiiotool (TIFF uint16)"}
+    assert any(o.verdict == APPROX and "in-process default flags" in o.note for o in result.outcomes)
+    assert result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
