@@ -20,7 +20,8 @@ TOP_KEYS = ("name", "description", "ocio_version", "scene_reference", "chromatic
             "inactive", "display_view_spaces", "custom_space", "display", "roles", "file_rule")
 CUSTOM_SPACE_KEYS = ("name", "aliases", "family", "encoding", "description", "gamut", "primaries",
                      "primaries_spectra", "white", "transfer")
-DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "white", "eotf", "peak_luminance", "description")
+DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "primaries_spectra", "white", "eotf", "peak_luminance",
+                "description")
 FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension")
 ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "edr-video", "hdr-video", "data")
 
@@ -328,7 +329,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
         if view in views[:i]:
             raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
     known = {d.name.lower(): d for d in library.DISPLAYS}
-    custom = any(k in table for k in ("gamut", "primaries", "eotf"))
+    custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
     if name.lower() in known and not custom:
         d = known[name.lower()]
         views = views or default_views(d.encoding)

@@ -127,12 +127,15 @@ def test_white_and_primaries_from_spectra(tmp_path):
     rows = [(w, float(w == 610), float(w == 540), float(w == 465)) for w in wl]
     (tmp_path / "leds.csv").write_text("".join(f"{w},{r},{g},{b}\n" for w, r, g, b in rows))
     spec = parse('colour_spaces = ["ACES2065-1", "Raw", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)"]\n'
-                 '[[custom_space]]\nname = "LED wall"\nprimaries_spectra = "leds.csv"\nwhite = "d65.csv"\n', tmp_path)
-    gamut = spec.space("LED wall").gamut
-    assert np.allclose(gamut.whitepoint, (0.3127, 0.3290), atol=2e-4)
+                 '[[custom_space]]\nname = "LED wall"\nprimaries_spectra = "leds.csv"\nwhite = "d65.csv"\n'
+                 '[[display]]\nname = "LED Wall Display"\nprimaries_spectra = "leds.csv"\nwhite = "d65.csv"\n'
+                 'eotf = "Gamma 2.4"\n', tmp_path)
     cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"]
     red = colour.XYZ_to_xy(cmfs[610])
-    assert np.allclose(gamut.primaries[0], red, atol=1e-6)
+    # A custom space's primaries and a custom display's (the wall as the camera sees it and as it shows).
+    for gamut in (spec.space("LED wall").gamut, spec.displays[0].gamut):
+        assert np.allclose(gamut.whitepoint, (0.3127, 0.3290), atol=2e-4)
+        assert np.allclose(gamut.primaries[0], red, atol=1e-6)
 
 
 def test_missing_file_is_a_spec_error(tmp_path):
