@@ -205,7 +205,8 @@ def write(files: dict[Path, bytes], force: bool = False) -> None:
     path's folder exists and, without ``force``, that no file is there."""
     for path in files:
         if not path.parent.is_dir():
-            raise SpecError(WHERE, "-o", f"folder {str(path.parent)!r} does not exist")
+            what = "is a file, not a folder" if path.parent.exists() else "does not exist"
+            raise SpecError(WHERE, "-o", f"folder {str(path.parent)!r} {what}")
         if path.exists() and not force:
             raise SpecError(WHERE, "-o", f"{str(path)!r} exists; pass --force to replace it")
     write_files(files)

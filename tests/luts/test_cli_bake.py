@@ -68,6 +68,16 @@ def test_bad_input_exits_2_with_one_line(tmp_path, run, case):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("blocker, reason", [(None, "does not exist"), ("file", "is a file, not a folder")])
+def test_an_output_folder_that_is_not_one_is_named(tmp_path, run, blocker, reason):
+    folder = tmp_path / "luts"
+    if blocker:
+        folder.write_text("keep")
+    code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", "-o", str(folder / "out.cube")])
+    assert code == 2 and err.count("\n") == 1 and reason in err, err
+    assert [p.name for p in tmp_path.iterdir()] == (["luts"] if blocker else [])
+
+
 def test_existing_output_needs_force(tmp_path, run):
     out = tmp_path / "out.clf"
     out.write_text("keep")
