@@ -122,11 +122,27 @@ def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: 
         if not FORMATS[fmt].shaper:
             raise SpecError(WHERE, "--shaper", f"{fmt} holds no shaper; allowed: auto, none")
         chosen = find_source(spec, shaper, "--shaper", "shaper")
+    _refuse_linear_without_shaper(src, fmt, chosen)
     top = FORMATS[fmt].max_size
     smallest = _smallest_size(spec, dst, src, method, fmt, chosen)
     if not smallest <= size <= top:
         raise SpecError(WHERE, "--size", f"{size} is outside what {fmt} allows here: {smallest} to {top}")
     return Request(spec, src, dst, method, fmt, size, chosen)
+
+
+def _refuse_linear_without_shaper(source: ColourSpace, fmt: str, shaper) -> None:
+    """A lattice with no shaper over a linear source is uniform in linear light, up to 16 times
+    white: two of a 33³ lattice's nodes lie below display white, and ACEScg black comes out at
+    sRGB code 0.25. No request for such a file is taken (a log source's codes are its shaper)."""
+    from generator.colorimetry.transfer import Linear
+
+    if not isinstance(source.curve, Linear) or (FORMATS[fmt].shaper and shaper != "none"):
+        return
+    option, what = ("--format", f"{fmt} holds no shaper") if not FORMATS[fmt].shaper else ("--shaper", "no shaper")
+    raise SpecError(WHERE, option, f"{what}, and {source.name!r} is linear: a lattice uniform in linear light up to "
+                    "16 times white cannot follow the display's encoding (black off by hundreds of ten-bit codes); "
+                    "allowed: a format with a shaper (resolve_cube, spi3d, clf) with --shaper auto or a log space, "
+                    "or a log source of the same primaries")
 
 
 def _smallest_size(spec: Spec, display: Display, source: ColourSpace, method: str, fmt: str, shaper) -> int:

@@ -364,7 +364,10 @@ def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
     roles = {**DEFAULT_ROLES, **table}
     for role, target in roles.items():
         if not isinstance(target, str) or target.lower() not in names:
-            raise SpecError(source, f"roles.{role}", f"{target!r} is not among the colour spaces")
+            if role in table:
+                raise SpecError(source, f"roles.{role}", f"{target!r} is not among the colour spaces")
+            raise SpecError(source, f"roles.{role}", f"the default target {target!r} is not among the colour spaces; "
+                            f"allowed: list it in colour_spaces, or set {role} under [roles]")
     return tuple(sorted(roles.items()))
 
 

@@ -42,8 +42,10 @@ def png(figure, fmt: str = "png") -> bytes:
 
 
 def _xy(xyz: np.ndarray) -> np.ndarray:
+    """Chromaticities of the colours (n, 3) that have one: black (X + Y + Z = 0, where
+    desaturate sends a colour of negative luminance) is left out, not drawn at (0, 0)."""
     total = np.sum(xyz, axis=-1, keepdims=True)
-    return xyz[..., :2] / np.where(total == 0.0, 1.0, total)
+    return (xyz[..., :2] / np.where(total == 0.0, 1.0, total))[total[..., 0] != 0.0]
 
 
 def _triangle(axes, primaries, label: str, colour=None, style="-") -> None:

@@ -45,6 +45,8 @@ BAD = {
     "size too small": ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "2"],
     "shaper in iridas": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube", "--shaper", "ACEScct"],
     "data shaper": ["--from", "ACEScg", "--to", "sRGB - Display", "--shaper", "Raw"],
+    "iridas from linear": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube"],
+    "no shaper from linear": ["--from", "Linear Rec.2020", "--to", "Rec.2100-PQ - Display", "--shaper", "none"],
 }
 
 

@@ -55,6 +55,8 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("chromatic_adaptation = 'Sharp'", "chromatic_adaptation", "allowed: Bradford"),
     ("scene_reference = 'Nope'", "scene_reference", "not among"),
     ("[roles]\nscene_linear = 'Nope'", "roles.scene_linear", "not among"),
+    ("colour_spaces = ['ACES2065-1', 'ACEScg', 'sRGB Encoded Rec.709 (sRGB)', 'Raw']", "roles.compositing_log",
+     "the default target 'ACEScct' is not among the colour spaces; allowed: list it in colour_spaces, or set"),
     ("[[display]]\nname = 'sRGB'", "display[0].name", "did you mean 'sRGB - Display'"),
     ("[[display]]\nname = 'sRGB - Display'\nviews = ['Filmic']", "display[0].views[0]", "allowed: Colorimetric"),
     ("[[custom_space]]\nname = 'x'\nprimaries = [[0.7, 0.3], [0.2, 0.7]]\nwhite = 'D65'", "custom_space[0].primaries",

@@ -1,0 +1,15 @@
+"""The report's figures: chromaticities drawn only for colours that have one."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from generator.verify.figures import _xy
+
+
+def test_black_has_no_chromaticity_and_is_not_drawn():
+    """Desaturate sends a colour of negative luminance to black; it was drawn at xy (0, 0)."""
+    xyz = np.array([[0.9505, 1.0, 1.089], [0.0, 0.0, 0.0], [0.2, 0.1, 0.0]])
+    xy = _xy(xyz)
+    assert xy.shape == (2, 2)
+    np.testing.assert_allclose(xy, [[0.3127, 0.3290], [2.0 / 3.0, 1.0 / 3.0]], atol=1e-4)
