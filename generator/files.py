@@ -68,7 +68,7 @@ def staged_folder(folder: Path) -> Iterator[Path]:
 
 def _replace_folder(staging: Path, folder: Path) -> None:
     """Rename the complete ``staging`` to ``folder``, moving a previous ``folder`` aside first."""
-    os.chmod(staging, 0o755)
+    os.chmod(staging, _plain_mode(0o777))
     if folder.exists():
         old = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent))
         folder.rename(old / "x")
@@ -78,11 +78,12 @@ def _replace_folder(staging: Path, folder: Path) -> None:
         staging.rename(folder)
 
 
-def _plain_mode() -> int:
-    """The permissions a plain write gives a new file (0666 less the umask)."""
+def _plain_mode(full: int = 0o666) -> int:
+    """The permissions a plain creation gives: ``full`` (0666 for a file, 0777 for a folder)
+    less the umask."""
     umask = os.umask(0)
     os.umask(umask)
-    return 0o666 & ~umask
+    return full & ~umask
 
 
 def write_files(files: dict[Path, bytes]) -> None:

@@ -33,12 +33,14 @@ def _node_name(space) -> str:
 
 def published_matrix(source, target):
     """``source`` to ``target`` linear RGB as a config of the default spec converts: each to
-    ACES2065-1 with the adaptation behind its published matrices, else Bradford."""
+    ACES2065-1 with the adaptation behind its published matrices, else the default one."""
     from generator.colorimetry.gamuts import gamuts
     from generator.colorimetry.matrices import rgb_to_rgb
+    from generator.colorimetry.reference import adaptation_between
+    from generator.spec.load import DEFAULT_ADAPTATION
 
     aces = gamuts()["AP0"]
-    to_aces = [rgb_to_rgb(g, aces, g.adaptation or "Bradford") for g in (source, target)]
+    to_aces = [rgb_to_rgb(g, aces, adaptation_between(g, aces, DEFAULT_ADAPTATION)) for g in (source, target)]
     return np.linalg.solve(to_aces[1], to_aces[0])
 
 

@@ -18,11 +18,16 @@ from generator.colorimetry.matrices import Gamut, adaptation_matrix, apply_matri
 from generator.spec.schema import ColourSpace, Display, Spec
 
 
-def adaptation_for(spec: Spec, gamut: Gamut) -> str:
-    """The chromatic adaptation between ``gamut`` and the scene reference: the one behind the
+def adaptation_between(gamut: Gamut, reference_gamut: Gamut, chosen: str) -> str:
+    """The chromatic adaptation between ``gamut`` and a reference gamut: the one behind the
     published matrices of either (:data:`generator.colorimetry.gamuts.PUBLISHED_ADAPTATION`),
-    else the spec's."""
-    return gamut.adaptation or spec.reference.gamut.adaptation or spec.chromatic_adaptation
+    else ``chosen`` (the spec's)."""
+    return gamut.adaptation or reference_gamut.adaptation or chosen
+
+
+def adaptation_for(spec: Spec, gamut: Gamut) -> str:
+    """:func:`adaptation_between` ``gamut`` and the spec's scene reference."""
+    return adaptation_between(gamut, spec.reference.gamut, spec.chromatic_adaptation)
 
 
 def gamut_matrix(spec: Spec, gamut: Gamut) -> np.ndarray:

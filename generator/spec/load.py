@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import tomllib
 from importlib import resources
+from functools import lru_cache
 from pathlib import Path
 
 from generator.colorimetry import library
@@ -60,6 +61,9 @@ DEFAULT_ROLES = {
 
 OCIO_MIN_VERSION = (2, 1)
 
+#: The chromatic adaptation of a spec that names none.
+DEFAULT_ADAPTATION = "Bradford"
+
 
 def newest_ocio_version() -> tuple[int, int]:
     """The newest config version the installed PyOpenColorIO writes."""
@@ -77,7 +81,13 @@ def default_text() -> str:
 def embedded_default(key: str):
     """The embedded default spec's value of the top-level ``key``: what a spec that leaves
     ``key`` out gets, so that leaving a key out and copying the default spec agree."""
-    return tomllib.loads(default_text())[key]
+    return _parsed(default_text())[key]
+
+
+@lru_cache(maxsize=2)
+def _parsed(text: str) -> dict:
+    """A spec's TOML, parsed once per text (read-only by convention)."""
+    return tomllib.loads(text)
 
 
 def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) -> Spec:
@@ -105,7 +115,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         raise SpecError(source, "-", f"not valid TOML: {error}") from None
     _check_keys(raw, TOP_KEYS, source, "")
     version = parse_version(raw.get("ocio_version", "2.1"), source)
-    cat = raw.get("chromatic_adaptation", "Bradford")
+    cat = raw.get("chromatic_adaptation", DEFAULT_ADAPTATION)
     if cat not in CATS:
         raise SpecError(source, "chromatic_adaptation", f"unknown {cat!r}; allowed: {', '.join(CATS)}")
     reference = _string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
