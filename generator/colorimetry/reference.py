@@ -81,7 +81,8 @@ def display_matrix(spec: Spec, display: Display) -> np.ndarray:
 
 
 def display_encode(display: Display, rgb) -> np.ndarray:
-    """Display-linear RGB (1.0 = 100 cd/m², already inside [0, peak/100]) to code values."""
+    """Display-linear RGB (1.0 = 100 cd/m², already inside [0, peak/100]) to code values
+    (the EOTF's code 1 is :attr:`~generator.spec.schema.Display.code_one`)."""
     rgb = np.asarray(rgb, dtype=np.float64)
     if display.eotf_name == "HLG":
         from colour.models import eotf_inverse_BT2100_HLG
@@ -89,7 +90,7 @@ def display_encode(display: Display, rgb) -> np.ndarray:
         # A display signal ends at code 1: saturated colours near the peak would need more.
         code = eotf_inverse_BT2100_HLG(rgb * 100.0, L_B=0.0, L_W=display.peak)
         return np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
-    return display.eotf.encode(rgb)
+    return display.eotf.encode(rgb / display.code_one)
 
 
 def display_decode(display: Display, code) -> np.ndarray:
@@ -99,7 +100,7 @@ def display_decode(display: Display, code) -> np.ndarray:
         from colour.models import eotf_BT2100_HLG
 
         return np.asarray(eotf_BT2100_HLG(code, L_B=0.0, L_W=display.peak), dtype=np.float64) / 100.0
-    return display.eotf.decode(code)
+    return display.eotf.decode(code) * display.code_one
 
 
 def colorimetric_view(spec: Spec, display: Display, ref) -> np.ndarray:

@@ -90,10 +90,13 @@ def _display_reference_space() -> ocio.ColorSpace:
 
 
 def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
-    """CIE XYZ-D65 -> display RGB -> clip to [0, peak] -> display code values."""
+    """CIE XYZ-D65 -> display RGB -> clip to [0, peak] (divided by the light of code 1 for an
+    absolute display) -> display code values."""
     to_rgb = reference.display_matrix(spec, display)
-    steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high,
-                                                           minOutValue=0.0, maxOutValue=display.clip_high)]
+    # An absolute display's range maps onto its codes' [0, 1]: the division by the light of
+    # code 1 and the clip are one operator.
+    steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high, minOutValue=0.0,
+                                                           maxOutValue=display.clip_high / display.code_one)]
     if display.eotf_name == "HLG":
         # The signal ends at code 1 (OCIO 2.1's builtin clamps there, later versions do not).
         return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),

@@ -22,7 +22,10 @@ TOP_KEYS = ("name", "description", "ocio_version", "scene_reference", "chromatic
 CUSTOM_SPACE_KEYS = ("name", "aliases", "family", "encoding", "description", "gamut", "primaries",
                      "primaries_spectra", "white", "transfer")
 DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "primaries_spectra", "white", "eotf", "peak_luminance",
-                "description")
+                "absolute_luminance", "description")
+
+#: Peak luminance (cd/m²) an SDR display driven in absolute luminance may have.
+ABSOLUTE_PEAK_RANGE = (1.0, 10000.0)
 FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension")
 ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "edr-video", "hdr-video", "data")
 
@@ -341,6 +344,10 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     known = {d.name.lower(): d for d in library.DISPLAYS}
     custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
     if name.lower() in known and not custom:
+        fixed = next((k for k in ("peak_luminance", "absolute_luminance") if k in table), None)
+        if fixed:
+            raise SpecError(source, f"{field}.{fixed}", f"{known[name.lower()].name!r} is a library display with a fixed "
+                            "luminance; allowed: a display of another name with gamut (or primaries) and eotf")
         d = known[name.lower()]
         views = views or default_views(d.encoding)
         return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
@@ -349,16 +356,23 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                         "a custom display needs 'gamut' or 'primaries' and 'eotf'")
     eotf_name, eotf = fields.transfer_function(table.get("eotf", "sRGB"), base, source, f"{field}.eotf")
     hdr = eotf_name in ("ST 2084", "HLG")
+    absolute = _bool(table.get("absolute_luminance", False), source, f"{field}.absolute_luminance")
+    if absolute and hdr:
+        raise SpecError(source, f"{field}.absolute_luminance", f"an {eotf_name} signal carries its own luminance; "
+                        "allowed: absolute_luminance with an SDR eotf")
     peak = fields.number(table.get("peak_luminance", 1000.0 if hdr else 100.0), source, f"{field}.peak_luminance")
     if eotf_name == "HLG" and peak != HLG_DISPLAY_PEAK:
         raise SpecError(source, f"{field}.peak_luminance", f"HLG displays are built for {HLG_DISPLAY_PEAK:g} cd/m²")
-    if not (hdr and 100.0 <= peak <= 10000.0) and not (not hdr and peak == 100.0):
-        raise SpecError(source, f"{field}.peak_luminance",
-                        "allowed: 100 to 10000 cd/m² for ST 2084 displays, 100 for SDR (1.0 = 100 cd/m²)")
+    low, high = (100.0, 10000.0) if hdr else ABSOLUTE_PEAK_RANGE if absolute else (100.0, 100.0)
+    if not low <= peak <= high:
+        raise SpecError(source, f"{field}.peak_luminance", "allowed: 100 to 10000 cd/m² for ST 2084 displays; 100 for "
+                        "SDR (code 1 shows display-referred 1.0, 100 cd/m²), or with absolute_luminance = true "
+                        f"{ABSOLUTE_PEAK_RANGE[0]:g} to {ABSOLUTE_PEAK_RANGE[1]:g} (code 1 emits the peak)")
     views = views or default_views("hdr-video" if hdr else "sdr-video")
     return Display(name, _gamut(table, source, field, base, name), eotf, eotf_name, views,
                    _strings(table.get("aliases", []), source, f"{field}.aliases"), peak,
-                   "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"))
+                   "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"),
+                   absolute)
 
 
 def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:

@@ -57,6 +57,9 @@ class Display:
     peak: float = 100.0
     encoding: str = "sdr-video"
     description: str = ""
+    #: An SDR display driven in absolute luminance: its code 1 emits ``peak`` (an LED wall at
+    #: 1500 cd/m² with a 2.4 power), rather than the 100 cd/m² of display-referred 1.0.
+    absolute: bool = False
 
     @property
     def is_hdr(self) -> bool:
@@ -66,6 +69,13 @@ class Display:
     def clip_high(self) -> float:
         """Largest display-linear value shown (1.0 = 100 cd/m²)."""
         return self.peak / 100.0
+
+    @property
+    def code_one(self) -> float:
+        """Display-linear light (1.0 = 100 cd/m²) the EOTF's code 1 stands for: the peak for
+        an :attr:`absolute` display, else 1 (PQ and HLG carry their own luminance; an
+        extended-range display's codes pass 1)."""
+        return self.clip_high if self.absolute else 1.0
 
 
 @dataclass(frozen=True)

@@ -86,3 +86,23 @@ def test_every_gamut_mapped_view_a_spec_can_ask_for(tmp_path):
     build(for_folder(load.parse(text, "all-views.toml", tmp_path), folder), folder)
     test_every_view_meets_its_targets((ocio.Config.CreateFromFile(str(folder / "config.ocio")),
                                        resolved.read_beside(folder / "config.ocio")))
+
+
+def test_an_absolute_led_wall_meets_every_target(tmp_path):
+    """An SDR display driven in absolute luminance (code 1 = its 1500 cd/m² peak, a 2.4 power)
+    offers every default view within the targets; its Colorimetric view puts scene 1.0
+    (display-referred 100 cd/m²) at code (1 / 15) ** (1 / 2.4) and 15 at code 1."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    text = load.default_text().split("[[display]]")[0] + (
+        '[[display]]\nname = "LED Wall"\nprimaries = [[0.70, 0.29], [0.17, 0.74], [0.135, 0.05]]\nwhite = "D65"\n'
+        'eotf = "gamma 2.4"\npeak_luminance = 1500\nabsolute_luminance = true\n')
+    folder = tmp_path / "wall"
+    build(for_folder(load.parse(text, "wall.toml", tmp_path), folder), folder)
+    cfg, spec = ocio.Config.CreateFromFile(str(folder / "config.ocio")), resolved.read_beside(folder / "config.ocio")
+    test_every_view_meets_its_targets((cfg, spec))
+    grey = spec.space("ACEScg")  # its white is the display's after adaptation: a grey stays grey
+    apply = cfg.getProcessor(grey.name, "LED Wall", "Colorimetric", ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor()
+    codes = np.array([apply.applyRGB([v, v, v]) for v in (1.0, 15.0)])
+    assert np.allclose(codes, [[(1 / 15) ** (1 / 2.4)] * 3, [1.0] * 3], rtol=0, atol=tolerances.ANALYTIC_RELATIVE)

@@ -5,6 +5,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from generator import tolerances
 from generator.colorimetry import reference, transfer
 from generator.spec import load, resolved
 from generator.spec.schema import SpecError
@@ -76,6 +77,16 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[display]]\nname = 'sRGB - Display'\nviews = ['Raw', 'Colorimetric', 'Raw']", "display[0].views[2]",
      "listed twice"),
     ("[[file_rule]]\nname = 'Default'", "file_rule[0].colour_space", "required"),
+    ("[[display]]\nname = 'Wall'\ngamut = 'Rec.709'\neotf = 'gamma 2.4'\npeak_luminance = 1500",
+     "display[0].peak_luminance", "with absolute_luminance = true 1 to 10000 (code 1 emits the peak)"),
+    ("[[display]]\nname = 'Wall'\ngamut = 'Rec.709'\neotf = 'gamma 2.4'\npeak_luminance = 20000\n"
+     "absolute_luminance = true", "display[0].peak_luminance", "1 to 10000"),
+    ("[[display]]\nname = 'Wall'\ngamut = 'Rec.2020'\neotf = 'ST 2084'\nabsolute_luminance = true",
+     "display[0].absolute_luminance", "allowed: absolute_luminance with an SDR eotf"),
+    ("[[display]]\nname = 'Wall'\ngamut = 'Rec.709'\neotf = 'gamma 2.4'\nabsolute_luminance = 'yes'",
+     "display[0].absolute_luminance", "true or false"),
+    ("[[display]]\nname = 'sRGB - Display'\npeak_luminance = 200", "display[0].peak_luminance",
+     "library display with a fixed luminance"),
     ("name = = 1", "-", "not valid TOML"),
 ])
 def test_bad_specs_name_the_field_and_what_is_allowed(text, field, words):
@@ -144,6 +155,22 @@ def test_missing_file_is_a_spec_error(tmp_path):
     with pytest.raises(SpecError, match="does not exist"):
         parse("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = {family = 'tabulated', file = 'no.csv'}",
               tmp_path)
+
+
+def test_an_absolute_sdr_display_puts_code_1_at_its_peak():
+    """An LED wall at 1500 cd/m² with a 2.4 power: display-referred 1.0 (100 cd/m²) is code
+    (100 / 1500) ** (1 / 2.4), its peak code 1; the resolved spec keeps it."""
+    text = ("[[display]]\nname = 'Wall'\ngamut = 'Rec.709'\neotf = 'gamma 2.4'\npeak_luminance = 1500\n"
+            "absolute_luminance = true")
+    wall = parse(text).displays[0]
+    assert (wall.absolute, wall.is_hdr, wall.clip_high, wall.code_one) == (True, False, 15.0, 15.0)
+    light = np.array([[1.0, 1.0, 1.0], [15.0, 15.0, 15.0], [0.0, 0.0, 0.0]])
+    codes = reference.display_encode(wall, light)
+    assert np.allclose(codes[:, 0], [(100.0 / 1500.0) ** (1 / 2.4), 1.0, 0.0], rtol=0, atol=tolerances.FORMULA_ABSOLUTE)
+    assert np.allclose(reference.display_decode(wall, codes), light, rtol=0, atol=tolerances.FORMULA_ABSOLUTE)
+    relative = parse(text.replace("peak_luminance = 1500\nabsolute_luminance = true", "")).displays[0]
+    assert (relative.absolute, relative.code_one) == (False, 1.0)
+    assert resolved.loads(resolved.dumps(parse(text))).displays[0] == wall
 
 
 def test_resolved_spec_round_trips_and_evaluates_identically(default_spec):
