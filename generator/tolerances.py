@@ -37,6 +37,10 @@ BAKED_CURVE_RELATIVE = 1e-4
 #: smallest is 0.024.
 GAMUT_MIN_XY_AREA = 1e-3
 
+#: Chromaticity difference within which two gamuts are the same (published primaries
+#: are given to three or four decimals): an HLG display's must be BT.2020's.
+GAMUT_SAME_XY_ABSOLUTE = 1e-4
+
 
 #: The CIE 1931 RGB -> XYZ matrix derived from today's 1 nm CMF tables against the
 #: 5-decimal matrix of 1931: the 1931 figures came from the Wright-Guild data, the

@@ -106,6 +106,14 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
     return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
 
 
+#: Methods that leave the display's gamut alone: their view read backwards (a display-referred
+#: file into the scene, through its "<view> - <display>" space) is the Colorimetric view's
+#: inverse, exact for every code, where OCIO's inverse of their many-to-one lattice would pick
+#: one of the colours that map to a code (display white read through Scale came back as scene
+#: 2.65, the over-range grey the lattice's inversion landed on).
+INVERTED_AS_COLORIMETRIC = ("scale", "desaturate")
+
+
 def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict, view_luts: dict) -> ocio.ViewTransform:
     """Scene reference -> display RGB (1 = peak) -> gamut mapping -> CIE XYZ-D65.
 
@@ -136,6 +144,9 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     vt = ocio.ViewTransform(SCENE, name=f"{view} ({display.name})", family="Gamut mapped",
                             description=f"{view} gamut mapping into {display.name}")
     vt.setTransform(ocio.GroupTransform(steps), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    if method in INVERTED_AS_COLORIMETRIC:
+        vt.setTransform(matrix_transform(np.linalg.inv(reference.scene_to_display_reference(spec))),
+                        ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
     return vt
 
 

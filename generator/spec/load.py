@@ -11,6 +11,9 @@ from importlib import resources
 from functools import lru_cache
 from pathlib import Path
 
+import numpy as np
+
+from generator import tolerances
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.spec import fields, namespace
@@ -27,6 +30,9 @@ DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "primaries_spe
 #: Peak luminance (cd/m²) an SDR display driven in absolute luminance may have.
 ABSOLUTE_PEAK_RANGE = (1.0, 10000.0)
 FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension")
+
+#: Keys a library display takes: its gamut, EOTF, luminance, aliases and description are the library's.
+LIBRARY_DISPLAY_KEYS = ("name", "views")
 ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "edr-video", "hdr-video", "data")
 
 #: Views a display may offer: each scene-referred view names its gamut-mapping method
@@ -119,7 +125,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     _check_keys(raw, TOP_KEYS, source, "")
     version = parse_version(raw.get("ocio_version", "2.1"), source)
     cat = raw.get("chromatic_adaptation", DEFAULT_ADAPTATION)
-    if cat not in CATS:
+    if not isinstance(cat, str) or cat not in CATS:
         raise SpecError(source, "chromatic_adaptation", f"unknown {cat!r}; allowed: {', '.join(CATS)}")
     reference = _string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
     roles = raw.get("roles", {})
@@ -131,6 +137,8 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     all_names = [n for s in (*listed, *customs) for n in (s.name, *s.aliases)]
     _unique(all_names, source, "colour_spaces")
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
+    if not displays:
+        raise SpecError(source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's")
     view_spaces = _bool(raw["display_view_spaces"] if "display_view_spaces" in raw
                         else embedded_default("display_view_spaces"), source, "display_view_spaces")
     taken = namespace.generated(displays, view_spaces, (*DEFAULT_ROLES, *roles), source)
@@ -138,6 +146,10 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     every = {n.lower() for n in all_names}
     if reference.lower() not in every:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
+    encoding = next(s.encoding for s in (*listed, *customs) if reference.lower() in (n.lower() for n in (s.name, *s.aliases)))
+    if encoding != "scene-linear":
+        raise SpecError(source, "scene_reference", f"{reference!r} is {encoding}; allowed: a scene-linear colour space "
+                        "(ACES2065-1, ACEScg, Linear Rec.709 (sRGB), ...)")
     if keep is not None:
         keep = (*keep, reference, *DEFAULT_ROLES.values(), *roles.values())
     spaces = (*_kept(listed, keep), *customs)
@@ -190,6 +202,14 @@ def _strings(value, source: str, field: str) -> tuple[str, ...]:
     return tuple(value)
 
 
+def _aliases(value, source: str, field: str) -> tuple[str, ...]:
+    aliases = _strings(value, source, field)
+    for i, alias in enumerate(aliases):
+        if not alias.strip():
+            raise SpecError(source, f"{field}[{i}]", "blank; allowed: names with a visible character")
+    return aliases
+
+
 def _unique(names, source: str, field: str) -> None:
     seen = set()
     for name in names:
@@ -210,8 +230,8 @@ def _tables(raw: dict, key: str, source: str) -> list:
 
 def _name(table: dict, source: str, field: str) -> str:
     name = _string(table.get("name", ""), source, f"{field}.name")
-    if not name:
-        raise SpecError(source, f"{field}.name", "required: a non-empty name")
+    if not name.strip():
+        raise SpecError(source, f"{field}.name", "required: a name with a visible character")
     return name
 
 
@@ -319,7 +339,7 @@ def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpa
         raise SpecError(source, f"{field}.encoding", f"unknown {encoding!r}; allowed: {', '.join(ENCODINGS)}")
     return ColourSpace(
         name=name, gamut=_gamut(table, source, field, base, name), curve=curve, curve_name=curve_name,
-        aliases=_strings(table.get("aliases", []), source, f"{field}.aliases"),
+        aliases=_aliases(table.get("aliases", []), source, f"{field}.aliases"),
         family=_string(table.get("family", "Custom"), source, f"{field}.family"), encoding=encoding,
         description=_string(table.get("description", ""), source, f"{field}.description"),
     )
@@ -336,6 +356,9 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     _check_keys(table, DISPLAY_KEYS, source, f"{field}.")
     name = _name(table, source, field)
     views = _strings(table["views"], source, f"{field}.views") if "views" in table else None
+    if views == ():
+        raise SpecError(source, f"{field}.views", f"empty; allowed: one or more of {', '.join(VIEWS)}, "
+                        "or the key left out for the defaults")
     for i, view in enumerate(views or ()):
         if view not in VIEWS:
             raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}; allowed: {', '.join(VIEWS)}")
@@ -344,17 +367,21 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     known = {d.name.lower(): d for d in library.DISPLAYS}
     custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
     if name.lower() in known and not custom:
-        fixed = next((k for k in ("peak_luminance", "absolute_luminance") if k in table), None)
+        fixed = next((k for k in table if k not in LIBRARY_DISPLAY_KEYS), None)
         if fixed:
-            raise SpecError(source, f"{field}.{fixed}", f"{known[name.lower()].name!r} is a library display with a fixed "
-                            "luminance; allowed: a display of another name with gamut (or primaries) and eotf")
+            raise SpecError(source, f"{field}.{fixed}", f"{known[name.lower()].name!r} is a library display, whose "
+                            f"{fixed} is fixed; allowed: {', '.join(LIBRARY_DISPLAY_KEYS)} here, or a display of "
+                            "another name with gamut (or primaries) and eotf")
         d = known[name.lower()]
         views = views or default_views(d.encoding)
         return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
         raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
                         "a custom display needs 'gamut' or 'primaries' and 'eotf'")
-    eotf_name, eotf = fields.transfer_function(table.get("eotf", "sRGB"), base, source, f"{field}.eotf")
+    if "eotf" not in table:
+        raise SpecError(source, f"{field}.eotf", "required for a custom display: a library curve (sRGB, gamma 2.4, "
+                        "ST 2084, HLG, ...) or a transfer family")
+    eotf_name, eotf = fields.transfer_function(table["eotf"], base, source, f"{field}.eotf")
     hdr = eotf_name in ("ST 2084", "HLG")
     absolute = _bool(table.get("absolute_luminance", False), source, f"{field}.absolute_luminance")
     if absolute and hdr:
@@ -369,10 +396,25 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                         "SDR (code 1 shows display-referred 1.0, 100 cd/m²), or with absolute_luminance = true "
                         f"{ABSOLUTE_PEAK_RANGE[0]:g} to {ABSOLUTE_PEAK_RANGE[1]:g} (code 1 emits the peak)")
     views = views or default_views("hdr-video" if hdr else "sdr-video")
-    return Display(name, _gamut(table, source, field, base, name), eotf, eotf_name, views,
-                   _strings(table.get("aliases", []), source, f"{field}.aliases"), peak,
+    gamut = _gamut(table, source, field, base, name)
+    if eotf_name == "HLG":
+        _check_bt2020(gamut, source, f"{field}.{next((k for k in ('primaries', 'primaries_spectra') if k in table), 'gamut')}")
+    return Display(name, gamut, eotf, eotf_name, views,
+                   _aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
                    "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"),
                    absolute)
+
+
+def _check_bt2020(gamut, source: str, field: str) -> None:
+    """HLG is defined on BT.2020's primaries and white (ITU-R BT.2100): its OOTF weighs the
+    channels by BT.2020 luminance, and OCIO's HLG display builtin encodes BT.2020 RGB."""
+    from generator.colorimetry.gamuts import gamuts
+
+    bt2020 = gamuts()["Rec.2020"]
+    if not np.allclose([*gamut.primaries, gamut.whitepoint], [*bt2020.primaries, bt2020.whitepoint], rtol=0,
+                       atol=tolerances.GAMUT_SAME_XY_ABSOLUTE):
+        raise SpecError(source, field, "an HLG display is BT.2100's, on BT.2020 primaries and D65; "
+                        "allowed: gamut = \"Rec.2020\" (or its primaries and white)")
 
 
 def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
@@ -407,6 +449,11 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
             if key not in table:
                 raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
         rule = FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()})
+        if rule.name.lower() in (r.name.lower() for r in rules):
+            raise SpecError(source, f"{field}.name", f"{rule.name!r} names an earlier rule too; allowed: one rule a name")
+        if rule.name == "Default" and ({"pattern", "extension"} & set(table)):
+            raise SpecError(source, f"{field}.{'pattern' if 'pattern' in table else 'extension'}",
+                            "the Default rule matches every file; allowed: name and colour_space alone")
         if rule.colour_space.lower() not in names:
             raise SpecError(source, f"{field}.colour_space", f"{rule.colour_space!r} is not among the colour spaces; "
                             "allowed: a colour space, display or role of the config")

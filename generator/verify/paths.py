@@ -188,14 +188,17 @@ def view_method(view: str) -> str | None:
 
 def lut_range(display: Display, method: str | None = None) -> tuple[float, float] | None:
     """Display-linear range (1.0 = 100 cd/m²) a baked view LUT covers per channel; it clamps
-    beyond. None for an HSV view, whose lattice clamps OCIO's HSV value instead (from -256
-    to 1024 times the peak, :mod:`generator.luts.hsv`)."""
-    from generator.luts.lattice import DISPLAY_RANGE
-    from generator.luts.view import HSV_METHOD
+    beyond (clip and scale treat every negative channel as 0, as their lattice does). None for
+    an HSV view, whose lattice clamps OCIO's HSV value instead (from -256 to 1024 times the
+    peak, :mod:`generator.luts.hsv`)."""
+    from generator.luts.axes import LOG_METHODS
+    from generator.luts.lattice import DISPLAY_RANGE, log_axis_high
+    from generator.luts.view import HSV_METHOD, ends_in_light
 
     if method == HSV_METHOD:
         return None
-    return (DISPLAY_RANGE[0] * display.clip_high, DISPLAY_RANGE[1] * display.clip_high)
+    high = log_axis_high(display, ends_in_light(display)) if method in LOG_METHODS else DISPLAY_RANGE[1]
+    return (DISPLAY_RANGE[0] * display.clip_high, high * display.clip_high)
 
 
 def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:

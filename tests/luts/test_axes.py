@@ -32,7 +32,7 @@ def test_log_axis_puts_zero_one_and_the_range_on_nodes(default_spec, size, metho
         assert isinstance(axis, LogAxis)
         nodes = axis.nodes()
         assert nodes[0] == 0.0 and nodes[axis.one] == 1.0
-        assert axis.high == pytest.approx(lattice.DISPLAY_RANGE[1], rel=1e-9)
+        assert axis.high == pytest.approx(lattice.log_axis_high(display), rel=1e-9)
         wanted = axes.HLG_TOE_BITS if display.eotf_name == "HLG" else axes.LOG_TOE_BITS
         assert np.log2(1.0 / axis.toe + 1.0) >= wanted - 1e-9
         np.testing.assert_allclose(axis.coordinate(nodes), np.arange(size) / (size - 1), rtol=0, atol=1e-12)

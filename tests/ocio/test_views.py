@@ -106,3 +106,52 @@ def test_an_absolute_led_wall_meets_every_target(tmp_path):
     apply = cfg.getProcessor(grey.name, "LED Wall", "Colorimetric", ocio.TRANSFORM_DIR_FORWARD).getDefaultCPUProcessor()
     codes = np.array([apply.applyRGB([v, v, v]) for v in (1.0, 15.0)])
     assert np.allclose(codes, [[(1 / 15) ** (1 / 2.4)] * 3, [1.0] * 3], rtol=0, atol=tolerances.ANALYTIC_RELATIVE)
+
+
+def test_scale_keeps_the_hue_of_highlights_far_beyond_the_peak(built):
+    """Bright practical lights: ColorChecker colours 2**5 to 2**15 times over, through Scale,
+    within the every-set bound of the reference, with no clamp before the mapping (a lattice
+    clamped per channel at 32 times the peak turned orange-yellow at 2**6 into yellow, 165
+    codes off)."""
+    import colour
+
+    from generator.colorimetry import reference
+
+    cfg, spec = built
+    checker = colour.CCS_COLOURCHECKERS["ColorChecker24 - After November 2014"]
+    xyz = colour.xyY_to_XYZ(np.array(list(checker.data.values())))
+    ref = xyz @ np.linalg.inv(reference.scene_to_display_reference(spec)).T
+    ref = np.concatenate([ref * 2.0**k for k in range(5, 16)])
+    for display in (d for d in spec.displays if "Scale" in d.views):
+        expected = reference.mapped_view(spec, display, "scale", ref)
+        error = probes.errors(display, view_apply(cfg, spec, display, "Scale")(ref), expected)[0]
+        assert error.max() <= targets(display, "Scale")[1], (display.name, error.max())
+
+
+def test_views_that_leave_the_gamut_alone_read_back_as_colorimetric(built):
+    """A display-referred file read into the scene through "Scale - <display>" or "Desaturate -
+    <display>" comes back as through Colorimetric: those methods leave every displayable
+    colour alone, so every code has that one inverse (OCIO's inversion of the lattice sent
+    sRGB white to scene 2.65)."""
+    from generator.spec.namespace import display_view_space
+
+    cfg, spec = built
+    codes = np.random.default_rng(7).random((512, 3))
+    codes[:3] = [[1.0, 1.0, 1.0], [0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]
+
+    def back(space):
+        cpu = cfg.getProcessor(space, spec.scene_reference).getDefaultCPUProcessor()
+        pixels = np.ascontiguousarray(codes, dtype=np.float32)
+        cpu.applyRGB(pixels)
+        return pixels.astype(np.float64)
+
+    checked = 0
+    for display in spec.displays:
+        expected = back(display_view_space("Colorimetric", display.name))
+        for view in ("Scale", "Desaturate"):
+            if view in display.views:
+                actual = back(display_view_space(view, display.name))
+                scale = np.maximum(np.abs(expected).max(axis=-1, keepdims=True), 1.0)
+                assert (np.abs(actual - expected) <= tolerances.ANALYTIC_RELATIVE * scale).all(), (display.name, view)
+                checked += 1
+    assert checked
