@@ -141,7 +141,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         raise SpecError(source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's")
     view_spaces = _bool(raw["display_view_spaces"] if "display_view_spaces" in raw
                         else embedded_default("display_view_spaces"), source, "display_view_spaces")
-    taken = namespace.generated(displays, view_spaces, (*DEFAULT_ROLES, *roles), source)
+    taken = namespace.generated(displays, view_spaces, tuple(DEFAULT_ROLES), source, tuple(roles))
     namespace.check_free(listed, customs, taken, source)
     every = {n.lower() for n in all_names}
     if reference.lower() not in every:

@@ -37,11 +37,14 @@ class Owner:
     what: str
 
 
-def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, source: str) -> dict[str, Owner]:
+def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, source: str,
+              spec_roles=()) -> dict[str, Owner]:
     """Every name the build gives beside the spec's colour spaces (lower case) and its owner.
 
-    A display whose name or alias is taken already (by the display reference, a role, an
-    earlier display or a display-view space) is an error naming the display's field.
+    A name taken twice is an error naming the field that came second: the display reference
+    and the default ``roles`` come first, then the displays, their display-view spaces and
+    the roles the spec names itself (``spec_roles``), so a display named like a default role
+    is the display's error and a role the spec names like a display is the role's.
     """
     taken: dict[str, Owner] = {}
 
@@ -52,7 +55,8 @@ def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, s
 
     for name in (DISPLAY_REFERENCE, *DISPLAY_REFERENCE_ALIASES):
         add(name, Owner("", f"the generated display-referred reference space {DISPLAY_REFERENCE!r}"))
-    for role in dict.fromkeys(roles):
+    chosen = {r.lower() for r in spec_roles}
+    for role in dict.fromkeys(r for r in roles if r.lower() not in chosen):
         add(role, Owner(f"roles.{role}", f"the role {role!r}"))
     for i, display in enumerate(displays):
         what = f"the generated display colour space of display[{i}] {display.name!r}"
@@ -64,6 +68,8 @@ def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, s
             if view != RAW_VIEW:
                 add(display_view_space(view, display.name), Owner(f"display[{i}].views[{j}]",
                     f"the generated display-view colour space of view {view!r} on display[{i}] (display_view_spaces = true)"))
+    for role in dict.fromkeys(spec_roles):
+        add(role, Owner(f"roles.{role}", f"the role {role!r}"))
     return taken
 
 

@@ -20,12 +20,14 @@ from generator.verify.probes import Family, Probes, Sizes
 
 
 def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
-    """Every baked LUT file against the curve it stands for, on its nodes, between them
-    (a quarter, a half, three quarters of the way) and on a ramp."""
+    """Every baked LUT file (a colour space's curve, a display's EOTF) against the curve it
+    stands for, on its nodes, between them (a quarter, a half, three quarters of the way)
+    and on a ramp."""
     from generator.ocio.emit import LUT_FOLDER
 
     curves = {curve_label(spec, s.name, s.curve_name): s.curve
               for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
+    curves.update({curve_label(spec, d.name, d.eotf_name): d.eotf for d in spec.displays if paths.eotf_is_baked(spec, d)})
     out = []
     for name, curve in curves.items():
         baked = baked_lut(name, curve)

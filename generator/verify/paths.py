@@ -82,6 +82,13 @@ def space_is_baked(spec: Spec, space: ColourSpace) -> bool:
     return not (space.is_data or space.special) and is_baked(space.curve_name, space.curve, spec.ocio_version)
 
 
+def eotf_is_baked(spec: Spec, display: Display) -> bool:
+    """Whether the config expresses ``display``'s EOTF as a baked 1D LUT file (HLG is OCIO's
+    display builtin)."""
+    label = curve_label(spec, display.name, display.eotf_name)
+    return display.eotf_name != "HLG" and is_baked(label, display.eotf, spec.ocio_version)
+
+
 def code_range(spec: Spec, space: ColourSpace) -> tuple[float, float]:
     """The code values ``space`` represents: a baked curve's domain, ADX16 up to the code
     that decodes to half-float max (where OCIO's builtin clamps), otherwise [0, 1]."""

@@ -62,3 +62,12 @@ def test_a_file_rule_names_a_colour_space_display_or_role(target, ok):
     else:
         raised = error(text)
         assert raised.field == "file_rule[0].colour_space" and "not among" in raised.message
+
+
+def test_a_name_taken_twice_names_the_field_the_spec_wrote_second():
+    """A role the spec names like a display is the role's error; a display named like a
+    default role is the display's."""
+    raised = error(SRGB + "[roles]\n'sRGB - Display' = 'ACEScg'\n")
+    assert raised.field == "roles.sRGB - Display" and "display colour space of display[0]" in raised.message
+    raised = error("[[display]]\nname = 'scene_linear'\ngamut = 'Rec.709'\neotf = 'sRGB'\n")
+    assert raised.field == "display[0].name" and "the role 'scene_linear'" in raised.message

@@ -146,7 +146,8 @@ def test_curves_a_clamping_builtin_expresses_are_judged_on_its_codes(build_confi
 
 
 def test_custom_curves_are_checked_under_their_files_names_and_as_code_values(tmp_path):
-    """A custom tabulated curve is baked under its space's name, and verify checks that file;
+    """A custom tabulated curve is baked under its space's or display's name, and verify checks
+    that file on its own (a display's was only read through its views);
     a gamma-encoded space labelled scene-linear is still judged as code values, with the
     float32 limit of its steep power (it failed by colour relative error before)."""
     from generator.ocio.write import build, for_folder
@@ -159,14 +160,17 @@ def test_custom_curves_are_checked_under_their_files_names_and_as_code_values(tm
             '[[custom_space]]\nname = "Tab"\ngamut = "P3-D65"\ntransfer = { family = "tabulated", file = "curve.csv" }\n'
             '[[custom_space]]\nname = "Warm"\nencoding = "scene-linear"\nprimaries = [[0.70, 0.30], [0.17, 0.80], '
             '[0.13, 0.04]]\nwhite = 5000\ntransfer = { family = "gamma", exponent = 2.2 }\n'
-            '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+            '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+            '[[display]]\nname = "Tab Monitor"\ngamut = "Rec.709"\neotf = { family = "tabulated", file = "curve.csv" }\n'
+            'views = ["Colorimetric", "Raw"]\n')
     (tmp_path / "show.toml").write_text(text)
     folder = tmp_path / "show"
     build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
-    assert (folder / "luts" / "tab_to_linear.spi1d").is_file()
+    files = {"luts/tab_to_linear.spi1d", "luts/tab_monitor_to_linear.spi1d"}
+    assert {f"luts/{p.name}" for p in (folder / "luts").iterdir()} == files
     result = verify(folder / "config.ocio", ("ocio",), density="quick",
                     kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
-    assert "luts/tab_to_linear.spi1d" in {o.check.item for o in result.outcomes}
+    assert files <= {o.check.item for o in result.outcomes}
     assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
 
 
