@@ -26,7 +26,7 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     if not output:
         raise SpecError(bake.WHERE, "-o", "give the file to write")
     fmt = bake.format_for(fmt, output)
-    req = bake.request(load.load(spec_path, keep=(source,)), source, display, method or bake.DEFAULT_METHOD, fmt,
+    req = bake.request(load.load(spec_path, keep=(source, shaper)), source, display, method or bake.DEFAULT_METHOD, fmt,
                        bake.DEFAULT_SIZE if size is None else size, shaper)
     files = bake.paths(bake.bake(req), output)
     bake.write(files, force)

@@ -108,7 +108,7 @@ def compress_distance(distance: np.ndarray, params: RGCParams) -> np.ndarray:
     p = params.power
     n = np.maximum(distance - thr, 0.0) / s
     with np.errstate(divide="ignore"):
-        inverse_power = np.where(n > 0.0, n, np.inf) ** -p
+        inverse_power = n ** -p  # +Inf at the threshold itself (n = 0): the distance stays there
     compressed = thr + s / (1.0 + inverse_power) ** (1.0 / p)
     return np.where(distance < thr, distance, compressed)
 

@@ -170,6 +170,8 @@ class Axis:
         n = size - 1
         below = 0 if low >= 0 else max(1, round(n * shares[0] * min(1.0, -low)))
         above = 0 if high <= 1 else max(1, round(n * shares[1]))
+        while n - below - above < 1 and max(below, above) > 1:  # rounding up both shares left the cube none
+            below, above = (below - 1, above) if below >= above else (below, above - 1)
         if n - below - above < 1:
             raise ValueError(f"a lattice of {size} nodes is too small for this axis")
         return cls(display, size, below, n - above, min(low, 0.0), max(high, 1.0), knee, inside)

@@ -13,8 +13,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from generator.files import write_files
 from generator.luts import formats, lattice
+from generator.luts.axes import LogAxis
 from generator.spec.schema import ColourSpace, Display, Spec, SpecError
 
 WHERE = "ocioforge bake"
@@ -46,6 +49,9 @@ FORMATS = {
 }
 
 _BY_SUFFIX = {".cube": "resolve_cube", ".spi3d": "spi3d", ".clf": "clf"}
+
+#: The suffix of the shaper file written beside a .spi3d.
+SHAPER_SUFFIX = ".spi1d"
 
 
 @dataclass(frozen=True)
@@ -105,6 +111,10 @@ def format_for(fmt: str | None, output: str) -> str:
         return _BY_SUFFIX[suffix]
     if fmt not in FORMATS:
         raise SpecError(WHERE, "--format", f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
+    suffix = Path(output).suffix.lower()
+    if suffix in (*_BY_SUFFIX, SHAPER_SUFFIX) and suffix != FORMATS[fmt].suffix:
+        raise SpecError(WHERE, "-o", f"{Path(output).name!r} ends in {suffix}, not {fmt}'s suffix; allowed: a name "
+                        f"ending in {FORMATS[fmt].suffix} (hosts tell formats by suffix)")
     return fmt
 
 
@@ -117,17 +127,33 @@ def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: 
     if method not in METHODS:
         raise SpecError(WHERE, "--gamut-map", f"unknown method {method!r}; allowed: {', '.join(METHODS)}")
     src, dst = find_source(spec, source, "--from"), find_display(spec, display, "--to")
-    chosen: str | ColourSpace = shaper
-    if shaper not in ("auto", "none"):
+    chosen: str | ColourSpace = shaper.lower() if shaper.lower() in SHAPER_KEYWORDS else shaper
+    if chosen not in SHAPER_KEYWORDS:
         if not FORMATS[fmt].shaper:
             raise SpecError(WHERE, "--shaper", f"{fmt} holds no shaper; allowed: auto, none")
-        chosen = find_source(spec, shaper, "--shaper", "shaper")
+        chosen = _shaper_space(spec, shaper)
     _refuse_linear_without_shaper(src, fmt, chosen)
     top = FORMATS[fmt].max_size
     smallest = _smallest_size(spec, dst, src, method, fmt, chosen)
     if not smallest <= size <= top:
         raise SpecError(WHERE, "--size", f"{size} is outside what {fmt} allows here: {smallest} to {top}")
     return Request(spec, src, dst, method, fmt, size, chosen)
+
+
+#: ``--shaper`` words that name no colour space (matched in any case, before space names).
+SHAPER_KEYWORDS = ("auto", "none")
+
+
+def _shaper_space(spec: Spec, name: str) -> ColourSpace:
+    """The colour space whose curve spaces a lattice's nodes: encoded, not linear (a lattice
+    uniform in linear light leaves black hundreds of codes off)."""
+    from generator.colorimetry.transfer import Linear
+
+    space = find_source(spec, name, "--shaper", "shaper")
+    if isinstance(space.curve, Linear):
+        raise SpecError(WHERE, "--shaper", f"{space.name!r} is linear, which would space the nodes uniformly in light "
+                        "(black off by hundreds of ten-bit codes); allowed: auto, or a space with a log or video curve")
+    return space
 
 
 def _refuse_linear_without_shaper(source: ColourSpace, fmt: str, shaper) -> None:
@@ -174,12 +200,19 @@ def describe(req: Request) -> str:
 
 def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     """Comment lines: what the file does and what its input is."""
+    from generator.colorimetry import reference
+
     lo, hi = lat.domain
-    lines = [f"ocioforge: {describe(req)}.",
-             f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).",
-             f"Output: {req.display.name} code values (full range, 0 to 1)."]
+    top = float(reference.display_encode(req.display, np.full(3, req.display.clip_high))[0])
+    output = f"Output: {req.display.name} code values (full range, 0 to {top:.6g})."
     if lat.pre is not None:
-        return lines
+        low, high = (0.0, lat.pre.high) if isinstance(lat.pre, LogAxis) else lat.pre.inverse(np.array(lat.domain))
+        return [f"ocioforge: {describe(req)}.",
+                f"Input: {req.source.name} values, decoded and converted to {req.display.name} light exactly; the "
+                f"lattice covers {low:.9g} to {high:.9g} times the display's peak per channel (clamped beyond).",
+                output]
+    lines = [f"ocioforge: {describe(req)}.",
+             f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).", output]
     if lat.shaper is not None and req.shaper == "auto":
         lines.append("A 1D shaper spaces the nodes by the display's code values of the decoded input "
                      "(by a root of it above the peak), linear in code values between nodes.")
@@ -199,7 +232,7 @@ def bake(req: Request) -> dict[str, bytes]:
     if req.fmt == "spi3d":
         files = {"": formats.spi3d(lat)}
         if formats.needs_spi1d(lat):
-            files[".spi1d"] = formats.spi1d_shaper(lat)
+            files[SHAPER_SUFFIX] = formats.spi1d_shaper(lat)
         return files
     return {"": formats.clf(lat, identifier(req), " ".join(notes(req, lat)), descriptors=(req.source.name, req.display.name))}
 

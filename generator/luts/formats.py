@@ -137,13 +137,16 @@ def _pre_shaper(pre, forward: bool = True) -> str:
 
 
 def _log_camera(curve: LogCamera) -> str:
+    """A LogCamera curve's decoding: CLF's camera style with a break, its plain log style without."""
     params = dict(base=curve.base, logSideSlope=curve.log_side_slope, logSideOffset=curve.log_side_offset,
-                  linSideSlope=curve.lin_side_slope, linSideOffset=curve.lin_side_offset,
-                  linSideBreak=curve.lin_side_break)
+                  linSideSlope=curve.lin_side_slope, linSideOffset=curve.lin_side_offset)
+    if curve.lin_side_break is not None:
+        params["linSideBreak"] = curve.lin_side_break
     if curve.linear_slope is not None:
         params["linearSlope"] = curve.linear_slope
     attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
-    return op("Log", f"<LogParams {attrs}/>\n", style="cameraLogToLin")
+    style = "cameraLogToLin" if curve.lin_side_break is not None else "logToLin"
+    return op("Log", f"<LogParams {attrs}/>\n", style=style)
 
 
 def decode_ops(name: str, curve) -> str:
@@ -155,7 +158,7 @@ def decode_ops(name: str, curve) -> str:
         return _exponent("basicMirrorFwd", curve.exponent)
     if isinstance(curve, PiecewisePower):
         return _exponent("monCurveFwd", curve.gamma, curve.offset)
-    if isinstance(curve, LogCamera) and curve.lin_side_break is not None:
+    if isinstance(curve, LogCamera):
         return _log_camera(curve)
     from generator.luts.curve1d import bake_curve
 
@@ -181,8 +184,11 @@ def _pre(lattice: Lattice, include_matrix: bool) -> list[str]:
             ops.append(decode_ops(lattice.source.name, lattice.decode))
         ops.append(_matrix(lattice.matrix))
     pre = lattice.pre
-    ops.append(_log_axis(pre) if isinstance(pre, LogAxis) else _pre_shaper(pre))
-    return ops
+    if isinstance(pre, LogAxis):
+        return [*ops, _log_axis(pre)]
+    if pre.scale == 1.0:
+        return [*ops, _pre_shaper(pre)]
+    return [*ops, _matrix(np.eye(3) * pre.scale), _pre_shaper(pre), _matrix(np.eye(3) / pre.norm)]
 
 
 def _light(lattice: Lattice) -> list[str]:
@@ -191,7 +197,10 @@ def _light(lattice: Lattice) -> list[str]:
         return []
     if isinstance(lattice.light, LogAxis):
         return [_log_axis(lattice.light, "logToLin")]
-    return [_pre_shaper(lattice.light, forward=False)]
+    light = lattice.light
+    if light.scale == 1.0:
+        return [_pre_shaper(light, forward=False)]
+    return [_matrix(np.eye(3) * light.norm), _pre_shaper(light, forward=False), _matrix(np.eye(3) / light.scale)]
 
 
 def clf(lattice: Lattice, identifier: str, description: str, include_matrix: bool = True,

@@ -34,7 +34,7 @@ from generator.colorimetry import reference
 from generator.colorimetry.transfer import Linear, PiecewisePower, Power
 from generator.luts import numbers, probes
 from generator.luts.axes import DEFAULT_SHARES, LOG_METHODS, Axis, LogAxis, grey_code, grey_linear
-from generator.luts.source_axes import SOURCE_SHAPER_SIZES, source_axis, source_domain
+from generator.luts.source_axes import SOURCE_SHAPER_SIZES, shaper_domain, source_axis, source_domain
 from generator.spec.schema import ColourSpace, Display, Spec
 
 #: Decimals written for lattice values holding display code values: 5e-6 of a code at
@@ -83,24 +83,40 @@ class PreShaper:
 
     gamma: float
     offset: float = 0.0
+    scale: float = 1.0
 
     @classmethod
-    def for_display(cls, display: Display) -> PreShaper:
+    def for_display(cls, display: Display, scaled: bool = True) -> PreShaper:
+        """The display's own curve of normalised display light; ``scaled``, of the light itself
+        divided by the code of the peak (``scale`` is the peak over the light of code 1: 10 for
+        an extended-range display, whose codes pass 1 and whose linear toe sits at a tenth of
+        the normalised value), so the peak stays at 1."""
+        scale = display.clip_high / display.code_one if scaled else 1.0
         if isinstance(display.eotf, PiecewisePower):
-            return cls(display.eotf.gamma, display.eotf.offset)
-        return cls(display.eotf.exponent if isinstance(display.eotf, Power) else DEFAULT_GAMMA)
+            return cls(display.eotf.gamma, display.eotf.offset, scale)
+        if isinstance(display.eotf, Power):
+            return cls(display.eotf.exponent, 0.0, scale)
+        return cls(DEFAULT_GAMMA)
 
-    def forward(self, x) -> np.ndarray:
-        x = np.asarray(x, dtype=np.float64)
+    @property
+    def norm(self) -> float:
+        """The curve at ``scale``: dividing by it keeps the peak at 1, on a table entry."""
+        return float(self._curve(np.array(self.scale)))
+
+    def _curve(self, x) -> np.ndarray:
         if not self.offset:
             return np.sign(x) * np.abs(x) ** (1.0 / self.gamma)
         return np.sign(x) * PiecewisePower(self.gamma, self.offset).encode(np.abs(x))
 
+    def forward(self, x) -> np.ndarray:
+        x = np.asarray(x, dtype=np.float64) * self.scale
+        return self._curve(x) if self.scale == 1.0 else self._curve(x) / self.norm
+
     def inverse(self, w) -> np.ndarray:
-        w = np.asarray(w, dtype=np.float64)
+        w = np.asarray(w, dtype=np.float64) * (self.norm if self.scale != 1.0 else 1.0)
         if not self.offset:
-            return np.sign(w) * np.abs(w) ** self.gamma
-        return np.sign(w) * PiecewisePower(self.gamma, self.offset).decode(np.abs(w))
+            return np.sign(w) * np.abs(w) ** self.gamma / self.scale
+        return np.sign(w) * PiecewisePower(self.gamma, self.offset).decode(np.abs(w)) / self.scale
 
 
 @dataclass(frozen=True, eq=False)
@@ -202,7 +218,8 @@ def display_axis(display: Display, size: int, method: str, light: bool = False) 
     :class:`Axis` is a power of display light inside the cube, where the pre-shaper is."""
     if method in LOG_METHODS:
         return LogAxis.layout(display, size, log_axis_high(display, light), exact=light)
-    return Axis.layout(display, size, *DISPLAY_RANGE, DEFAULT_SHARES, inside=PreShaper.for_display(display) if light else None)
+    inside = PreShaper.for_display(display, scaled=False) if light else None
+    return Axis.layout(display, size, *DISPLAY_RANGE, DEFAULT_SHARES, inside=inside)
 
 
 def encodes_in_clf(display: Display) -> bool:
@@ -269,7 +286,7 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
                            light=axis)
         cube, post = _log_lattice(display, method, axis, params)
         return Lattice(source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, post, LOG_DECIMALS)
-    pre = PreShaper.for_display(display)
+    pre = PreShaper.for_display(display, scaled=not light)
     domain, table = display_table(axis, pre)
     linear = pre.inverse(_preimages(size, table, domain)) * display.clip_high
     if light:
@@ -300,7 +317,7 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: st
     curve, applied to the decoded source values, spaces the nodes."""
     from generator.luts.fit import FIT_COUNT, reweighted_fit  # fit.py builds on this module
 
-    domain = source_domain(source, display)
+    domain = shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
     table = _shaper_table(spec, source, display, size, shaper, domain)
     codes = _preimages(size, table, domain)
     with np.errstate(all="ignore"):
@@ -310,5 +327,18 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: st
     lat = Lattice(source, display, method, None, None, None, domain, table, cube)
     axis = source_axis(spec, source, display, size) if shaper == "auto" else None
     zero = axis.zero if axis is not None and axis.values[axis.zero] == 0.0 else None
-    colours = probes.training(spec, source, display, method, FIT_COUNT, params)
+    colours = _held(probes.training(spec, source, display, method, FIT_COUNT, params), domain)
     return Lattice(source, display, method, None, None, None, domain, table, reweighted_fit(lat, colours, zero))
+
+
+def _held(colours: dict, domain: tuple[float, float]) -> dict:
+    """The training colours whose source values the file's domain holds: one beyond it is
+    clamped there, and fitting its mapped colour at the clamped input would pull the
+    domain's edge nodes off (an sRGB-encoded source, whose domain ends at code 1, put
+    near-white colours hundreds of codes off through an identity)."""
+    lo, hi = domain
+    out = {}
+    for name, (code, expected) in colours.items():
+        inside = np.all((code >= lo) & (code <= hi), axis=-1)
+        out[name] = (code[inside], expected[inside])
+    return out

@@ -43,7 +43,8 @@ keep their chromaticity). Inside the display's gamut it is the identity, as clip
 * `.cube`: DaVinci Resolve format, a 1D shaper (uniform in the source values,
   range in `LUT_1D_INPUT_RANGE`) then a {cube_size}³ lattice whose nodes are spaced by
   the display's code values up to the peak and by a root of the light above it, up
-  to 16 times the peak (the Rec.2100-PQ files: times the 1000 cd/m² peak); linear
+  to 16 times the peak (the Rec.2100-PQ files: times the 1000 cd/m² peak) or the
+  source's top code, whichever is lower (S-Log3's 1.0 holds 3.8 times that peak); linear
   sources from -1 times the peak. Node values are fitted to colours of the source
   gamut by least squares, reweighted toward the colours that set the 99th
   percentile of the error (greys and colours with a zero channel keep their
@@ -63,7 +64,8 @@ Errors: read back through OpenColorIO {ocio} (CPU, float32) against the
 reference, on {count} random probes per set (`generator.luts.probes`, fixed seed):
 in-gamut colours (uniform in the display's RGB cube), dark colours (largest
 channel 1e-4 to 1e-2 of white), out-of-gamut colours of the source gamut, and
-over-range colours up to 16 times the peak. Ten-bit code values for SDR
+over-range colours up to 16 times the peak, those the source's codes hold (a capped
+code range leaves the brightest out). Ten-bit code values for SDR
 displays, ΔE ITP (ITU-R BT.2124) for Rec.2100-PQ. "In-gamut probes max" is the
 largest error on the in-gamut and dark probes; "All probes p99" and "All probes
 max" are over all four sets.

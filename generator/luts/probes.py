@@ -12,8 +12,9 @@ seed so the same call always gives the same colours:
   peak, log-uniform, whose largest display channel exceeds the peak.
 
 Colours the source encoding cannot hold (they do not decode back to themselves: a
-tabulated curve's clamp beyond its table, a curve with no negative values) are left
-out of both, as a file in that encoding never holds them.
+tabulated curve's clamp beyond its table, a curve with no negative values; or their
+codes pass the top of a capped code range, as S-Log3's brightest codes fall short of 16
+times a 1000 cd/m² peak) are left out of both, as a file in that encoding never holds them.
 
 Errors are ten-bit code values (largest channel difference times 1023) for SDR
 displays and ΔE ITP (ITU-R BT.2124, :func:`~generator.verify.metrics.delta_e_itp`)
@@ -82,6 +83,20 @@ def representable(spec: Spec, source: ColourSpace, ref: np.ndarray, code: np.nda
             tolerances.REPRESENTABLE_RELATIVE
 
 
+def held(spec: Spec, source: ColourSpace, display: Display, ref: np.ndarray, code: np.ndarray) -> np.ndarray:
+    """:func:`representable` colours whose codes also lie within the source's code range where
+    the curve caps it (S-Log3's and an sRGB encoding's codes end at 1, below the brightest
+    over-range probes of a 1000 cd/m² display): no file of the source holds the others."""
+    from generator.luts.source_axes import code_range
+
+    keep = representable(spec, source, ref, code)
+    low, high, capped = code_range(source, display)
+    if capped:
+        with np.errstate(invalid="ignore"):
+            keep &= np.all(code <= high, axis=-1)
+    return keep
+
+
 def probes(spec: Spec, source: ColourSpace, display: Display, count: int = COUNT,
            gamut_source: ColourSpace | None = None) -> dict[str, np.ndarray]:
     """The probe sets as scene-reference linear RGB, shape (n, 3) each.
@@ -106,7 +121,7 @@ def training(spec: Spec, source: ColourSpace, display: Display, method: str, cou
         ref = reference.apply_matrix(to_reference, linear)
         with np.errstate(all="ignore"):
             code = reference.from_reference(spec, source, ref)
-            keep = representable(spec, source, ref, code)
+            keep = held(spec, source, display, ref, code)
             out[name] = (code[keep], reference.mapped_view(spec, display, method, ref[keep], params))
     return out
 
@@ -133,7 +148,7 @@ def set_errors(spec: Spec, source: ColourSpace | None, display: Display, method:
     for name, ref in probes(spec, space, display, count, gamut_source).items():
         code = ref if source is None else reference.from_reference(spec, source, ref)
         if source is not None:
-            keep = representable(spec, source, ref, code)
+            keep = held(spec, source, display, ref, code)
             ref, code = ref[keep], code[keep]
         if not len(ref):
             continue

@@ -137,7 +137,7 @@ class SourceAxis:
         return (k + np.clip(np.nan_to_num(fraction), 0.0, 1.0)) / (nodes.size - 1)
 
 
-def _code_range(source: ColourSpace, display: Display) -> tuple[float, float, bool]:
+def code_range(source: ColourSpace, display: Display) -> tuple[float, float, bool]:
     """Codes of the source layout before alignment, and whether the top is the curve's own."""
     if isinstance(source.curve, Linear):
         return SOURCE_RANGE[0] * display.clip_high, SOURCE_RANGE[1] * display.clip_high, False
@@ -148,6 +148,20 @@ def _code_range(source: ColourSpace, display: Display) -> tuple[float, float, bo
     return low, (high if capped else top), capped
 
 
+def shaper_domain(source: ColourSpace, shaper: ColourSpace, display: Display) -> tuple[float, float]:
+    """Input range of a lattice spaced by a named shaper space: the source values of the light
+    that space encodes from code 0 to code 1 (as ociobakelut's shaper space), within the
+    source's own codes (the curve's domain below, a tabulated curve's top)."""
+    low, high, capped = code_range(source, display)
+    with np.errstate(all="ignore"):
+        lo, hi = (float(v) for v in source.curve.encode(shaper.curve.decode(np.array([0.0, 1.0]))))
+    if not isinstance(source.curve, Linear):
+        lo = max(lo, low)
+    if capped:
+        hi = min(hi, high)
+    return (lo, hi) if np.isfinite(lo) and np.isfinite(hi) and lo < hi else (low, high)
+
+
 def source_domain(source: ColourSpace, display: Display) -> tuple[float, float]:
     """Input range of a source layout: for linear sources about ``SOURCE_RANGE[0]`` times
     the display's peak, for encoded ones the bottom of their code range, up to at least
@@ -155,7 +169,7 @@ def source_domain(source: ColourSpace, display: Display) -> tuple[float, float]:
     the top of their code range. The ends are moved by less than a step of the shaper
     table so that the codes of 0 and of the peak fall on its entries."""
     count = SOURCE_SHAPER_SIZES[isinstance(source.curve, Linear)]
-    low, high, capped = _code_range(source, display)
+    low, high, capped = code_range(source, display)
     with np.errstate(all="ignore"):
         zero, one = (float(v) for v in source.curve.encode(np.array([0.0, display.clip_high])))
     step = (high - low) / (count - 1)

@@ -108,3 +108,15 @@ def test_zero_achromatic_value_is_black_as_in_ocio():
 def test_invalid_parameters_are_refused(bad):
     with pytest.raises(ValueError):
         RGCParams(**bad)
+
+
+@pytest.mark.parametrize("params", [RGCParams(), CUSTOM], ids=["aces13", "custom"])
+def test_a_distance_exactly_at_its_threshold_stays_there_as_in_ocio(params):
+    """The shaper is continuous at the threshold: a distance equal to it is unchanged (it was
+    sent to the asymptote, threshold plus scale: (0.185, 1, 1) became (0, 1, 1))."""
+    thresholds = np.array(params.thresholds)
+    rgb = np.ones((3, 3))
+    rgb[np.arange(3), np.arange(3)] = 1.0 - thresholds  # distance (1 - c) / 1 = threshold
+    rgb32 = rgb.astype(np.float32)
+    np.testing.assert_array_equal(rgc_compress(rgb32.astype(np.float64), params), rgb32.astype(np.float64))
+    assert scaled_error(rgb32, params) <= RGC_OCIO_SCALED

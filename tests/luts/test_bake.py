@@ -167,3 +167,71 @@ def test_writers_refuse_what_a_format_cannot_hold(default_spec):
     lat = bake.build_lattice(_request(default_spec, "resolve_cube"))
     with pytest.raises(ValueError):
         formats.iridas_cube(lat, "t")
+
+
+def test_a_cube_from_a_display_encoded_source_is_exact_on_what_its_domain_holds(default_spec, tmp_path):
+    """sRGB-encoded values through a .cube into the sRGB display (an identity in gamut): the
+    fit leaves out colours beyond the file's domain (codes above 1, which the file clamps),
+    which had pulled near-white nodes hundreds of codes off."""
+    req = _request(default_spec, "resolve_cube", method="scale", size=33, source="sRGB Encoded Rec.709 (sRGB)")
+    figures = probes.measure(default_spec, req.source, req.display, "scale",
+                             probes.ocio_apply(_transform(_write(tmp_path, req))))
+    assert max(figures[name].maximum for name in ("in_gamut", "dark")) <= tolerances.LUT_CLF_IN_GAMUT_CODES
+
+
+@pytest.mark.parametrize("method", ("desaturate", "perceptual"))
+def test_an_extended_range_clf_follows_the_displays_toe(default_spec, tmp_path, method):
+    """An extended-range display (Display P3 HDR: sRGB's curve, code 1 at 100 cd/m², peak 1000)
+    in the display layout: the pre-shaper is the display's own curve of its light, so the
+    shaper table is linear and dark greys are exact (they were 15 codes off at 0.5 cd/m²)."""
+    req = _request(default_spec, "clf", method=method, size=33, source="ACEScg", display="Display P3 HDR - Display")
+    apply = probes.ocio_apply(_transform(_write(tmp_path, req)))
+    greys = np.repeat(np.geomspace(1e-4, 10.0, 200)[:, None], 3, axis=1)  # scene-linear ACEScg greys
+    expected = reference.mapped_view(default_spec, req.display, method,
+                                     reference.to_reference(default_spec, req.source, greys))
+    error = probes.errors(req.display, apply(greys), expected)[0]
+    assert error.max() <= tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP
+
+
+@pytest.mark.parametrize("method", ("desaturate", "rgc", "perceptual"))
+def test_every_size_from_the_smallest_bakes(default_spec, method):
+    """A display-layout CLF of every size its request accepts (size 5 had rounded both its
+    negative and over-range shares up and left the cube no interval)."""
+    display = next(d for d in default_spec.displays if d.name == "sRGB - Display")
+    smallest = bake._smallest_size(default_spec, display, default_spec.space("ACEScg"), method, "clf", "auto")
+    for size in range(smallest, 12):
+        lat = bake.build_lattice(_request(default_spec, "clf", method=method, size=size, source="ACEScg"))
+        assert lat.size == size
+
+
+def test_a_named_shaper_spaces_the_nodes_over_its_own_codes(default_spec):
+    """--shaper ACEScct from ACEScg: the domain is the light ACEScct codes 0 to 1 hold (as
+    ociobakelut's shaper space), so the table is ACEScct's code; the source's [-1, 16] range
+    had put nine tenths of the nodes below 0 and mid grey 24 codes off."""
+    acescct = default_spec.space("ACEScct")
+    lat = bake.build_lattice(_request(default_spec, "resolve_cube", size=33, source="ACEScg", shaper="ACEScct"))
+    np.testing.assert_allclose(lat.domain, acescct.curve.decode(np.array([0.0, 1.0])), rtol=1e-12)
+    linear = np.linspace(*lat.domain, lat.shaper.size)
+    np.testing.assert_allclose(lat.shaper, acescct.curve.encode(linear), rtol=0, atol=10.0 ** -lattice.SHAPER_DECIMALS)
+
+
+def test_a_log_without_a_break_decodes_exactly_in_a_clf(tmp_path):
+    """A custom pure log (log_camera without lin_side_break) is CLF's plain Log operator."""
+    from generator.spec import load
+
+    spec = load.parse('[[custom_space]]\nname = "My Log"\ngamut = "Rec.2020"\ntransfer = { family = "log_camera", '
+                      'base = 10, log_side_slope = 0.25, log_side_offset = 0.6, lin_side_slope = 1, '
+                      'lin_side_offset = 0.01 }\n', "show.toml", tmp_path)
+    req = _request(spec, "clf", method="scale", size=17, source="My Log")
+    paths = _write(tmp_path, req)
+    assert 'style="logToLin"' in paths[0].read_text()
+    figures = probes.measure(spec, req.source, req.display, "scale", probes.ocio_apply(_transform(paths)))
+    assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_SCALE_CODES
+
+
+def test_a_clf_says_what_its_lattice_covers_and_where_its_codes_end(default_spec):
+    req = _request(default_spec, "clf", method="desaturate", size=17, source="ARRI LogC4",
+                   display="Display P3 HDR - Display")
+    text = bake.bake(req)[""].decode()
+    assert "sampled over" not in text and "times the display's peak per channel" in text
+    assert "code values (full range, 0 to 2.69872)" in text

@@ -47,6 +47,8 @@ BAD = {
     "data shaper": ["--from", "ACEScg", "--to", "sRGB - Display", "--shaper", "Raw"],
     "iridas from linear": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube"],
     "no shaper from linear": ["--from", "Linear Rec.2020", "--to", "Rec.2100-PQ - Display", "--shaper", "none"],
+    "linear shaper": ["--from", "ACEScct", "--to", "sRGB - Display", "--shaper", "ACEScg"],
+    "suffix of another format": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "spi3d"],
 }
 
 
@@ -129,3 +131,20 @@ def test_an_unwritable_output_is_one_line_and_exit_2(tmp_path, run):
     code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out), "--force"])
     assert code == 2 and err == f"error: {out}: cannot write: Is a directory\n", err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.cube"] and (out / "keep").is_dir()
+
+
+def test_a_spi3d_named_like_its_shaper_is_refused(tmp_path, run):
+    """The shaper goes beside the .spi3d with the suffix .spi1d: an output named .spi1d would be
+    overwritten by it, and the lattice lost."""
+    code, err = run(["--from", "ACEScct", "--to", "sRGB - Display", "--format", "spi3d", "-o", str(tmp_path / "a.spi1d")])
+    assert code == 2 and "allowed: a name ending in .spi3d" in err and list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("source, shaper", [("ACEScct", "NONE"), ("ACEScg", "Auto"), ("ACEScg", "arri_logc4"),
+                                            ("ACEScg", "V-Log V-Gamut")])
+def test_shaper_words_in_any_case_and_any_library_space(tmp_path, source, shaper):
+    out = tmp_path / "a.cube"
+    result = CliRunner().invoke(command, ["--from", source, "--to", "sRGB - Display", "--size", "9", "--shaper", shaper,
+                                          "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.exists()
