@@ -32,7 +32,7 @@ Method (this project's design, documented here):
 3. Along the line the display boundary chroma ``C_d`` is found by bisection
    (:data:`BISECTION_STEPS` fixed steps, "display RGB within [0, 1]"). The
    bracket is anchored at the colour: from its chroma to
-   :data:`CHROMA_BRACKET` if it is in the cube, else from the grey to its
+   :func:`chroma_bracket` if it is in the cube, else from the grey to its
    chroma. Where a line leaves and re-enters the cube (near blue primaries,
    where the hue plane is not star-shaped from the grey) a colour of the
    cube is thus never judged outside, nor one outside judged inside. The
@@ -47,7 +47,12 @@ Method (this project's design, documented here):
    For colours outside the cube of such a display, a point whose negative
    channels are within :data:`FOLD_SLACK` of its largest is counted inside,
    and the final clip removes the excursion (hue and line kept within 0.003
-   radian and 0.003 there, measured).
+   there on BT.709, 0.0075 radian on BT.2020, measured). The slack does not
+   remove every turn of such a line: beyond the cube near blue (a channel
+   negative, blue above 1), a colour whose line grazes the cube can still jump
+   between the line's two crossings, by up to 0.14 of blue for a change of 1e-5
+   (measured on BT.709; the P3 displays, whose hue does not fold, have steep
+   but continuous bends there instead).
 4. With ``x = C / C_d``, threshold ``t`` and limit ``l``, the new ratio is
    ``x`` for ``x <= t``, ``t + (1 - t)(1 - (1 - u)^k)`` with
    ``u = (x - t) / (l - t)`` and ``k = (l - t) / (1 - t)`` for ``t < x < l``,
@@ -94,7 +99,8 @@ from generator.gamut.display import DisplayGamut, matrix_tuple, sanitize
 #: Bisection steps for a boundary chroma; the bracket shrinks to 2^-40 of its width.
 BISECTION_STEPS = 40
 
-#: Upper end of the chroma bracket; every gamut met has C < 0.5 (AP1 green: 0.49).
+#: Upper end of the chroma bracket; every library display and source has C < 0.5 (AP1
+#: green: 0.49). A wider gamut's is twice its largest chroma (:func:`chroma_bracket`).
 CHROMA_BRACKET = 1.0
 
 #: Samples per edge of the cube's hue hexagon (red, yellow, green, cyan, blue, magenta)
@@ -193,14 +199,21 @@ def oklab_to_display(lab: np.ndarray, display: DisplayGamut) -> np.ndarray:
 def cusp_table(display: DisplayGamut) -> tuple[np.ndarray, np.ndarray]:
     """Hue (radians in [0, 2 pi)) and lightness of the display's cusps, increasing in hue.
 
-    Sampled along the hexagon of cube edges; where Oklab hue turns back along
-    it (near a blue primary) the samples are skipped until the hue passes its
-    previous maximum, so the table is a function of hue. Read-only arrays.
+    Sampled along the hexagon of cube edges, in the direction of increasing hue
+    (red, yellow, green, ... for primaries listed counter-clockwise in xy, red,
+    magenta, blue, ... for clockwise ones); where Oklab hue turns back along it
+    (near a blue primary) the samples are skipped until the hue passes its previous
+    maximum, so the table is a function of hue. Read-only arrays.
     """
     s = np.linspace(0.0, 1.0, CUSP_SAMPLES, endpoint=False)[:, None]
-    rgb = np.concatenate([_HEXAGON[i] + s * (_HEXAGON[i + 1] - _HEXAGON[i]) for i in range(6)])
-    lab = display_to_oklab(rgb, display)
-    hue = np.unwrap(np.arctan2(lab[:, 2], lab[:, 1]))
+    hexagon = _HEXAGON
+    for _ in range(2):
+        rgb = np.concatenate([hexagon[i] + s * (hexagon[i + 1] - hexagon[i]) for i in range(6)])
+        lab = display_to_oklab(rgb, display)
+        hue = np.unwrap(np.arctan2(lab[:, 2], lab[:, 1]))
+        if hue[-1] > hue[0]:
+            break
+        hexagon = hexagon[::-1]  # primaries listed clockwise in xy: hue grows from red through magenta
     keep = np.concatenate([[True], hue[1:] > np.maximum.accumulate(hue)[:-1]])
     table = np.mod(hue[keep], 2.0 * np.pi), lab[keep, 0]
     for array in table:
@@ -210,7 +223,7 @@ def cusp_table(display: DisplayGamut) -> tuple[np.ndarray, np.ndarray]:
 
 def hue_folds(display: DisplayGamut) -> bool:
     """Whether Oklab hue turns back somewhere along the display cube's hue hexagon (near
-    BT.709's blue primary; not for P3 or BT.2020): only then does a colour's line leave
+    BT.709's and BT.2020's blue primaries; not for P3): only then does a colour's line leave
     and re-enter the cube, and only then is :data:`FOLD_SLACK` used."""
     return bool(cusp_table(display)[0].size < 6 * CUSP_SAMPLES)
 
@@ -260,7 +273,8 @@ def boundary_chroma(axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, insid
     p = axis[..., None] * to_lms[:, 0]
     q = slope[..., None] * to_lms[:, 0] + hue_cos[..., None] * to_lms[:, 1] + hue_sin[..., None] * to_lms[:, 2]
     inside_low = np.zeros(np.shape(axis)) if inside is None else np.array(inside, dtype=np.float64)
-    outside_high = np.full(np.shape(axis), CHROMA_BRACKET) if outside is None else np.array(outside, dtype=np.float64)
+    outside_high = (np.full(np.shape(axis), chroma_bracket(rgb_to_xyz)) if outside is None
+                    else np.array(outside, dtype=np.float64))
     for _ in range(BISECTION_STEPS):
         middle = 0.5 * (inside_low + outside_high)
         rgb = (p + middle[..., None] * q) ** 3 @ to_rgb.T
@@ -296,12 +310,22 @@ def compress_ratio(ratio: np.ndarray, threshold: float, limit) -> np.ndarray:
     return np.where(ratio <= threshold, ratio, compressed)
 
 
-def _anchored(chroma, inside) -> tuple[np.ndarray | None, np.ndarray | None]:
+def _anchored(chroma, inside, bracket: float) -> tuple[np.ndarray | None, np.ndarray | None]:
     """Bisection bracket agreeing with the colours' own membership: from their chroma outwards
     for colours inside, from the grey to their chroma for the others."""
     if inside is None:
         return None, None
-    return np.where(inside, chroma, 0.0), np.where(inside, CHROMA_BRACKET, np.minimum(chroma, CHROMA_BRACKET))
+    return np.where(inside, chroma, 0.0), np.where(inside, bracket, np.minimum(chroma, bracket))
+
+
+def chroma_bracket(rgb_to_xyz: np.ndarray) -> float:
+    """Upper end of the bisection bracket for the gamut of ``rgb_to_xyz`` (RGB to adapted XYZ):
+    :data:`CHROMA_BRACKET`, or twice the gamut's largest Oklab chroma, which lies on its cube's
+    hexagon of edges (ProPhoto RGB's blue reaches 1.41)."""
+    s = np.linspace(0.0, 1.0, 64, endpoint=False)[:, None]
+    rgb = np.concatenate([_HEXAGON[i] + s * (_HEXAGON[i + 1] - _HEXAGON[i]) for i in range(6)])
+    lab = _colour().XYZ_to_Oklab(rgb @ np.asarray(rgb_to_xyz).T)
+    return float(max(CHROMA_BRACKET, 2.0 * np.hypot(lab[:, 1], lab[:, 2]).max()))
 
 
 def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: DisplayGamut,
@@ -336,7 +360,8 @@ def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: Display
     in_display = None if rgb is None else np.all((rgb >= 0.0) & (rgb <= 1.0), axis=-1)
     fold = FOLD_SLACK if hue_folds(display) else 0.0
     slack = 0.0 if rgb is None else np.where(in_display, 0.0, fold)[..., None]
-    display_chroma = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix, *_anchored(chroma, in_display), slack)
+    display_chroma = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix,
+                                     *_anchored(chroma, in_display, chroma_bracket(matrix)), slack)
     found = display_chroma > 0.0
     if params.source_to_display is None:
         limit = params.limit
@@ -346,7 +371,9 @@ def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: Display
         if rgb is not None:
             source_rgb = rgb @ np.linalg.inv(to_display).T
             in_source = np.all((source_rgb > _INSIDE_SLACK) & (source_rgb < 1.0 - _INSIDE_SLACK), axis=-1)
-        source = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix @ to_display, *_anchored(chroma, in_source))
+        source_matrix = matrix @ to_display
+        source = boundary_chroma(axis, slope, hue_cos, hue_sin, source_matrix,
+                                 *_anchored(chroma, in_source, chroma_bracket(source_matrix)))
         limit = np.where(found, np.maximum(source / np.where(found, display_chroma, 1.0), 1.0), 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = np.where(chroma > 0.0, chroma / display_chroma, 0.0)

@@ -275,3 +275,31 @@ def test_with_a_source_gamut_any_input_maps_into_the_cube(rgb, threshold):
     params = PerceptualParams(threshold=threshold, source_to_display=cases.source_to_display("ACEScg", "P3-D65"))
     out = perceptual(rgb, cases.display("P3-D65"), params)
     assert np.all(np.isfinite(out)) and np.all((out >= 0.0) & (out <= 1.0))
+
+
+def test_primaries_listed_clockwise_map_as_the_same_display():
+    """The same Rec.709 display with its green and blue primaries listed in the other order
+    (clockwise in xy, which the spec accepts): its cusp table runs red, magenta, blue, ...,
+    and every colour maps as through the usual order (it was up to 720 ten-bit codes off)."""
+    from generator.gamut import DisplayGamut
+
+    rec709 = colour.RGB_COLOURSPACES["ITU-R BT.709"]
+    swap = [0, 2, 1]
+    usual = DisplayGamut(rec709.matrix_RGB_to_XYZ, tuple(rec709.whitepoint))
+    clockwise = DisplayGamut(rec709.matrix_RGB_to_XYZ[:, swap], tuple(rec709.whitepoint))
+    rgb = np.random.default_rng(3).uniform(-0.3, 1.4, (4096, 3))
+    for params in (SOFT, EXACT):
+        expected = perceptual(rgb, usual, params)
+        np.testing.assert_allclose(perceptual(rgb[:, swap], clockwise, params)[:, swap], expected, rtol=0,
+                                   atol=GAMUT_BOUNDARY_ABSOLUTE)
+
+
+def test_a_gamut_wider_than_the_library_s_is_bracketed():
+    """ProPhoto RGB's blue has Oklab chroma 1.41, beyond the library's bracket: threshold 1
+    still leaves its whole cube untouched (its blue primary had moved to (0.03, 0.06, 0.72))."""
+    from generator.gamut import DisplayGamut
+
+    prophoto = colour.RGB_COLOURSPACES["ProPhoto RGB"]
+    display = DisplayGamut(prophoto.matrix_RGB_to_XYZ, tuple(prophoto.whitepoint))
+    rgb = np.concatenate([np.eye(3), np.random.default_rng(4).random((4096, 3))])
+    np.testing.assert_array_equal(perceptual(rgb, display, EXACT), rgb)
