@@ -6,6 +6,7 @@ colour-space name suggests close matches. Nothing in a spec is executed.
 
 from __future__ import annotations
 
+import re
 import tomllib
 from importlib import resources
 from functools import lru_cache
@@ -238,10 +239,11 @@ def _name(table: dict, source: str, field: str) -> str:
 def parse_version(value, source: str) -> tuple[int, int]:
     """The spec's config version; the oldest supported one is accepted without asking the
     installed PyOpenColorIO (every supported release writes it), which spares its import."""
-    try:
-        major, minor = (int(part) for part in str(value).split("."))
-    except ValueError:
-        raise SpecError(source, "ocio_version", f"expected a version like \"2.1\"; allowed: {_allowed()}") from None
+    written = re.fullmatch(r"([0-9])\.(0|[1-9][0-9]?)", str(value))
+    if written is None or isinstance(value, bool):
+        raise SpecError(source, "ocio_version", f"expected a version like \"2.1\", got {value!r}; "
+                        f"allowed: {_allowed()}")
+    major, minor = int(written[1]), int(written[2])
     if (major, minor) != OCIO_MIN_VERSION and not OCIO_MIN_VERSION <= (major, minor) <= newest_ocio_version():
         raise SpecError(source, "ocio_version", f"{value} is not supported; allowed: {_allowed()}")
     return (major, minor)

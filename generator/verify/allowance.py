@@ -242,13 +242,32 @@ def builtin_encoding_allowance(spec: Spec, display: Display, expected: np.ndarra
                   axis=0)
 
 
+def scene_encoding_allowance(spec: Spec, space, expected: np.ndarray) -> np.ndarray | None:
+    """As :func:`builtin_encoding_allowance` for a scene space the ST-2084 builtin encodes (its
+    codes clamped to the signal range, 0 to 10000 cd/m²): OCIO 2.1 to 2.3 read the config with
+    a 4096-code table, 1.2e-4 relative off near black."""
+    from generator.colorimetry.curves import PQ_PEAK
+    from generator.ocio.capabilities import PQ_BUILTIN, curve_chain, pq_builtin_tables
+    from generator.ocio.curves import curve_label
+
+    chain = curve_chain(curve_label(spec, space.name, space.curve_name), spec.ocio_version) or ()
+    if PQ_BUILTIN not in {style for style, _ in chain}:
+        return None
+    with np.errstate(all="ignore"):
+        light = np.clip(space.curve.decode(expected), 0.0, PQ_PEAK)
+    return np.max([pq_table_departure(space.curve, size, light) for size in pq_builtin_tables(spec.ocio_version)],
+                  axis=0)
+
+
 def with_encoding(allowance: np.ndarray | None, spec: Spec, display: Display | None,
-                  expected: np.ndarray | None) -> np.ndarray | None:
+                  expected: np.ndarray | None, space=None) -> np.ndarray | None:
     """``allowance`` plus :func:`builtin_encoding_allowance` for a check whose output is
-    ``display``'s codes ``expected`` (unchanged otherwise)."""
-    if display is None or expected is None:
+    ``display``'s codes ``expected``, or :func:`scene_encoding_allowance` for one whose output
+    is scene ``space``'s codes (unchanged otherwise)."""
+    if expected is None or (display is None and space is None):
         return allowance
-    encoding = builtin_encoding_allowance(spec, display, expected)
+    encoding = (builtin_encoding_allowance(spec, display, expected) if display is not None
+                else scene_encoding_allowance(spec, space, expected))
     if encoding is None:
         return allowance
     return encoding if allowance is None else allowance + encoding

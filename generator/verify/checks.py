@@ -213,7 +213,7 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
                                             end.encode)
             else:
                 allowance = float32_allowance(ref, end.matrix, end.encode, inputs.values)
-            allowance = with_encoding(allowance, spec, end.display, expected)
+            allowance = with_encoding(allowance, spec, end.display, expected, _scene_space(spec, end))
         keep = _keep(None, end, end.display, inputs.values, expected)
         if end.valid is not None and keep is not None:
             keep &= determinate(ref, end, inputs.values)
@@ -221,6 +221,16 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
                          output=end.output, problem=problem, allowance=allowance, keep=keep,
                          **_judging(end, end.display, None, end.view)))
     return out
+
+
+def _scene_space(spec: Spec, end: paths.Endpoint):
+    """The spec's scene colour space ``end`` is, or None (displays, display-view spaces, the XYZ reference)."""
+    if end.display is not None or end.view:
+        return None
+    try:
+        return spec.space(end.name)
+    except KeyError:
+        return None
 
 
 def _endpoint(spec: Spec, ends: dict, name: str | None) -> paths.Endpoint | None:

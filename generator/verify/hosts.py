@@ -158,6 +158,11 @@ class OcioconvertEngine:
         targets = [workdir / f"ocioconvert-{i:04d}-out.exr" for i in range(len(checks))]
         env = {**os.environ, "OCIO": str(config)}
         commands = [self._command(c, s, t, config) for c, s, t in zip(checks, inputs, targets)]
+        first = next((i for i, c in enumerate(checks) if c.kind != LUT), None)
+        if first is not None:  # one process tells whether this OCIO reads the config at all
+            probe = run_host(commands[first], env)
+            if TOO_NEW in probe.stdout + probe.stderr:
+                raise NotRunnable(_message(probe))
         with ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
             results = list(pool.map(lambda command: run_host(command, env), commands))
         loading = [r for c, r in zip(checks, results) if c.kind != LUT]  # --lut reads no config

@@ -75,7 +75,8 @@ def summary(verification: Verification) -> str:
                          f"{o.check.tolerance:g}{where}{'; ' + o.note if o.note else ''}")
     verdict = "passed" if verification.passed else "FAILED"
     missing = [e.name for e in verification.engines if e.skipped]
-    lines.append(f"verify {verdict}: {len(verification.failures)} failing, "
+    nothing = "" if verification.compared else "nothing compared (no engine ran a check), "
+    lines.append(f"verify {verdict}: {nothing}{len(verification.failures)} failing, "
                  f"{sum(o.verdict == APPROX for o in verification.outcomes)} explained by OCIO's default flags"
                  + (f", not run: {', '.join(missing)}" if missing else ""))
     return "\n".join(lines)

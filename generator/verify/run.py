@@ -50,8 +50,14 @@ class Verification:
         return [o for o in self.outcomes if o.verdict == FAIL]
 
     @property
+    def compared(self) -> bool:
+        """Whether any engine produced anything to judge (a run where every engine was
+        skipped, or no check was left, proves nothing)."""
+        return any(o.verdict != NOT_RUN for o in self.outcomes)
+
+    @property
     def passed(self) -> bool:
-        return not self.failures and not (ON_CI and any(e.skipped for e in self.engines))
+        return self.compared and not self.failures and not (ON_CI and any(e.skipped for e in self.engines))
 
 
 def engine_registry() -> dict:

@@ -125,3 +125,31 @@ def test_a_host_verified_alone_has_its_default_flag_departures_explained(build_c
     assert {o.engine for o in result.outcomes} <= {"oiiotool (EXR float)", "oiiotool (TIFF uint16)"}
     assert any(o.verdict == APPROX and "in-process default flags" in o.note for o in result.outcomes)
     assert result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
+
+
+def test_ocio_21s_tabulated_pq_is_carried_for_a_scene_encoding(tmp_path):
+    """A scene space encoded with ST 2084 goes through OCIO's PQ builtin too: OCIO 2.1's
+    4096-code table put a near-black code 1.24e-4 relative off, over the 1e-4 tolerance (the
+    allowance covered display encodings only)."""
+    result = _verified_on(
+        tmp_path, "ocioconvert",
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = "PQ Scene"\ngamut = "Rec.2020"\ntransfer = "ST 2084"\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n', only="PQ Scene")
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.worst_input) for o in result.failures]
+
+
+def test_a_host_that_cannot_read_the_config_is_found_at_once_and_proves_nothing(build_config):
+    """OCIO 2.1's ocioconvert cannot read a 2.6 config: one process finds that out (it had
+    started one per check, minutes of them), and a run in which no engine compared anything
+    does not pass."""
+    from generator.verify.judge import NOT_RUN
+    from generator.verify.report import summary
+    from tests.conftest import require_program
+
+    require_program("ocioconvert")
+    result = verify(build_config((2, 6)), ("ocioconvert",), density="quick")
+    assert [run.name for run in result.engines if run.skipped] == ["ocioconvert"]
+    assert {o.verdict for o in result.outcomes} == {NOT_RUN}
+    assert not result.compared and not result.passed
+    assert "nothing compared" in summary(result).splitlines()[-1]
