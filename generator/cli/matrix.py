@@ -69,12 +69,18 @@ def command(src, dst, cat, fmt):
     from generator.spec.load import library_space
     from generator.spec.schema import SpecError
 
-    if cat is not None and cat not in CATS:
-        raise SpecError("--cat", cat, f"unknown chromatic adaptation; allowed: {', '.join(CATS)}")
+    if cat is not None:
+        chosen = next((c for c in CATS if c.lower() == cat.strip().lower()), None)
+        if chosen is None:
+            raise SpecError("ocioforge matrix", "--cat", f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
+        cat = chosen
     spaces = [library_space(name, "ocioforge matrix", which) for name, which in ((src, "SRC"), (dst, "DST"))]
     for space, which in zip(spaces, ("SRC", "DST")):
         if space.gamut is None:
             raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
-    matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat) if cat else published_matrix(*(s.gamut for s in spaces))
+    if spaces[0].gamut == spaces[1].gamut:  # one gamut: exactly the identity, not a product with its inverse
+        matrix = np.eye(3)
+    else:
+        matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat) if cat else published_matrix(*(s.gamut for s in spaces))
     label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
     click.echo(render(matrix, fmt, label))

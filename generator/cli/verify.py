@@ -25,7 +25,9 @@ def command(config, engines, report_dir, quick, only, summary_only):
     from generator.verify import report
     from generator.verify.run import verify
 
-    names = tuple(e.strip() for e in engines.split(",") if e.strip())
+    names = tuple(dict.fromkeys(e.strip() for e in engines.split(",") if e.strip()))  # each engine once
+    if not names:
+        fail(f"--engines names none; allowed: a comma-separated list of {ENGINES}")
     try:
         result = verify(config, names, density="quick" if quick else "full", only=only)
     except SpecError as error:

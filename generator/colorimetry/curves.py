@@ -182,6 +182,8 @@ def _curves() -> dict[str, TransferFunction]:
         "Rec.709": PiecewisePower(1.0 / 0.45, 0.099),
         "Gamma 1.8": Power(1.8),
         "Gamma 2.2": Power(2.2),
+        # Adobe RGB (1998) Color Image Encoding, 2005, section 4.3.1.2: 2 51/256, as the ACES studio config (v5).
+        "Adobe RGB (1998)": Power(563.0 / 256.0),
         "Gamma 2.4": Power(2.4),
         "Gamma 2.6": Power(2.6),
         "ACEScct": acescct(),

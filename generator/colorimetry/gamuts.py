@@ -70,13 +70,16 @@ COLOUR_KEYS = {
 #: The chromatic adaptation behind each camera gamut's published matrices to ACES2065-1,
 #: as OCIO's builtin camera transforms (the ACES studio config's spaces) carry them: ARRI's,
 #: Canon's and Sony's (their ACES input transforms) reproduce with CAT02, Panasonic's and
-#: RED's with Bradford (each within 3e-6 of the builtin's matrix, which the tests hold).
-#: A space of one of these gamuts is adapted so, whatever the spec's chromatic_adaptation,
-#: so that its name means the same numbers as in that config.
+#: RED's with Bradford (each within 3e-6 of the builtin's matrix, which the tests hold);
+#: the studio config (v5.0.0) adapts Blackmagic's, DaVinci's and DJI's gamuts with CAT02
+#: too (within 1e-7 of its matrices; Bradford was 5e-3 off). A space of one of these gamuts
+#: is adapted so, whatever the spec's chromatic_adaptation, so that its name means the same
+#: numbers as in that config.
 PUBLISHED_ADAPTATION = {
     "ARRI Wide Gamut 3": "CAT02", "ARRI Wide Gamut 4": "CAT02", "Cinema Gamut": "CAT02",
     "S-Gamut3": "CAT02", "S-Gamut3.Cine": "CAT02", "Venice S-Gamut3": "CAT02", "Venice S-Gamut3.Cine": "CAT02",
     "V-Gamut": "Bradford", "REDWideGamutRGB": "Bradford",
+    "Blackmagic Wide Gamut": "CAT02", "DaVinci Wide Gamut": "CAT02", "D-Gamut": "CAT02",
 }
 
 

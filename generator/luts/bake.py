@@ -153,6 +153,11 @@ def _shaper_space(spec: Spec, name: str) -> ColourSpace:
     if isinstance(space.curve, Linear):
         raise SpecError(WHERE, "--shaper", f"{space.name!r} is linear, which would space the nodes uniformly in light "
                         "(black off by hundreds of ten-bit codes); allowed: auto, or a space with a log or video curve")
+    with np.errstate(all="ignore"):
+        ends = space.curve.decode(np.array([0.0, 1.0]))
+    if not (np.all(np.isfinite(ends)) and ends[0] < ends[1]):
+        raise SpecError(WHERE, "--shaper", f"{space.name!r}'s codes 0 to 1 hold no range of light to space nodes "
+                        "over; allowed: auto, or a space whose curve rises over codes 0 to 1")
     return space
 
 

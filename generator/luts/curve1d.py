@@ -20,6 +20,10 @@ from generator.verify.metrics import relative_error
 MIN_SIZE = 1024
 MAX_SIZE = 1 << 17
 
+#: How evenly a table's rows must be spaced, relative to their step, to be baked on its rows
+#: (codes written to nine decimals, as a 10-bit table's i/1023 are, vary by 1e-9).
+ROW_SPACING_RELATIVE = 1e-5
+
 
 #: Shaper exponents tried in turn: the LUT is indexed by u = t ** (1 / k), t the code
 #: normalised to [0, 1] over the domain. k = 2 unfolds a square-root singularity at the
@@ -94,12 +98,35 @@ def _smallest(curve, jumps) -> tuple[int, float]:
     return size, error
 
 
+def _row_intervals(curve, domain: tuple[float, float]) -> int:
+    """For a tabulated curve whose rows are evenly spaced in code over ``domain``, the number
+    of LUT intervals putting an entry on every row (a multiple of the table's, at least
+    MIN_SIZE, at most MAX_SIZE); 0 otherwise. Linear interpolation between such entries is
+    the table's own, so a steep row (a clip flag on the top code) costs nothing."""
+    from generator.colorimetry.transfer import Tabulated
+
+    if not isinstance(curve, Tabulated) or (curve.code[0], curve.code[-1]) != tuple(domain):
+        return 0
+    code = np.asarray(curve.code)
+    intervals = code.size - 1
+    step = (code[-1] - code[0]) / intervals
+    if not np.allclose(np.diff(code), step, rtol=0.0, atol=ROW_SPACING_RELATIVE * step):
+        return 0
+    multiple = max(1, int(2 ** np.ceil(np.log2(MIN_SIZE / intervals)))) if intervals < MIN_SIZE else 1
+    return intervals * multiple if intervals * multiple <= MAX_SIZE else 0
+
+
 def bake_curve(name: str, curve, domain) -> BakedCurve:
     """Bake ``curve.decode`` over ``domain`` (code values) into the smallest LUT whose
     decoding and inverse both stay within bound, over the shapers of SHAPER_EXPONENTS."""
     lo, hi = (float(v) for v in domain)
     jumps = tuple((j - lo) / (hi - lo) for j in getattr(curve, "discontinuities", ()))
     candidates = []
+    rows = _row_intervals(curve, (lo, hi))
+    if rows:  # a table with evenly spaced rows: entries on every row reproduce it exactly
+        shaped = _Shaped(curve, (lo, hi), 1.0)
+        error = max(_lut_errors(shaped, (0.0, 1.0), rows + 1, jumps))
+        candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, rows, error, -1, shaped))
     for k in SHAPER_EXPONENTS:
         shaped = _Shaped(curve, (lo, hi), k)
         size, error = _smallest(shaped, tuple(j ** (1.0 / k) for j in jumps))

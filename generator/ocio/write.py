@@ -9,8 +9,9 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from generator import tolerances
 from generator.files import staged_folder
-from generator.luts.curve1d import curve_file
+from generator.luts.curve1d import MAX_SIZE, curve_file
 from generator.ocio.emit import LUT_FOLDER, emit
 from generator.spec import resolved
 from generator.spec.schema import Spec, SpecError
@@ -28,6 +29,17 @@ class BuildResult:
     worst_lut_error: float
 
 
+def _check_baked(spec: Spec, luts: dict) -> None:
+    """A curve no 1D LUT holds within BAKED_CURVE_RELATIVE (a table stepping between unevenly
+    spaced rows) is refused, naming its file, rather than written off its bound."""
+    for name, lut in luts.items():
+        if lut.max_relative_error > tolerances.BAKED_CURVE_RELATIVE:
+            raise SpecError(spec.source, "transfer", f"the curve baked as {LUT_FOLDER}/{name} departs "
+                            f"{lut.max_relative_error:.2g} relative from its table at the most entries a 1D LUT "
+                            f"takes here ({MAX_SIZE + 1}): a step or kink between rows; allowed: a table whose rows "
+                            "are evenly spaced in code (baked on its rows, exactly) or a smoother one")
+
+
 def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None) -> Spec:
     """The spec as built into ``out_dir``: the config's name is the folder's name."""
     return replace(spec, name=out_dir.name, ocio_version=version or spec.ocio_version)
@@ -35,6 +47,7 @@ def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None
 
 def write_files(spec: Spec, folder: Path) -> BuildResult:
     emitted = emit(spec)
+    _check_baked(spec, emitted.luts)
     (folder / CONFIG_FILENAME).write_text(emitted.config.serialize(), encoding="utf-8")
     if emitted.luts or emitted.view_luts:
         (folder / LUT_FOLDER).mkdir()

@@ -96,16 +96,22 @@ def resolve_path(value, base: Path, source: str, field: str) -> Path:
     if not isinstance(value, str) or not value:
         raise SpecError(source, field, f"expected a file path, got {value!r}")
     path = (base / value).resolve() if not Path(value).is_absolute() else Path(value)
+    if path.is_dir():
+        raise SpecError(source, field, f"{value!r} is a folder; allowed: a file's path")
     if not path.is_file():
         raise SpecError(source, field, f"file {value!r} does not exist")
     return path
 
 
 def _csv(reader, path: Path, source: str, field: str):
+    import csv
+
     try:
         return reader(path)
-    except (ValueError, OSError) as error:
-        raise SpecError(source, field, str(error)) from None
+    except UnicodeDecodeError:
+        raise SpecError(source, field, f"{path.name}: not UTF-8 text; allowed: a UTF-8 CSV") from None
+    except (ValueError, OSError, csv.Error) as error:
+        raise SpecError(source, field, f"{path.name}: {error}") from None
 
 
 def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float]:

@@ -112,7 +112,7 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
         return parse(default_text(), "<default>", Path.cwd(), keep)
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")  # a BOM some editors write is not TOML
     except OSError as error:
         raise SpecError(str(path), "-", f"cannot read the spec: {error.strerror}") from None
     return parse(text, str(path), path.parent, keep)
@@ -147,10 +147,12 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     every = {n.lower() for n in all_names}
     if reference.lower() not in every:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
-    encoding = next(s.encoding for s in (*listed, *customs) if reference.lower() in (n.lower() for n in (s.name, *s.aliases)))
-    if encoding != "scene-linear":
-        raise SpecError(source, "scene_reference", f"{reference!r} is {encoding}; allowed: a scene-linear colour space "
-                        "(ACES2065-1, ACEScg, Linear Rec.709 (sRGB), ...)")
+    chosen = next(s for s in (*listed, *customs) if reference.lower() in (n.lower() for n in (s.name, *s.aliases)))
+    linear = chosen.curve == "linear" if isinstance(chosen.curve, str) else type(chosen.curve).__name__ == "Linear"
+    if chosen.encoding != "scene-linear" or not linear:
+        what = chosen.encoding if chosen.encoding != "scene-linear" else "labelled scene-linear but has a transfer curve"
+        raise SpecError(source, "scene_reference", f"{reference!r} is {what}; allowed: a scene-linear colour space "
+                        "with a linear transfer (ACES2065-1, ACEScg, Linear Rec.709 (sRGB), ...)")
     if keep is not None:
         keep = (*keep, reference, *DEFAULT_ROLES.values(), *roles.values())
     spaces = (*_kept(listed, keep), *customs)
@@ -259,6 +261,10 @@ def library_def(name: str, source: str, field: str) -> library.SpaceDef:
     for space in library.SPACES:
         if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
             return space
+    display = next((d.name for d in library.DISPLAYS if name.lower() in (n.lower() for n in (d.name, *d.aliases))), None)
+    if display is not None:
+        raise SpecError(source, field, f"{display!r} is a display, not a scene colour space; allowed: a colour space "
+                        "of ocioforge list (displays are in ocioforge list --displays)")
     choices = [n for s in library.SPACES for n in (s.name, *s.aliases)]
     raise SpecError(source, field, f"unknown colour space {name!r}{fields.suggest(name, choices)}; see ocioforge list")
 
@@ -439,6 +445,21 @@ def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
     return tuple(sorted(roles.items()))
 
 
+def _check_glob(rule: FileRule, source: str, field: str) -> None:
+    """A rule's pattern and extension as OCIO reads them (globs: a '[' opens a set), checked by
+    OCIO itself when they hold one."""
+    if "[" not in rule.pattern + rule.extension and "]" not in rule.pattern + rule.extension:
+        return
+    import PyOpenColorIO as ocio
+
+    try:
+        ocio.FileRules().insertRule(0, "check", "check", rule.pattern, rule.extension)
+    except Exception as error:  # PyOpenColorIO.Exception
+        key = "pattern" if "[" in rule.pattern or "]" in rule.pattern else "extension"
+        raise SpecError(source, f"{field}.{key}", f"OpenColorIO cannot read it ({str(error).splitlines()[0]}); "
+                        "allowed: a glob of *, ? and complete [...] sets") from None
+
+
 def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]:
     """The file rules; each names a colour space, display or role of the config (``names``)."""
     if "file_rule" not in raw:  # the embedded default's, as for every key left out
@@ -451,6 +472,7 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
             if key not in table:
                 raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
         rule = FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()})
+        _check_glob(rule, source, field)
         if rule.name.lower() in (r.name.lower() for r in rules):
             raise SpecError(source, f"{field}.name", f"{rule.name!r} names an earlier rule too; allowed: one rule a name")
         if rule.name == "Default" and ({"pattern", "extension"} & set(table)):

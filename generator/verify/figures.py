@@ -36,7 +36,10 @@ def _pyplot():
 def png(figure, fmt: str = "png") -> bytes:
     """The figure as PNG (or ``fmt``: svg, pdf) bytes; the figure is closed."""
     buffer = io.BytesIO()
-    figure.savefig(buffer, format=fmt, dpi=110, bbox_inches="tight")
+    # No dates, and SVG element ids from a fixed salt: the same figure gives the same bytes.
+    metadata = {"png": {}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}.get(fmt, {})
+    with _pyplot().rc_context({"svg.hashsalt": "ocioforge"}):
+        figure.savefig(buffer, format=fmt, dpi=110, bbox_inches="tight", metadata=metadata)
     _pyplot().close(figure)
     return buffer.getvalue()
 

@@ -124,6 +124,31 @@ def test_init_writes_the_default_spec_that_builds(tmp_path, capsys):
     assert run(capsys, "build", str(path), "-o", str(tmp_path / "cfg"))[0] == 0
 
 
+def test_init_replaces_only_a_regular_file(tmp_path, capsys):
+    """A pipe, a link (dangling or not) or a name too long is refused in one line, --force or
+    not (run as root, --force had turned /dev/null into a text file)."""
+    import os
+
+    os.mkfifo(tmp_path / "pipe")
+    (tmp_path / "link").symlink_to(tmp_path / "nowhere")
+    for name in ("pipe", "link"):
+        code, _, err = run(capsys, "init", str(tmp_path / name), "--force")
+        assert code == 2 and "is not a regular file" in err and err.count("\n") == 1
+    assert (tmp_path / "link").is_symlink() and not (tmp_path / "nowhere").exists()
+    code, _, err = run(capsys, "init", str(tmp_path / ("x" * 300 + ".toml")))
+    assert code == 2 and "cannot write" in err and err.count("\n") == 1
+
+
+def test_matrix_reads_cat_in_any_case_and_gives_one_gamut_the_identity(capsys):
+    _, lower, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--cat", "cat02", "--format", "json")
+    _, upper, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--cat", "CAT02", "--format", "json")
+    assert lower == upper
+    code, out, _ = run(capsys, "matrix", "srgb", "lin_srgb", "--format", "json")
+    assert code == 0 and json.loads(out)["matrix"] == np.eye(3).tolist()
+    code, _, err = run(capsys, "matrix", "rec2100_pq_display", "acescg")
+    assert code == 2 and "is a display, not a scene colour space" in err
+
+
 def test_matrix_formats_agree(capsys):
     from generator.colorimetry.gamuts import gamuts
     from generator.colorimetry.matrices import rgb_to_rgb

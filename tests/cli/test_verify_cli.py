@@ -50,6 +50,7 @@ def test_verify_fails_and_names_the_broken_lut(config):
     (["missing/config.ocio"], "no such config file"),
     (["{config}", "--engines", "ocio,nuke"], "unknown engine"),
     (["{config}", "--engines", "ocio", "--quick", "--only", "zzz"], "--only:zzz: matches no check title"),
+    (["{config}", "--engines", ","], "--engines names none"),
 ])
 def test_verify_bad_input_is_one_line_and_exit_2(config, args, message):
     result = CliRunner().invoke(verify, [a.format(config=config) for a in args])
@@ -67,6 +68,15 @@ def test_plot_draws_the_chromaticity_diagram(config, tmp_path):
     result = run(plot, config, "-o", tmp_path / "diagram.png")
     assert result.exit_code == 0, result.output
     assert (tmp_path / "diagram.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize("suffix", ("svg", "pdf"))
+def test_plot_gives_the_same_bytes_every_time(config, tmp_path, suffix):
+    """No date and no random element ids: the same config plots to the same file (SVG and PDF
+    held their creation date, SVG random clip-path ids)."""
+    for name in ("a", "b"):
+        assert run(plot, config, "-o", tmp_path / f"{name}.{suffix}").exit_code == 0
+    assert (tmp_path / f"a.{suffix}").read_bytes() == (tmp_path / f"b.{suffix}").read_bytes()
 
 
 def test_plot_refuses_an_unknown_format_and_writes_nothing(config, tmp_path):

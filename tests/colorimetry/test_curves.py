@@ -17,7 +17,7 @@ LOG_CAMERA = {
 FUNCTION = {
     "ACEScc", "Canon Log 2", "Canon Log 3", "Apple Log", "N-Log", "Samsung Log", "Mi-Log", "ST 2084", "HLG",
 }
-OTHER = {"linear", "sRGB", "sRGB extended", "Rec.709", "Gamma 1.8", "Gamma 2.2", "Gamma 2.4", "Gamma 2.6"}
+OTHER = {"linear", "sRGB", "sRGB extended", "Rec.709", "Gamma 1.8", "Gamma 2.2", "Adobe RGB (1998)", "Gamma 2.4", "Gamma 2.6"}
 
 
 def relative(actual, expected) -> np.ndarray:
@@ -193,3 +193,19 @@ def test_encode_against_ocio_display_builtin(name):
     linear = np.linspace(0.0, 1.0, 1025)
     actual = apply_builtin(ENCODE_BUILTINS[name], linear[:, None] * white[None, :])
     assert relative(actual, CURVES[name].encode(linear)[:, None]).max() <= tolerances.ANALYTIC_RELATIVE
+
+
+def test_adobe_rgb_decodes_as_the_studio_config(default_spec):
+    """Adobe RGB (1998) Color Image Encoding, 2005, 4.3.1.2: the exponent 2 51/256, as the ACES
+    studio config's Gamma 2.2 Encoded AdobeRGB (2.2 was 5.5e-4 relative off at mid grey)."""
+    import PyOpenColorIO as ocio
+
+    from generator.colorimetry import reference
+
+    assert CURVES["Adobe RGB (1998)"].exponent == 2.0 + 51.0 / 256.0
+    codes = np.random.default_rng(2).random((256, 3))
+    pixels = np.ascontiguousarray(codes, dtype=np.float32)
+    studio = ocio.Config.CreateFromFile("ocio://studio-config-latest")
+    studio.getProcessor("Gamma 2.2 Encoded AdobeRGB", "ACES2065-1").getDefaultCPUProcessor().applyRGB(pixels)
+    ours = reference.to_reference(default_spec, default_spec.space("Gamma 2.2 Encoded AdobeRGB"), codes)
+    assert np.abs(ours - pixels).max() <= tolerances.ANALYTIC_RELATIVE

@@ -39,7 +39,33 @@ BUILTINS = {
 }
 
 
-@pytest.mark.parametrize("name", sorted(PUBLISHED_ADAPTATION))
+#: Camera gamuts with no OCIO builtin, and the ACES studio config's linear space of each.
+STUDIO_SPACES = {"Blackmagic Wide Gamut": "Linear BMD WideGamut Gen5", "DaVinci Wide Gamut": "Linear DaVinci WideGamut",
+                 "D-Gamut": "Linear D-Gamut"}
+
+
+def test_every_published_adaptation_is_checked():
+    assert set(PUBLISHED_ADAPTATION) == set(BUILTINS) | set(STUDIO_SPACES)
+
+
+@pytest.mark.parametrize("name", sorted(STUDIO_SPACES))
+def test_published_adaptation_reproduces_the_studio_configs_matrix(name):
+    """Blackmagic's, DaVinci's and DJI's gamuts, which OCIO has no builtin for, as the ACES
+    studio config converts them (CAT02; Bradford, the spec's default, was 5e-3 off)."""
+    import PyOpenColorIO as ocio
+
+    from generator.colorimetry.matrices import rgb_to_rgb
+
+    config = ocio.Config.CreateFromFile("ocio://studio-config-latest")
+    pixels = np.ascontiguousarray(np.eye(3), dtype=np.float32)
+    config.getProcessor(STUDIO_SPACES[name], "ACES2065-1").getDefaultCPUProcessor().applyRGB(pixels)
+    studio = pixels.astype(np.float64).T
+    gamut, aces = gamuts()[name], gamuts()["AP0"]
+    assert np.abs(rgb_to_rgb(gamut, aces, gamut.adaptation) - studio).max() <= tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+    assert np.abs(rgb_to_rgb(gamut, aces, "Bradford") - studio).max() > 100 * tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+
+
+@pytest.mark.parametrize("name", sorted(BUILTINS))
 def test_published_adaptation_reproduces_the_builtin_camera_matrix(name):
     """The gamut's matrix to ACES2065-1, derived with its publisher's adaptation, is OCIO's
     builtin's (the vendor's published matrix, read back through the builtin on colours whose

@@ -48,6 +48,7 @@ BAD = {
     "iridas from linear": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube"],
     "no shaper from linear": ["--from", "Linear Rec.2020", "--to", "Rec.2100-PQ - Display", "--shaper", "none"],
     "linear shaper": ["--from", "ACEScct", "--to", "sRGB - Display", "--shaper", "ACEScg"],
+    "display shaper": ["--from", "ACEScct", "--to", "sRGB - Display", "--shaper", "Rec.1886 Rec.709 - Display"],
     "suffix of another format": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "spi3d"],
 }
 

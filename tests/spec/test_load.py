@@ -98,6 +98,8 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("chromatic_adaptation = ['Bradford']", "chromatic_adaptation", "allowed: Bradford"),
     ("scene_reference = 'Raw'", "scene_reference", "allowed: a scene-linear colour space"),
     ("scene_reference = 'ACEScct'", "scene_reference", "'ACEScct' is log"),
+    ("scene_reference = 'Cam'\n[[custom_space]]\nname = 'Cam'\ngamut = 'Rec.709'\nencoding = 'scene-linear'\n"
+     "transfer = { family = 'gamma', exponent = 2.2 }", "scene_reference", "labelled scene-linear but has a transfer"),
     ("[[custom_space]]\nname = '  '\ngamut = 'Rec.709'", "custom_space[0].name", "visible character"),
     ("[[custom_space]]\nname = 'x'\naliases = ['']\ngamut = 'Rec.709'", "custom_space[0].aliases[0]", "blank"),
     ("[[file_rule]]\nname = 'A'\ncolour_space = 'ACEScg'\nextension = 'exr'\n[[file_rule]]\nname = 'A'\n"
@@ -105,6 +107,8 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
      "names an earlier rule too"),
     ("[[file_rule]]\nname = 'Default'\ncolour_space = 'ACEScg'\nextension = 'exr'", "file_rule[0].extension",
      "the Default rule matches every file"),
+    ("[[file_rule]]\nname = 'A'\ncolour_space = 'ACEScg'\npattern = '[abc'\n[[file_rule]]\nname = 'Default'\n"
+     "colour_space = 'ACEScg'", "file_rule[0].pattern", "OpenColorIO cannot read it"),
     ("[[display]]\nname = 'HLG P3'\ngamut = 'P3-D65'\neotf = 'HLG'", "display[0].gamut", "BT.2020 primaries and D65"),
     ("[[display]]\nname = 'HLG'\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\nwhite = 'D65'\neotf = 'HLG'",
      "display[0].primaries", "allowed: gamut = \"Rec.2020\""),
@@ -261,3 +265,8 @@ def test_the_resolved_spec_records_the_spec_files_name_alone(tmp_path, monkeypat
     typed = resolved.dumps(load.load("show.toml"))
     assert resolved.dumps(load.load(tmp_path / "show.toml")) == typed
     assert str(tmp_path) not in typed and '"custom, show.toml"' in typed
+
+
+def test_a_spec_saved_with_a_byte_order_mark_loads(tmp_path):
+    (tmp_path / "show.toml").write_bytes(b"\xef\xbb\xbfname = 'bom'\n")
+    assert load.load(tmp_path / "show.toml").name == "bom"
