@@ -38,6 +38,10 @@ def _make_folder(folder: Path) -> None:
         raise NotADirectoryError(errno.ENOTDIR, os.strerror(errno.ENOTDIR), error.filename) from error
 
 
+#: Errors of writing that Python reports without a file name (a full disk on close).
+WRITE_ERRNOS = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EIO, errno.EROFS)
+
+
 def _inside(filename, folder: Path) -> bool:
     """Whether an OSError's ``filename`` (str, bytes or None) lies in ``folder``."""
     return filename is not None and Path(os.fsdecode(filename)).is_relative_to(folder)
@@ -56,7 +60,7 @@ def staged_folder(folder: Path) -> Iterator[Path]:
         try:
             yield staging
         except OSError as error:
-            if _inside(error.filename, staging):
+            if _inside(error.filename, staging) or (error.filename is None and error.errno in WRITE_ERRNOS):
                 raise CannotWrite(folder, error) from error
             raise
         with _writing(folder):

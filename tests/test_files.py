@@ -50,3 +50,12 @@ def test_an_error_filling_the_staged_folder_names_the_folder_and_removes_it(tmp_
         with staged_folder(tmp_path / "show"):
             open(tmp_path / "missing.csv")
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_full_disk_reported_without_a_file_name_is_a_write_failure(tmp_path):
+    """Python reports a full disk on closing a file with no file name: still a write failure of
+    the folder (it was a traceback), and nothing is left behind."""
+    with pytest.raises(CannotWrite, match=r"show: cannot write: No space left on device$"):
+        with staged_folder(tmp_path / "show"):
+            raise OSError(28, os.strerror(28))
+    assert list(tmp_path.iterdir()) == []

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+from pathlib import Path
 
 import click
 
@@ -25,6 +26,8 @@ def command(config, engines, report_dir, quick, only, summary_only):
     from generator.verify import report
     from generator.verify.run import verify
 
+    if report_dir:
+        _check_report_folder(Path(report_dir), fail)
     names = tuple(dict.fromkeys(e.strip() for e in engines.split(",") if e.strip()))  # each engine once
     if not names:
         fail(f"--engines names none; allowed: a comma-separated list of {ENGINES}")
@@ -42,3 +45,16 @@ def command(config, engines, report_dir, quick, only, summary_only):
             click.echo(f"wrote {path}")
     if not result.passed:
         sys.exit(1)
+
+
+def _check_report_folder(folder: Path, fail) -> None:
+    """The report's folder can be written, checked before the run (it used to fail after it):
+    a folder or a new path whose nearest existing parent is a writable folder."""
+    import errno
+    import os
+
+    existing = next(p for p in (folder, *folder.parents) if p.exists())
+    if not existing.is_dir():
+        fail(f"{folder}: cannot write: {os.strerror(errno.ENOTDIR)}")
+    if not os.access(existing, os.W_OK | os.X_OK):
+        fail(f"{folder}: cannot write: {os.strerror(errno.EACCES)}")

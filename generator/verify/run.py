@@ -76,10 +76,32 @@ def load(config_path: str | Path) -> tuple[Path, Spec]:
         raise SpecError(str(path), "-", "no such config file")
     spec = resolved.read_beside(path)
     try:
-        load_config(path)
+        cfg = load_config(path)
     except Exception as error:  # PyOpenColorIO.Exception and friends
         raise SpecError(str(path), "-", f"OpenColorIO cannot load it: {str(error).splitlines()[0]}") from None
+    _same_inventory(path, cfg, spec)
     return path.absolute(), spec
+
+
+def _same_inventory(path: Path, cfg, spec: Spec) -> None:
+    """The config holds exactly the colour spaces, displays and views its stored spec builds:
+    verify checks what the spec defines, so anything added or removed since the build (a space
+    pasted in, a display dropped from the stored spec) would go unchecked."""
+    import PyOpenColorIO as ocio
+
+    from generator.verify.paths import endpoints
+
+    held = {"colour spaces": set(cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)),
+            "displays/views": {f"{d} / {v}" for d in cfg.getDisplays() for v in cfg.getViews(d)}}
+    built = {"colour spaces": set(endpoints(spec)),
+             "displays/views": {f"{d.name} / {v}" for d in spec.displays for v in d.views}}
+    for what in held:
+        extra, missing = sorted(held[what] - built[what]), sorted(built[what] - held[what])
+        if extra or missing:
+            names = "; ".join(part for part in (f"holds {', '.join(map(repr, extra[:3]))}" if extra else "",
+                                                f"lacks {', '.join(map(repr, missing[:3]))}" if missing else "") if part)
+            raise SpecError(str(path), "-", f"its {what} are not what its stored spec builds ({names}); allowed: a "
+                            "config as ocioforge build wrote it, beside its ocioforge-spec.json (rebuild it)")
 
 
 def _worst(check: Check, values: np.ndarray, step: float = 0.0) -> float:

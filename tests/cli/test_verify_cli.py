@@ -94,6 +94,22 @@ def test_an_unwritable_image_or_report_is_one_line_and_exit_2(config, tmp_path, 
     blocked.write_bytes(b"")
     with pytest.raises(SystemExit) as exited:
         main([a.format(config=config, blocked=blocked) for a in argv])
-    err = capsys.readouterr().err
+    out, err = capsys.readouterr()
     assert exited.value.code == 2 and err.count("\n") == 1, err
     assert err.startswith(f"error: {blocked}/") and err.endswith(": cannot write: Not a directory\n")
+    assert "verify passed" not in out  # the report's folder is checked before the run
+
+
+def test_verify_refuses_a_config_holding_what_its_spec_does_not(config):
+    """A space pasted into config.ocio after the build would go unchecked (verify checks what the
+    stored spec defines): it is named, exit 2, nothing run."""
+    import PyOpenColorIO as ocio
+
+    cfg = ocio.Config.CreateFromFile(str(config))
+    pasted = ocio.ColorSpace(name="Bogus Space")
+    pasted.setTransform(ocio.MatrixTransform([2, 0, 0, 0, 0, 0.1, 0, 0, 0, 0, 5, 0, 0, 0, 0, 1]),
+                        ocio.COLORSPACE_DIR_TO_REFERENCE)
+    cfg.addColorSpace(pasted)
+    config.write_text(cfg.serialize())
+    result = CliRunner().invoke(verify, [str(config), "--engines", "ocio", "--quick"])
+    assert result.exit_code == 2 and "holds 'Bogus Space'" in result.stderr and result.stderr.count("\n") == 1
