@@ -12,6 +12,8 @@ import dataclasses
 import json
 from pathlib import Path
 
+import numpy as np
+
 from generator.colorimetry import transfer
 from generator.colorimetry.matrices import Gamut
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
@@ -75,9 +77,26 @@ def loads(text: str) -> Spec:
                                   "aliases": tuple(s["aliases"])}) for s in data["colour_spaces"])
     displays = tuple(Display(**{**d, "gamut": _gamut_from_json(d["gamut"]), "eotf": _curve_from_json(d["eotf"]),
                                 "aliases": tuple(d["aliases"]), "views": tuple(d["views"])}) for d in data["displays"])
-    return Spec(**{**data, "ocio_version": tuple(data["ocio_version"]), "colour_spaces": spaces, "displays": displays,
+    spec = Spec(**{**data, "ocio_version": tuple(data["ocio_version"]), "colour_spaces": spaces, "displays": displays,
                    "roles": tuple(tuple(r) for r in data["roles"]), "inactive": tuple(data["inactive"]),
                    "file_rules": tuple(FileRule(**r) for r in data["file_rules"])})
+    return _checked(spec)
+
+
+def _checked(spec: Spec) -> Spec:
+    """What later commands take for granted, checked as the file is read (an edited file raised
+    deep inside them): a known adaptation, a version of integers, the scene reference among the
+    spaces, and every gamut's matrix (ValueError, KeyError, TypeError or LinAlgError otherwise)."""
+    from generator.colorimetry.matrices import CATS
+
+    if spec.chromatic_adaptation not in CATS:
+        raise ValueError(f"unknown chromatic adaptation {spec.chromatic_adaptation!r}")
+    if len(spec.ocio_version) != 2 or not all(isinstance(v, int) for v in spec.ocio_version):
+        raise TypeError(f"ocio_version {spec.ocio_version!r} is not two integers")
+    spec.reference  # noqa: B018 (a KeyError when the reference is not among the spaces)
+    for gamut in {s.gamut for s in spec.colour_spaces if s.gamut is not None} | {d.gamut for d in spec.displays}:
+        gamut.rgb_to_xyz  # noqa: B018 (derives the matrix: LinAlgError or ValueError when degenerate)
+    return spec
 
 
 def read_beside(config_path: str | Path) -> Spec:
@@ -87,5 +106,5 @@ def read_beside(config_path: str | Path) -> Spec:
         return loads(path.read_text(encoding="utf-8"))
     except OSError:
         raise SpecError(str(path), "-", "no resolved spec beside the config; build it with ocioforge build") from None
-    except (ValueError, KeyError, TypeError) as error:
-        raise SpecError(str(path), "-", f"not a resolved ocioforge spec: {error}") from None
+    except (ValueError, KeyError, TypeError, IndexError, np.linalg.LinAlgError) as error:
+        raise SpecError(str(path), "-", f"not a resolved ocioforge spec: {type(error).__name__} {error}") from None

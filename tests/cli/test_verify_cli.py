@@ -113,3 +113,20 @@ def test_verify_refuses_a_config_holding_what_its_spec_does_not(config):
     config.write_text(cfg.serialize())
     result = CliRunner().invoke(verify, [str(config), "--engines", "ocio", "--quick"])
     assert result.exit_code == 2 and "holds 'Bogus Space'" in result.stderr and result.stderr.count("\n") == 1
+
+
+@pytest.mark.parametrize("edit, words", [
+    (lambda d: d.update(chromatic_adaptation="foo"), "unknown chromatic adaptation 'foo'"),
+    (lambda d: d.update(scene_reference="Nope"), "KeyError 'Nope'"),
+    (lambda d: d.update(ocio_version=["9", "9"]), "is not two integers"),
+    (lambda d: d["colour_spaces"][1]["gamut"].update(primaries=[[0.7, 0.3]]), "LinAlgError"),
+])
+def test_an_edited_stored_spec_is_one_line_and_exit_2(config, edit, words):
+    """What later commands take for granted is checked as the stored spec is read (each of these
+    raised a traceback, exit 1, deep inside verify)."""
+    path = config.parent / "ocioforge-spec.json"
+    data = json.loads(path.read_text())
+    edit(data)
+    path.write_text(json.dumps(data))
+    result = CliRunner().invoke(verify, [str(config), "--engines", "ocio", "--quick"])
+    assert result.exit_code == 2 and words in result.stderr and result.stderr.count("\n") == 1, result.stderr
