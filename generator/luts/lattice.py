@@ -250,7 +250,10 @@ def _log_lattice(display: Display, method: str, axis: LogAxis, params) -> tuple[
         cube = axis.coordinate(grey_linear(display, np.nan_to_num(code) / top) / scale)
     # Mapped colours never pass the peak, so entries past the first one beyond it are never
     # read: they repeat it (an extended-range display would otherwise write codes past 10).
-    x = axis.position(np.linspace(0.0, 1.0, POST_SIZE * int(np.ceil(top - 1e-9))))
+    # Entries a multiple of the lattice's intervals apart: every node's coordinate, the peak's
+    # among them, falls on an entry (a tabulated EOTF's peak, between two, came out 0.73 codes low).
+    wanted = POST_SIZE * int(np.ceil(top - 1e-9))
+    x = axis.position(np.linspace(0.0, 1.0, (axis.size - 1) * -(-wanted // (axis.size - 1)) + 1))
     post = grey_code(display, np.minimum(x, x[np.argmax(x >= 1.0)])) * top
     return numbers.rounded(cube, LOG_DECIMALS), numbers.rounded(post, CUBE_DECIMALS)
 

@@ -235,3 +235,18 @@ def test_a_clf_says_what_its_lattice_covers_and_where_its_codes_end(default_spec
     text = bake.bake(req)[""].decode()
     assert "sampled over" not in text and "times the display's peak per channel" in text
     assert "code values (full range, 0 to 2.69872)" in text
+
+
+def test_a_clf_into_a_tabulated_eotf_puts_the_peak_on_an_entry(tmp_path):
+    """Clip and scale end in a 1D table from lattice coordinates to codes whose entries fall on
+    every node's coordinate: a display with a tabulated EOTF shows white and brighter greys at
+    code 1 (the peak fell between two entries, 0.73 codes low)."""
+    from generator.spec import load
+
+    (tmp_path / "curve.csv").write_text("code,linear\n0,0\n0.25,0.02\n0.5,0.1\n0.75,0.35\n1,1\n")
+    spec = load.parse('[[display]]\nname = "LED Tab"\ngamut = "Rec.709"\n'
+                      'eotf = { family = "tabulated", file = "curve.csv" }\n', "show.toml", tmp_path)
+    req = _request(spec, "clf", method="clip", size=33, source="ACEScg", display="LED Tab")
+    greys = np.repeat(np.array([1.0, 2.0, 5.0, 40.0])[:, None], 3, axis=1)
+    codes = probes.ocio_apply(_transform(_write(tmp_path, req)))(greys)
+    np.testing.assert_allclose(codes, 1.0, rtol=0, atol=tolerances.LUT_CLF_IN_GAMUT_CODES / 1023)
