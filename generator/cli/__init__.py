@@ -32,7 +32,13 @@ class LazyGroup(click.Group):
         return importlib.import_module(f"generator.cli.{name.replace('-', '_')}").command
 
     def format_commands(self, ctx, formatter):
-        formatter.write_dl([(name, text) for name, text in COMMANDS.items()], col_max=12)
+        with formatter.section("Commands"):
+            formatter.write_dl([(name, text) for name, text in COMMANDS.items()], col_max=12)
+
+    def resolve_command(self, ctx, args):
+        if args and not args[0].startswith("-") and args[0] not in COMMANDS:
+            raise click.UsageError(f"no command {args[0]!r}; allowed: {', '.join(COMMANDS)}")
+        return super().resolve_command(ctx, args)
 
 
 @click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})

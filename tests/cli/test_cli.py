@@ -178,3 +178,20 @@ def test_info_and_list(capsys):
     assert "Rec.2100-PQ - Display" in out
     _, out, _ = run(capsys, "list", "--curves")
     assert "LogCamera" in out and "T-LogE" in out
+
+
+def test_list_piped_gives_one_unwrapped_line_a_row(capsys):
+    """Piped (as under pytest), each row is one tab-separated line, so grep finds a name
+    whatever its length (the 200-column table wrapped long aliases mid-name)."""
+    from generator.colorimetry import library
+
+    _, out, _ = run(capsys, "list")
+    lines = out.splitlines()
+    assert lines[0].split("\t")[0] == "colour space" and len(lines) == len(library.SPACES) + 1
+    assert all(line.count("\t") == 4 for line in lines)
+    assert any(line.startswith("Gamma 2.4 Encoded Rec.709\t") and "Gamma 2.4 Rec.709 - Texture" in line for line in lines)
+
+
+def test_an_unknown_command_lists_the_commands(capsys):
+    code, _, err = run(capsys, "bogus")
+    assert code == 2 and "allowed: build, init, matrix, bake, verify, plot, info, list" in err and err.count("\n") == 1
