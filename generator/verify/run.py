@@ -8,6 +8,7 @@ is only ever run, never read to decide what it should do.
 from __future__ import annotations
 
 import os
+import shutil
 import tempfile
 import time
 from dataclasses import dataclass, field, replace
@@ -184,6 +185,17 @@ def _explained(config: Path, outcomes: list[Outcome], extra: list[Outcome] = ())
             for o in everything[:len(outcomes)]]
 
 
+def _remove(folder: Path, attempts: int = 5) -> None:
+    """Remove the working folder, also when the run was stopped (SIGTERM, Ctrl-C) while a host
+    was still writing into it: retried briefly rather than raising "Directory not empty" over
+    the stop itself."""
+    for _ in range(attempts):
+        shutil.rmtree(folder, ignore_errors=True)
+        if not folder.exists():
+            return
+        time.sleep(0.1)
+
+
 def verify(config_path: str | Path, engines=("ocio",), density: str = "full", kinds=checks_module.KINDS,
            workdir: str | Path | None = None, only: str = "") -> Verification:
     """Verify the config at ``config_path`` through the named engine families: the checks
@@ -204,13 +216,16 @@ def verify(config_path: str | Path, engines=("ocio",), density: str = "full", ki
                                         "'DISPLAY / VIEW from SPACE' and LUT file paths such as 'luts/NAME.clf')")
     timings = {"checks": time.perf_counter() - started}
     runs, outcomes = [], []
-    with tempfile.TemporaryDirectory(prefix="ocioforge-verify-", dir=workdir) as tmp:
+    tmp = tempfile.mkdtemp(prefix="ocioforge-verify-", dir=workdir)
+    try:
         for family in engines:
             for engine in registry[family]:
                 run, found = run_engine(engine, config, spec, checks, Path(tmp))
                 runs.append(run)
                 outcomes += found
         extra = _in_process_for_hosts(config, spec, outcomes, Path(tmp))
+    finally:
+        _remove(Path(tmp))
     outcomes = _explained(config, outcomes, extra)
     return Verification(config, spec, tuple(checks), tuple(outcomes), tuple(runs),
                         time.perf_counter() - started, timings)

@@ -153,3 +153,18 @@ def test_a_host_that_cannot_read_the_config_is_found_at_once_and_proves_nothing(
     assert {o.verdict for o in result.outcomes} == {NOT_RUN}
     assert not result.compared and not result.passed
     assert "nothing compared" in summary(result).splitlines()[-1]
+
+
+def test_a_stopped_run_leaves_no_working_folder(build_config, tmp_path, monkeypatch):
+    """SIGTERM ends a run as SystemExit; its working folder goes even while a host's output is
+    still being written there (a run stopped under oiiotool left it, with a traceback)."""
+    from generator.verify import run as runner
+
+    def stopped(engine, config, spec, checks, workdir):
+        (workdir / "host-0000-out.exr").write_bytes(b"partial")
+        raise SystemExit(143)
+
+    monkeypatch.setattr(runner, "run_engine", stopped)
+    with pytest.raises(SystemExit):
+        verify(build_config((2, 1)), ("ocio",), density="quick", workdir=tmp_path)
+    assert list(tmp_path.iterdir()) == []
