@@ -37,6 +37,12 @@ BAKED_CURVE_RELATIVE = 1e-4
 #: smallest is 0.024.
 GAMUT_MIN_XY_AREA = 1e-3
 
+#: How far a spec's log_camera curve evaluated in float32 (as OCIO does) may depart from it,
+#: relative: a tenth of ANALYTIC_RELATIVE, so a verify of the built config can pass (the
+#: library's LogCamera curves depart 1.3e-6 at most; a base of 1e6 or a log-side slope of 1e-6
+#: overflow, a log-side offset of 100 departs 980).
+LOG_CAMERA_FLOAT32_RELATIVE = ANALYTIC_RELATIVE / 10
+
 #: Chromaticity difference within which two gamuts are the same (published primaries
 #: are given to three or four decimals): an HLG display's must be BT.2020's.
 GAMUT_SAME_XY_ABSOLUTE = 1e-4

@@ -162,6 +162,31 @@ class LogCamera:
         toe = (y - self.break_code) / self.toe_slope + self.lin_side_break
         return np.where(y > self.break_code, lin, toe)
 
+    def float32_departure(self, floor: float, samples: int = 4097) -> float:
+        """Largest relative departure (``floor`` below which it is absolute) of the curve's formula
+        evaluated in float32, as OCIO evaluates it, from float64: decoding codes 0 to 1 and
+        encoding their light back. Extreme parameters (a huge base, a tiny slope, offsets far
+        from the codes) lose the curve to float32 cancellation; +Inf where it overflows."""
+        f = np.float32
+        codes = np.linspace(0.0, 1.0, samples)
+        b, s, o, ls, lo = (f(v) for v in (self.base, self.log_side_slope, self.log_side_offset, self.lin_side_slope,
+                                           self.lin_side_offset))
+        with np.errstate(all="ignore"):
+            exact = self.decode(codes)
+            y = codes.astype(f)
+            lin = (b ** ((y - o) / s) - lo) / ls
+            x = exact.astype(f)
+            code = s * np.log(ls * x + lo) / f(math.log(self.base)) + o
+            if self.lin_side_break is not None:
+                bc, ts, lb = f(self.break_code), f(self.toe_slope), f(self.lin_side_break)
+                lin = np.where(y > bc, lin, (y - bc) / ts + lb)
+                code = np.where(x > lb, code, ts * (x - lb) + bc)
+            shown = np.isfinite(exact)
+            decoded = np.abs(lin.astype(np.float64) - exact) / np.maximum(np.abs(exact), floor)
+            encoded = np.abs(code.astype(np.float64) - codes) / np.maximum(np.abs(codes), floor)
+            worst = np.maximum(decoded, encoded)[shown]
+        return float(np.nan_to_num(worst, nan=np.inf, posinf=np.inf).max(initial=0.0))
+
 
 @dataclass(frozen=True)
 class Function:

@@ -11,6 +11,7 @@ import difflib
 import math
 from pathlib import Path
 
+from generator import tolerances
 from generator.colorimetry import transfer
 from generator.spec.schema import SpecError
 
@@ -191,7 +192,14 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
     if family == "piecewise_gamma":
         return label, transfer.PiecewisePower(params["gamma"], params["offset"])
     _check_log_break(params, source, field)
-    return label, transfer.LogCamera(**params)
+    curve = transfer.LogCamera(**params)
+    departure = curve.float32_departure(tolerances.RELATIVE_FLOOR)
+    if departure > tolerances.LOG_CAMERA_FLOAT32_RELATIVE:
+        raise SpecError(source, field, f"OCIO evaluates a log_camera curve in float32, which departs {departure:.2g} "
+                        f"relative from this one over codes 0 to 1; allowed: parameters it follows within "
+                        f"{tolerances.LOG_CAMERA_FLOAT32_RELATIVE:g} (a base, slopes and offsets of a real camera "
+                        "curve: the library's are within 1.3e-6)")
+    return label, curve
 
 
 def _within(value: float, low: float, high: float, open_low: bool) -> bool:

@@ -209,3 +209,11 @@ def test_adobe_rgb_decodes_as_the_studio_config(default_spec):
     studio.getProcessor("Gamma 2.2 Encoded AdobeRGB", "ACES2065-1").getDefaultCPUProcessor().applyRGB(pixels)
     ours = reference.to_reference(default_spec, default_spec.space("Gamma 2.2 Encoded AdobeRGB"), codes)
     assert np.abs(ours - pixels).max() <= tolerances.ANALYTIC_RELATIVE
+
+
+def test_the_library_log_curves_survive_float32():
+    """OCIO evaluates LogCamera in float32: every library curve's formula stays within the bound a
+    spec's log_camera is held to, with room (within 1.3e-6)."""
+    for name, curve in CURVES.items():
+        if isinstance(curve, LogCamera):
+            assert curve.float32_departure(tolerances.RELATIVE_FLOOR) <= tolerances.LOG_CAMERA_FLOAT32_RELATIVE / 5, name

@@ -54,6 +54,12 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("ocio_version = '1.3'", "ocio_version", "allowed: 2.1 to"),
     ("ocio_version = 'two'", "ocio_version", "allowed"),
     ("ocio_version = '２.１'", "ocio_version", "expected a version like"),
+    ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = { family = 'log_camera', base = 10, "
+     "log_side_slope = 1e-6, log_side_offset = 0.4, lin_side_slope = 5.0, lin_side_offset = 0.05 }",
+     "custom_space[0].transfer", "OCIO evaluates a log_camera curve in float32, which departs inf"),
+    ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = { family = 'log_camera', base = 10, "
+     "log_side_slope = 0.25, log_side_offset = 0.4, lin_side_slope = 5.0, lin_side_offset = 0.05, "
+     "lin_side_break = 100 }", "custom_space[0].transfer", "which departs 0.00046 relative"),
     ("ocio_version = '2.01'", "ocio_version", "expected a version like"),
     ("ocio_version = ' 2.1'", "ocio_version", "expected a version like"),
     ("chromatic_adaptation = 'Sharp'", "chromatic_adaptation", "allowed: Bradford"),
