@@ -201,7 +201,7 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
             expected = _evaluate(lambda v: ref.encode(end.decode(v)), inputs.values)
             out.append(Check(TO_REFERENCE, end.name, end.name, ref.name, probes=inputs, expected=expected,
                              output=ref.output, keep=_keep(end, None, None, inputs.values, expected),
-                             **_judging(ref, None, end)))
+                             allowance=_input_rounding(end, ref, inputs.values), **_judging(ref, None, end)))
         decoded = [] if end.decode is None else [Family(f.name, _evaluate(end.decode, f.values), f.notes) for f in
                                                  probes.code_families(*end.code_range, sizes)]
         inputs = Probes(tuple(decoded) + scene)
@@ -221,6 +221,20 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
                          output=end.output, problem=problem, allowance=allowance, keep=keep,
                          **_judging(end, end.display, None, end.view)))
     return out
+
+
+def _input_rounding(end: paths.Endpoint, ref: paths.Endpoint, codes: np.ndarray) -> np.ndarray | None:
+    """For a baked curve decoded to the reference: what float32 evaluation alone may move the
+    reference values by (:func:`~generator.verify.allowance.float32_shift`), the rounding of its
+    codes times the curve's slope among it. A table may rise steeply between two rows (a clip
+    flag: 80 to 100 over one 10-bit step, 8e4 per code, where a code's rounding is 1e-4 of the
+    value); no float32 engine can do better there."""
+    from generator.verify.allowance import float32_shift
+
+    if not end.baked or end.matrix is None or end.linear is None or ref.matrix is None:
+        return None
+    with np.errstate(all="ignore"):
+        return np.nan_to_num(float32_shift(end, ref.matrix, codes)[1], nan=0.0, posinf=0.0)
 
 
 def _scene_space(spec: Spec, end: paths.Endpoint):

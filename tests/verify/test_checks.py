@@ -239,3 +239,23 @@ def test_a_pq_scene_space_passes_beyond_the_signal_range(tmp_path, version):
     result = verify(folder / "config.ocio", ("ocio",), density="quick",
                     kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE), only="P3 PQ")
     assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
+
+
+def test_a_table_rising_steeply_between_two_rows_verifies(tmp_path):
+    """A 10-bit table whose top row flags a clip (20 to 100 over one step) is baked on its rows,
+    and verify carries the float32 rounding of the codes times that slope (1.04e-4 of the value
+    at the top row, over 1e-4, which no float32 engine can do better than)."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from generator.verify.run import verify
+
+    rows = "".join(f"{i / 1023:.9f},{20 * (i / 1023) ** 2.4:.9g}\n" for i in range(1023))
+    (tmp_path / "clip.csv").write_text("code,linear\n" + rows + "1,100\n")
+    (tmp_path / "show.toml").write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = "Clip"\ngamut = "Rec.709"\ntransfer = { family = "tabulated", file = "clip.csv" }\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+    folder = tmp_path / "show"
+    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
+    result = verify(folder / "config.ocio", ("ocio",), density="quick", only="Clip")
+    assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
