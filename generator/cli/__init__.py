@@ -79,8 +79,9 @@ def _run(argv) -> None:
     skip_plotting()
     try:
         cli.main(args=argv, prog_name="ocioforge", standalone_mode=False)
-    except click.exceptions.Abort:
-        fail("aborted")
+    except click.exceptions.Abort:  # Ctrl-C: what was staged is gone; 128 + SIGINT, as a shell reports it
+        click.echo("error: interrupted", err=True)
+        sys.exit(128 + signal.SIGINT)
     except click.exceptions.NoArgsIsHelpError as error:
         click.echo(error.ctx.get_help())
     except click.UsageError as error:

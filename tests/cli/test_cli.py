@@ -195,3 +195,26 @@ def test_list_piped_gives_one_unwrapped_line_a_row(capsys):
 def test_an_unknown_command_lists_the_commands(capsys):
     code, _, err = run(capsys, "bogus")
     assert code == 2 and "allowed: build, init, matrix, bake, verify, plot, info, list" in err and err.count("\n") == 1
+
+
+def test_ctrl_c_exits_130_not_as_bad_input(capsys, monkeypatch):
+    """Interrupted is not bad input (exit 2): the shell's 128 + SIGINT, and one line."""
+    from generator.cli import init
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(init, "command", click_command_raising(interrupted))
+    code, _, err = run(capsys, "init", "x.toml")
+    assert code == 130 and err.strip().endswith("error: interrupted")
+
+
+def click_command_raising(fn):
+    import click
+
+    @click.command()
+    @click.argument("file")
+    def command(file):
+        fn()
+
+    return command
