@@ -109,6 +109,7 @@ def format_for(fmt: str | None, output: str) -> str:
             raise SpecError(WHERE, "--format", f"cannot tell the format from {suffix or 'no suffix'!r}; "
                             f"give --format ({', '.join(FORMATS)})")
         return _BY_SUFFIX[suffix]
+    fmt = fmt.lower()
     if fmt not in FORMATS:
         raise SpecError(WHERE, "--format", f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
     suffix = Path(output).suffix.lower()

@@ -208,7 +208,9 @@ def log_axis_high(display: Display, light: bool = False) -> float:
     """How far a :class:`LogAxis` reaches: :data:`LOG_DISPLAY_HIGH` where its lattice is exact,
     :data:`DISPLAY_RANGE`'s end for HLG code values (a lattice that is smooth, not exact: a
     longer range would coarsen its steps, 0.40 ΔE ITP against 0.22 at 33³)."""
-    return DISPLAY_RANGE[1] if display.eotf_name == "HLG" and not light else LOG_DISPLAY_HIGH
+    if display.eotf_name == "HLG" and not light:
+        return DISPLAY_RANGE[1]
+    return LOG_DISPLAY_HIGH * max(1.0, 1.0 / display.clip_high)  # a dim display: still 65504 cd/m² / 100
 
 
 def display_axis(display: Display, size: int, method: str, light: bool = False) -> Axis | LogAxis:

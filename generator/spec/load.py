@@ -372,7 +372,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
             raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}; allowed: {', '.join(VIEWS)}")
         if view in views[:i]:
             raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
-    known = {d.name.lower(): d for d in library.DISPLAYS}
+    known = {n.lower(): d for d in library.DISPLAYS for n in (d.name, *d.aliases)}
     custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
     if name.lower() in known and not custom:
         fixed = next((k for k in table if k not in LIBRARY_DISPLAY_KEYS), None)
@@ -406,23 +406,24 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     views = views or default_views("hdr-video" if hdr else "sdr-video")
     gamut = _gamut(table, source, field, base, name)
     if eotf_name == "HLG":
-        _check_bt2020(gamut, source, f"{field}.{next((k for k in ('primaries', 'primaries_spectra') if k in table), 'gamut')}")
+        given = next((k for k in ("primaries", "primaries_spectra") if k in table), "gamut")
+        _check_bt2020(gamut, source, f"{field}.{given}", f"{field}.{'white' if 'white' in table else given}")
     return Display(name, gamut, eotf, eotf_name, views,
                    _aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
                    "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"),
                    absolute)
 
 
-def _check_bt2020(gamut, source: str, field: str) -> None:
+def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
     """HLG is defined on BT.2020's primaries and white (ITU-R BT.2100): its OOTF weighs the
     channels by BT.2020 luminance, and OCIO's HLG display builtin encodes BT.2020 RGB."""
     from generator.colorimetry.gamuts import gamuts
 
     bt2020 = gamuts()["Rec.2020"]
-    if not np.allclose([*gamut.primaries, gamut.whitepoint], [*bt2020.primaries, bt2020.whitepoint], rtol=0,
-                       atol=tolerances.GAMUT_SAME_XY_ABSOLUTE):
-        raise SpecError(source, field, "an HLG display is BT.2100's, on BT.2020 primaries and D65; "
-                        "allowed: gamut = \"Rec.2020\" (or its primaries and white)")
+    for ours, theirs, key in ((gamut.primaries, bt2020.primaries, field), (gamut.whitepoint, bt2020.whitepoint, white)):
+        if not np.allclose(ours, theirs, rtol=0, atol=tolerances.GAMUT_SAME_XY_ABSOLUTE):
+            raise SpecError(source, key, "an HLG display is BT.2100's, on BT.2020 primaries and D65 (x 0.3127, "
+                            "y 0.3290); allowed: gamut = \"Rec.2020\" (or its primaries and white)")
 
 
 def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
@@ -473,6 +474,10 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
                 raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
         rule = FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()})
         _check_glob(rule, source, field)
+        if rule.name.lower() == "colorspacenamepathsearch":
+            raise SpecError(source, f"{field}.name", "OCIO reserves 'ColorSpaceNamePathSearch' for its rule that "
+                            "finds a colour space's name in the file path, which takes no colour_space; allowed: "
+                            "another name")
         if rule.name.lower() in (r.name.lower() for r in rules):
             raise SpecError(source, f"{field}.name", f"{rule.name!r} names an earlier rule too; allowed: one rule a name")
         if rule.name == "Default" and ({"pattern", "extension"} & set(table)):

@@ -94,6 +94,9 @@ def _checked(spec: Spec) -> Spec:
     if len(spec.ocio_version) != 2 or not all(isinstance(v, int) for v in spec.ocio_version):
         raise TypeError(f"ocio_version {spec.ocio_version!r} is not two integers")
     spec.reference  # noqa: B018 (a KeyError when the reference is not among the spaces)
+    for space in spec.colour_spaces:
+        if space.gamut is None and not (space.is_data or space.special):
+            raise ValueError(f"{space.name!r} has no gamut")
     for gamut in {s.gamut for s in spec.colour_spaces if s.gamut is not None} | {d.gamut for d in spec.displays}:
         gamut.rgb_to_xyz  # noqa: B018 (derives the matrix: LinAlgError or ValueError when degenerate)
     return spec

@@ -93,7 +93,9 @@ def _same_inventory(path: Path, cfg, spec: Spec) -> None:
     from generator.verify.paths import endpoints
 
     held = {"colour spaces": set(cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)),
-            "displays/views": {f"{d} / {v}" for d in cfg.getDisplays() for v in cfg.getViews(d)}}
+            # every display and view it defines, whatever OCIO_ACTIVE_DISPLAYS / _VIEWS narrow them to
+            "displays/views": {f"{d} / {v}" for d in cfg.getDisplaysAll()
+                               for v in cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, d)}}
     built = {"colour spaces": set(endpoints(spec)),
              "displays/views": {f"{d.name} / {v}" for d in spec.displays for v in d.views}}
     for what in held:

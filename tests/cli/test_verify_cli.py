@@ -120,6 +120,7 @@ def test_verify_refuses_a_config_holding_what_its_spec_does_not(config):
     (lambda d: d.update(scene_reference="Nope"), "KeyError 'Nope'"),
     (lambda d: d.update(ocio_version=["9", "9"]), "is not two integers"),
     (lambda d: d["colour_spaces"][1]["gamut"].update(primaries=[[0.7, 0.3]]), "LinAlgError"),
+    (lambda d: d["colour_spaces"][0].update(gamut=None), "has no gamut"),
 ])
 def test_an_edited_stored_spec_is_one_line_and_exit_2(config, edit, words):
     """What later commands take for granted is checked as the stored spec is read (each of these
@@ -130,3 +131,12 @@ def test_an_edited_stored_spec_is_one_line_and_exit_2(config, edit, words):
     path.write_text(json.dumps(data))
     result = CliRunner().invoke(verify, [str(config), "--engines", "ocio", "--quick"])
     assert result.exit_code == 2 and words in result.stderr and result.stderr.count("\n") == 1, result.stderr
+
+
+def test_verify_reads_every_display_whatever_the_active_ones(config, monkeypatch):
+    """Studio shells narrow what hosts show with OCIO_ACTIVE_DISPLAYS / _VIEWS; the config still
+    holds every display and view its spec builds, and verify checks them all."""
+    monkeypatch.setenv("OCIO_ACTIVE_DISPLAYS", "sRGB - Display")
+    monkeypatch.setenv("OCIO_ACTIVE_VIEWS", "Colorimetric,Raw")
+    result = run(verify, config, "--engines", "ocio", "--quick", "--only", "Display P3 - Display / Scale", "--summary")
+    assert result.exit_code == 0, result.output

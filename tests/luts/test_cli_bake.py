@@ -141,6 +141,14 @@ def test_a_spi3d_named_like_its_shaper_is_refused(tmp_path, run):
     assert code == 2 and "allowed: a name ending in .spi3d" in err and list(tmp_path.iterdir()) == []
 
 
+def test_a_format_in_any_case(tmp_path):
+    out = tmp_path / "a.clf"
+    result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "--format", "CLF",
+                                          "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert out.read_text().startswith("<?xml")
+
+
 @pytest.mark.parametrize("source, shaper", [("ACEScct", "NONE"), ("ACEScg", "Auto"), ("ACEScg", "arri_logc4"),
                                             ("ACEScg", "V-Log V-Gamut")])
 def test_shaper_words_in_any_case_and_any_library_space(tmp_path, source, shaper):

@@ -116,6 +116,10 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[file_rule]]\nname = 'A'\ncolour_space = 'ACEScg'\npattern = '[abc'\n[[file_rule]]\nname = 'Default'\n"
      "colour_space = 'ACEScg'", "file_rule[0].pattern", "OpenColorIO cannot read it"),
     ("[[display]]\nname = 'HLG P3'\ngamut = 'P3-D65'\neotf = 'HLG'", "display[0].gamut", "BT.2020 primaries and D65"),
+    ("[[display]]\nname = 'HLG'\nprimaries = [[0.708, 0.292], [0.170, 0.797], [0.131, 0.046]]\nwhite = 6504\n"
+     "eotf = 'HLG'", "display[0].white", "BT.2020 primaries and D65"),
+    ("[[file_rule]]\nname = 'ColorSpaceNamePathSearch'\ncolour_space = 'ACEScg'\n[[file_rule]]\nname = 'Default'\n"
+     "colour_space = 'ACEScg'", "file_rule[0].name", "OCIO reserves 'ColorSpaceNamePathSearch'"),
     ("[[display]]\nname = 'HLG'\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\nwhite = 'D65'\neotf = 'HLG'",
      "display[0].primaries", "allowed: gamut = \"Rec.2020\""),
     ("name = = 1", "-", "not valid TOML"),
@@ -276,3 +280,7 @@ def test_the_resolved_spec_records_the_spec_files_name_alone(tmp_path, monkeypat
 def test_a_spec_saved_with_a_byte_order_mark_loads(tmp_path):
     (tmp_path / "show.toml").write_bytes(b"\xef\xbb\xbfname = 'bom'\n")
     assert load.load(tmp_path / "show.toml").name == "bom"
+
+
+def test_a_library_display_may_be_named_by_an_alias():
+    assert parse('[[display]]\nname = "srgb_display"\nviews = ["Colorimetric", "Raw"]').displays[0].name == "sRGB - Display"
