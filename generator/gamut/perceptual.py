@@ -131,6 +131,12 @@ def _colour():
     return colour
 
 
+def _hexagon_edges(samples: int, hexagon: np.ndarray) -> np.ndarray:
+    """RGB along the cube's six edges between the corners of ``hexagon``, ``samples`` per edge."""
+    s = np.linspace(0.0, 1.0, samples, endpoint=False)[:, None]
+    return np.concatenate([hexagon[i] + s * (hexagon[i + 1] - hexagon[i]) for i in range(6)])
+
+
 def _oklab_white_xyz() -> np.ndarray:
     """XYZ of Oklab's white (L = 1, a = b = 0)."""
     return _colour().Oklab_to_XYZ(np.array([1.0, 0.0, 0.0]))
@@ -205,10 +211,9 @@ def cusp_table(display: DisplayGamut) -> tuple[np.ndarray, np.ndarray]:
     (near a blue primary) the samples are skipped until the hue passes its previous
     maximum, so the table is a function of hue. Read-only arrays.
     """
-    s = np.linspace(0.0, 1.0, CUSP_SAMPLES, endpoint=False)[:, None]
     hexagon = _HEXAGON
     for _ in range(2):
-        rgb = np.concatenate([hexagon[i] + s * (hexagon[i + 1] - hexagon[i]) for i in range(6)])
+        rgb = _hexagon_edges(CUSP_SAMPLES, hexagon)
         lab = display_to_oklab(rgb, display)
         hue = np.unwrap(np.arctan2(lab[:, 2], lab[:, 1]))
         if hue[-1] > hue[0]:
@@ -322,9 +327,7 @@ def chroma_bracket(rgb_to_xyz: np.ndarray) -> float:
     """Upper end of the bisection bracket for the gamut of ``rgb_to_xyz`` (RGB to adapted XYZ):
     :data:`CHROMA_BRACKET`, or twice the gamut's largest Oklab chroma, which lies on its cube's
     hexagon of edges (ProPhoto RGB's blue reaches 1.41)."""
-    s = np.linspace(0.0, 1.0, 64, endpoint=False)[:, None]
-    rgb = np.concatenate([_HEXAGON[i] + s * (_HEXAGON[i + 1] - _HEXAGON[i]) for i in range(6)])
-    lab = _colour().XYZ_to_Oklab(rgb @ np.asarray(rgb_to_xyz).T)
+    lab = _colour().XYZ_to_Oklab(_hexagon_edges(64, _HEXAGON) @ np.asarray(rgb_to_xyz).T)
     return float(max(CHROMA_BRACKET, 2.0 * np.hypot(lab[:, 1], lab[:, 2]).max()))
 
 

@@ -17,6 +17,7 @@ import numpy as np
 from generator import tolerances
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
+from generator.colorimetry.transfer import Linear
 from generator.spec import fields, namespace
 from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
@@ -148,7 +149,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     if reference.lower() not in every:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
     chosen = next(s for s in (*listed, *customs) if reference.lower() in (n.lower() for n in (s.name, *s.aliases)))
-    linear = chosen.curve == "linear" if isinstance(chosen.curve, str) else type(chosen.curve).__name__ == "Linear"
+    linear = chosen.curve == "linear" if isinstance(chosen.curve, str) else isinstance(chosen.curve, Linear)
     if chosen.encoding != "scene-linear" or not linear:
         what = chosen.encoding if chosen.encoding != "scene-linear" else "labelled scene-linear but has a transfer curve"
         raise SpecError(source, "scene_reference", f"{reference!r} is {what}; allowed: a scene-linear colour space "
@@ -277,7 +278,6 @@ def from_library(space: library.SpaceDef) -> ColourSpace:
     """The resolved record of a library colour space."""
     from generator.colorimetry.curves import CURVES
     from generator.colorimetry.gamuts import gamuts
-    from generator.colorimetry.transfer import Linear
 
     special = space.curve.lower() if space.curve.startswith("ADX") else ""
     return ColourSpace(
@@ -331,7 +331,7 @@ def _default_encoding(curve) -> str:
     """A custom space's OCIO encoding when its spec names none: scene-linear for the identity,
     log for a log curve, sdr-video for any other curve (code values, as OCIO's own configs
     label a gamma-encoded scene space)."""
-    from generator.colorimetry.transfer import Linear, LogCamera
+    from generator.colorimetry.transfer import LogCamera
 
     if isinstance(curve, Linear):
         return "scene-linear"

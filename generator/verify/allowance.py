@@ -226,20 +226,28 @@ def pq_table_departure(curve, size: int, light: np.ndarray) -> np.ndarray:
     return np.nan_to_num(np.maximum(np.abs(inverse - exact), np.abs(fast - exact)))
 
 
+def _pq_builtin_departure(spec: Spec, owner: str, curve_name: str, curve, decode, top: float,
+                          expected: np.ndarray) -> np.ndarray | None:
+    """:func:`pq_table_departure` at codes ``expected`` of the curve ``owner`` encodes with,
+    over the libraries that read the config, where the ST-2084 builtin expresses it (light
+    from ``decode``, clipped to [0, ``top``]); None otherwise."""
+    from generator.ocio.capabilities import PQ_BUILTIN, curve_chain, pq_builtin_tables
+    from generator.ocio.curves import curve_label
+
+    chain = curve_chain(curve_label(spec, owner, curve_name), spec.ocio_version) or ()
+    if PQ_BUILTIN not in {style for style, _ in chain}:
+        return None
+    with np.errstate(all="ignore"):
+        light = np.clip(decode(expected), 0.0, top)
+    return np.max([pq_table_departure(curve, size, light) for size in pq_builtin_tables(spec.ocio_version)], axis=0)
+
+
 def builtin_encoding_allowance(spec: Spec, display: Display, expected: np.ndarray) -> np.ndarray | None:
     """The code departure of OCIO's own evaluation of ``display``'s encoding at codes ``expected``,
     per sample and channel, over the libraries that read the config (:func:`pq_table_departure`
     for a display the ST-2084 builtin encodes); None when the encoding is exact."""
-    from generator.ocio.capabilities import PQ_BUILTIN, curve_chain, pq_builtin_tables
-    from generator.ocio.curves import curve_label
-
-    chain = curve_chain(curve_label(spec, display.name, display.eotf_name), spec.ocio_version) or ()
-    if PQ_BUILTIN not in {style for style, _ in chain}:
-        return None
-    with np.errstate(all="ignore"):
-        light = np.clip(reference.display_decode(display, expected), 0.0, display.clip_high)
-    return np.max([pq_table_departure(display.eotf, size, light) for size in pq_builtin_tables(spec.ocio_version)],
-                  axis=0)
+    return _pq_builtin_departure(spec, display.name, display.eotf_name, display.eotf,
+                                 lambda codes: reference.display_decode(display, codes), display.clip_high, expected)
 
 
 def scene_encoding_allowance(spec: Spec, space, expected: np.ndarray) -> np.ndarray | None:
@@ -247,16 +255,8 @@ def scene_encoding_allowance(spec: Spec, space, expected: np.ndarray) -> np.ndar
     codes clamped to the signal range, 0 to 10000 cd/m²): OCIO 2.1 to 2.3 read the config with
     a 4096-code table, 1.2e-4 relative off near black."""
     from generator.colorimetry.curves import PQ_PEAK
-    from generator.ocio.capabilities import PQ_BUILTIN, curve_chain, pq_builtin_tables
-    from generator.ocio.curves import curve_label
 
-    chain = curve_chain(curve_label(spec, space.name, space.curve_name), spec.ocio_version) or ()
-    if PQ_BUILTIN not in {style for style, _ in chain}:
-        return None
-    with np.errstate(all="ignore"):
-        light = np.clip(space.curve.decode(expected), 0.0, PQ_PEAK)
-    return np.max([pq_table_departure(space.curve, size, light) for size in pq_builtin_tables(spec.ocio_version)],
-                  axis=0)
+    return _pq_builtin_departure(spec, space.name, space.curve_name, space.curve, space.curve.decode, PQ_PEAK, expected)
 
 
 def with_encoding(allowance: np.ndarray | None, spec: Spec, display: Display | None,
