@@ -38,6 +38,14 @@ LOG_VIEW_SIZE = 17
 #: its 1D tables; its standalone bakes keep the display layout.
 HSV_METHOD = "desaturate"
 
+#: Methods whose config view is defined by its lattice: soft compressions that move colours
+#: inside the display, lifting channels from 0 where code values are steepest, and that
+#: turn sharply where their lines graze the cube's edges, so that no lattice holds them
+#: (:mod:`generator.gamut.perceptual`). Such a view is its 33³ file
+#: (:func:`generator.luts.evaluate.display_file`): verify holds OCIO to that, and
+#: bench/lut_accuracy.py measures how far the file departs from the mapping.
+LATTICE_DEFINED = ("perceptual",)
+
 
 def view_size(display: Display, method: str) -> int:
     """The lattice size of the config's view LUT of ``method`` on ``display``."""
@@ -144,7 +152,8 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
         return _bake_hsv_view(spec, display)
     size = size or view_size(display, method)
     light = ends_in_light(display)
-    lat = lattice.display_lattice(spec, display, method, size, params=params, light=light)
+    lat = (view_lattice(spec, display, method) if size == view_size(display, method) and params is None else
+           lattice.display_lattice(spec, display, method, size, params=params, light=light))
     name = view_filename(spec, display, method, size)
     output = ("normalised linear RGB (the config encodes it), gamut mapping {}, {}^3 lattice." if light else
               "code values, gamut mapping {}, {}^3 lattice in the display's code values.")
@@ -152,6 +161,13 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
             f"to {output.format(method, size)}")
     data = formats.clf(lat, f"ocioforge:{name[:-4]}", text, include_matrix=False)
     return _measured(spec, display, method, name, data, {}, lat.matrix, light)
+
+
+@lru_cache(maxsize=64)
+def view_lattice(spec: Spec, display: Display, method: str) -> lattice.Lattice:
+    """The lattice of the config's view of ``method`` on ``display`` (not an HSV view), once
+    per process: default size and parameters."""
+    return lattice.display_lattice(spec, display, method, view_size(display, method), light=ends_in_light(display))
 
 
 def _measured(spec: Spec, display: Display, method: str, name: str, data: bytes, beside: dict, matrix,

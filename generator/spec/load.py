@@ -43,15 +43,16 @@ VIEW_METHODS = {"Colorimetric": "clip", "Desaturate": "desaturate", "Scale": "sc
                 "RGC": "rgc"}
 VIEWS = (*VIEW_METHODS, "Raw")
 
-#: Views a display offers when the spec does not say: those verify proves on every probe
-#: it draws. Colorimetric (clip) and RGC are analytic; Scale is a CLF lattice on which the
-#: mapping is linear inside every tetrahedron, and Desaturate a lattice in OCIO's HSV on
-#: which it is trilinear (generator.luts.hsv): both within 0.02 ten-bit codes of the
-#: reference on the probe sets, 0.003 ΔE ITP on HDR displays, whose view files end in
-#: display light. SDR displays offer Desaturate by default; an HDR display's Desaturate file
-#: (1 MB) is built when its spec asks. Perceptual is offered when a spec asks for it: its
-#: lattice moves colours near the boundary by tens of codes, which verify reports.
-DEFAULT_VIEWS = ("Colorimetric", "Desaturate", "Scale", "RGC", "Raw")
+#: Views a display offers when the spec does not say. Colorimetric (clip) and RGC are
+#: analytic; Scale is a CLF lattice on which the mapping is linear inside every tetrahedron,
+#: and Desaturate a lattice in OCIO's HSV on which it is trilinear (generator.luts.hsv):
+#: both within 0.02 ten-bit codes of the reference on the probe sets, 0.003 ΔE ITP on HDR
+#: displays, whose view files end in display light. Perceptual is its 33³ lattice
+#: (generator.luts.view.LATTICE_DEFINED): no lattice holds the soft compression, and
+#: bench/lut_accuracy.py measures the file's departure from it. SDR displays offer
+#: Desaturate and Perceptual by default; an HDR display's Desaturate file (1 MB) and
+#: Perceptual file are built when its spec asks.
+DEFAULT_VIEWS = ("Colorimetric", "Desaturate", "Perceptual", "Scale", "RGC", "Raw")
 DEFAULT_HDR_VIEWS = ("Colorimetric", "Scale", "RGC", "Raw")
 
 

@@ -179,14 +179,42 @@ def _encoded_shift(display: Display, expected: np.ndarray, shift: np.ndarray) ->
     return np.where(np.isfinite(allowance), allowance, 0.0)
 
 
-def view_allowance(src, back, display, view, codes, expected, clip_encode):
+def view_allowance(src, back, display, view, codes, expected, clip_encode, spec: Spec | None = None):
     """The allowance of a view check: :func:`float32_allowance` through the Colorimetric
-    view for clip, :func:`mapped_allowance` for the gamut-mapped views."""
+    view for clip, :func:`lattice_allowance` for a view defined by its lattice (``spec``
+    rebuilds it), :func:`mapped_allowance` for the other gamut-mapped views."""
     if expected is None:
         return None
-    if paths.view_method(view) == "clip":
+    method = paths.view_method(view)
+    if method == "clip":
         return float32_allowance(src, back, clip_encode, codes)
+    if spec is not None and method in paths.lattice_defined():
+        return lattice_allowance(spec, src, back, display, method, codes)
     return mapped_allowance(src, back, display, view, codes, expected)
+
+
+def lattice_allowance(spec: Spec, src: paths.Endpoint, back: np.ndarray, display: Display, method: str,
+                      codes: np.ndarray) -> np.ndarray | None:
+    """For a view defined by its lattice (:func:`paths.lattice_codes`): the float32 shift of
+    the display's linear values (:func:`float32_shift`) carried through the file itself, one
+    channel at a time, either way, summed over the channels (to first order a bound). The
+    file's pre-shaper is a power law, steepest at 0, where the shift of a zero channel
+    meets it."""
+    if src.matrix is None or src.linear is None:
+        return None
+    ref, shift = float32_shift(src, back, codes)
+    through = paths.lattice_codes(spec, display, method)
+    with np.errstate(all="ignore"):
+        linear = apply_matrix(np.linalg.inv(back), ref)
+        base, total = through(linear), np.zeros_like(linear)
+        for axis in range(3):
+            worst = np.zeros_like(linear)
+            for sign in (1.0, -1.0):
+                moved = linear.copy()
+                moved[..., axis] += sign * shift[..., axis]
+                worst = np.maximum(worst, np.abs(through(moved) - base))
+            total += worst
+    return np.where(np.isfinite(total), total, 0.0)
 
 
 def _half_floats(top: float = np.inf) -> np.ndarray:

@@ -36,7 +36,9 @@ EXACT_VIEW_METHODS = ("scale", "desaturate")
 def view_lut_tolerance(method: str, display: Display) -> float:
     """The bound the LUT issue sets for a config's baked view LUT, in 10-bit codes (ΔE ITP
     for HDR displays, DELTA_E_ITP_PER_PQ_CODE each): the every-set bound for the exact
-    lattices (:data:`EXACT_VIEW_METHODS`), or the clip view's in-gamut target for the others."""
+    lattices (:data:`EXACT_VIEW_METHODS`); for a view defined by its lattice
+    (:data:`generator.luts.view.LATTICE_DEFINED`, compared with that lattice, so exact but for
+    float32), the clip view's in-gamut target, on every set."""
     if display.is_hdr:
         return (tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP if method in EXACT_VIEW_METHODS
                 else tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP)
@@ -210,7 +212,7 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
         if expected is not None and end.output in (paths.CODE, paths.DISPLAY):
             if end.view:
                 allowance = view_allowance(ref, end.matrix, end.display, end.view, inputs.values, expected,
-                                            end.encode)
+                                            end.encode, spec)
             else:
                 allowance = float32_allowance(ref, end.matrix, end.encode, inputs.values)
             allowance = with_encoding(allowance, spec, end.display, expected, _scene_space(spec, end))
@@ -281,7 +283,7 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
                     continue
                 through = None if fn is None else (lambda v, f=fn, s=src: f(s.decode(v)))
                 expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
-                allowance = with_encoding(view_allowance(src, back, display, view, inputs.values, expected, clip),
+                allowance = with_encoding(view_allowance(src, back, display, view, inputs.values, expected, clip, spec),
                                           spec, display, expected)
                 out.append(Check(VIEW, f"{display.name} / {view}", src.name, output=paths.DISPLAY, expected=expected,
                                  problem=problem, allowance=allowance,

@@ -214,13 +214,17 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
 
     Colorimetric is :func:`reference.colorimetric_view`; a gamut-mapped view is
     ``reference.mapped_view`` with the view's method. A baked view clamps
-    display-linear RGB to the range its LUT covers before mapping, as the LUT does.
+    display-linear RGB to the range its LUT covers before mapping, as the LUT does. A view
+    defined by its lattice (:data:`generator.luts.view.LATTICE_DEFINED`) is that lattice
+    (:func:`_lattice_view`).
     """
     method = view_method(view)
     if method == "clip":
         return lambda ref: reference.colorimetric_view(spec, display, ref)
     if method is None:
         return None
+    if method in lattice_defined():
+        return _lattice_view(spec, display, method)
     to_display = reference.scene_to_display_matrix(spec, display)
     bounds = None if method in ANALYTIC_METHODS else lut_range(display, method)
 
@@ -229,6 +233,38 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
         return reference.map_display_linear(display, method, linear if bounds is None else np.clip(linear, *bounds))
 
     return mapped
+
+
+def lattice_defined() -> tuple[str, ...]:
+    """The methods whose view is defined by its lattice (:data:`generator.luts.view.LATTICE_DEFINED`)."""
+    from generator.luts.view import LATTICE_DEFINED
+
+    return LATTICE_DEFINED
+
+
+def lattice_codes(spec: Spec, display: Display, method: str) -> Evaluate:
+    """Display-linear RGB (1.0 = 100 cd/m²) to ``display``'s codes through the file of a view
+    defined by its lattice (:data:`generator.luts.view.LATTICE_DEFINED`), as OCIO runs it,
+    evaluated in float64 from the lattice rebuilt from the spec (a file that differs from it,
+    or an engine that reads it otherwise, fails); a file ending in display light is then
+    encoded as the display space does."""
+    from generator.luts.evaluate import display_file
+    from generator.luts.view import view_lattice
+
+    lat = view_lattice(spec, display, method)
+
+    def codes(linear):
+        out = display_file(lat, np.asarray(linear, dtype=np.float64) / display.clip_high)
+        return out if lat.light is None else reference.display_encode(display, out * display.clip_high)
+
+    return codes
+
+
+def _lattice_view(spec: Spec, display: Display, method: str) -> Evaluate:
+    """Scene reference to ``display``'s codes through a view defined by its lattice: the
+    config's matrix, then :func:`lattice_codes`."""
+    to_display, codes = reference.scene_to_display_matrix(spec, display), lattice_codes(spec, display, method)
+    return lambda ref: codes(apply_matrix(to_display, ref))
 
 
 def display_view_spaces(spec: Spec) -> list[Endpoint]:

@@ -114,6 +114,24 @@ def test_swapped_desaturate_files_are_named(config_copy):
             "sRGB - Display / Desaturate", "Gamma 2.6 DCI-P3 - Display / Desaturate"} <= failing
 
 
+def test_a_perceptual_file_nudged_is_named(config_copy):
+    """A view defined by its lattice (Perceptual) is held to the lattice rebuilt from the spec:
+    one node value of the sRGB file moved by a tenth of a code value fails the file and the
+    view, no other display's."""
+    def nudge(path):
+        clf = path.parent / "luts" / "view_srgb_display_perceptual_33.clf"
+        lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
+        start = next(i for i, line in enumerate(lines) if 'dim="33 33 33 3"' in line) + 1
+        row = start + (16 * 33 + 16) * 33 + 19  # nodes 12 to 20 span codes 0 to 1: (0.5, 0.5, 0.875)
+        values = [float(v) for v in lines[row].split()]
+        lines[row] = " ".join(f"{v + 0.1:.5f}" for v in values) + "\n"
+        clf.write_text("".join(lines), encoding="utf-8")
+
+    failing = _newly_failing(config_copy, nudge, (VIEW, LUT))
+    assert failing >= {"luts/view_srgb_display_perceptual_33.clf", "sRGB - Display / Perceptual"}
+    assert not {item for item in failing if "Perceptual" in item and "sRGB" not in item}
+
+
 def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
     missing = config_copy.parent / "luts" / "mi_log_to_linear.spi1d"
     assert _newly_failing(config_copy, lambda path: missing.unlink(), (TO_REFERENCE, LUT)) == {
