@@ -12,8 +12,8 @@ writer writes them.
 from __future__ import annotations
 
 import tempfile
-from dataclasses import dataclass
-from functools import lru_cache
+from dataclasses import dataclass, field
+from functools import cached_property, lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -62,17 +62,42 @@ class ViewLut:
     display code values, or with ``light`` normalised display-linear RGB (for an
     HDR display, :func:`ends_in_light`: the config encodes). ``figures`` are the
     measured errors through OCIO on :mod:`generator.luts.probes` sets (drawn from
-    the ACEScg gamut when the spec has it), ``bound`` their largest maximum.
+    the ACEScg gamut when the spec has it), measured when first asked for (a build
+    does not), ``bound`` their largest maximum.
     """
 
     filename: str
     data: bytes
     matrix: tuple[tuple[float, float, float], ...]
-    figures: dict
-    bound: float
-    unit: str
+    spec: Spec = field(repr=False)
+    display: Display = field(repr=False)
+    method: str
+    beside: tuple[tuple[str, bytes], ...] = field(default=(), repr=False)
     light: bool = False
     hsv: bool = False
+
+    @cached_property
+    def figures(self) -> dict:
+        """The view as the config runs it (every file by name on the search path, the
+        display's baked curve among them), measured through OCIO."""
+        bakes: dict = {}
+        transform = view_transform(self.matrix, self.filename, *((self.spec, self.display) if self.light else ()),
+                                   hsv_folder="" if self.hsv else None, bakes=bakes)
+        files = {self.filename: self.data, **dict(self.beside),
+                 **{filename: curve_file(baked) for filename, baked in bakes.items()}}
+        with tempfile.TemporaryDirectory() as folder:
+            for filename, content in files.items():
+                (Path(folder) / filename).write_bytes(content)
+            return probes.measure(self.spec, None, self.display, self.method,
+                                  probes.ocio_apply(transform, search_path=folder), gamut_source=_gamut_source(self.spec))
+
+    @property
+    def bound(self) -> float:
+        return max(f.maximum for f in self.figures.values())
+
+    @property
+    def unit(self) -> str:
+        return next(iter(self.figures.values())).unit
 
 
 def ends_in_light(display: Display) -> bool:
@@ -172,21 +197,10 @@ def view_lattice(spec: Spec, display: Display, method: str) -> lattice.Lattice:
 
 def _measured(spec: Spec, display: Display, method: str, name: str, data: bytes, beside: dict, matrix,
               light: bool, hsv_view: bool = False) -> ViewLut:
-    """The view file ``data`` (with the files ``beside`` it, name to bytes) measured through
-    OCIO as the config runs it (every file by name on the search path, the display's baked
-    curve among them), as a :class:`ViewLut`."""
+    """The view file ``data`` (with the files ``beside`` it, name to bytes) as a :class:`ViewLut`,
+    measured when its figures are asked for."""
     matrix = tuple(tuple(float(v) for v in row) for row in matrix)
-    bakes: dict = {}
-    transform = view_transform(matrix, name, *((spec, display) if light else ()),
-                               hsv_folder="" if hsv_view else None, bakes=bakes)
-    files = {name: data, **beside, **{filename: curve_file(baked) for filename, baked in bakes.items()}}
-    with tempfile.TemporaryDirectory() as folder:
-        for filename, content in files.items():
-            (Path(folder) / filename).write_bytes(content)
-        figures = probes.measure(spec, None, display, method, probes.ocio_apply(transform, search_path=folder),
-                                 gamut_source=_gamut_source(spec))
-    unit = next(iter(figures.values())).unit
-    return ViewLut(name, data, matrix, figures, max(f.maximum for f in figures.values()), unit, light, hsv_view)
+    return ViewLut(name, data, matrix, spec, display, method, tuple(beside.items()), light, hsv_view)
 
 
 def _gamut_source(spec: Spec):
