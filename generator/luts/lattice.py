@@ -163,11 +163,18 @@ def _preimages(size: int, shaper: np.ndarray | None, domain: tuple[float, float]
 
 
 def coordinates(lat: Lattice, code) -> np.ndarray:
-    """Lattice coordinates in [0, 1] of source-layout input values, as a reader computes them."""
+    """Lattice coordinates in [0, 1] of source-layout input values, as a reader computes them:
+    the shaper's entries are uniform over the domain, so the entry below a value is found by
+    arithmetic (np.interp's search took 25 ms of a 65³ .cube bake's 0.39 s)."""
     code = np.clip(np.asarray(code, dtype=np.float64), *lat.domain)
+    position = (code - lat.domain[0]) / (lat.domain[1] - lat.domain[0])
     if lat.shaper is None:
-        return (code - lat.domain[0]) / (lat.domain[1] - lat.domain[0])
-    return np.interp(code, np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size), lat.shaper)
+        return position
+    position *= lat.shaper.size - 1
+    with np.errstate(invalid="ignore"):  # a NaN's entry is no index (taken in "clip" mode), its coordinate NaN
+        entry = np.minimum(position.astype(np.int64), lat.shaper.size - 2)  # clipped above: never negative
+    low = np.take(lat.shaper, entry, mode="clip")
+    return low + (position - entry) * (np.take(lat.shaper, entry + 1, mode="clip") - low)
 
 
 def _grid(axis: np.ndarray) -> np.ndarray:
