@@ -198,7 +198,8 @@ def _evaluate(display: Display, method: str, linear_axis: np.ndarray, matrix: np
             code = light.forward(reference.gamut_map(display, method, linear, params))
         else:
             code = reference.map_display_linear(display, method, linear, params)
-    return numbers.rounded(np.maximum(np.nan_to_num(code), 0.0), decimals)
+    finite = code if np.isfinite(code).all() else np.nan_to_num(code)  # the replacements' passes only when needed
+    return numbers.rounded(np.maximum(finite, 0.0), decimals)
 
 
 def display_table(axis: Axis, pre: PreShaper) -> tuple[tuple[float, float], np.ndarray]:
