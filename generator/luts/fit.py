@@ -58,24 +58,24 @@ FIT_MAXITER = 500
 def tetrahedral_weights(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
     """Flat node numbers (m, 4) and weights (m, 4) of tetrahedral interpolation at
     fractional node indices ``index`` (m, 3), ``[r, g, b]`` order."""
-    nodes, weights = _tetrahedra(index, size)
+    nodes, weights = _tetrahedra(np.ascontiguousarray(index.T), size)
     return nodes.T, weights.T
 
 
 def _tetrahedra(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`tetrahedral_weights` corner-major, shapes (4, m): the path from the cell's
-    first corner steps along the axes by decreasing fraction (equal fractions in axis order)."""
+    """:func:`tetrahedral_weights` axis- and corner-major: ``index`` (3, m), node numbers and
+    weights (4, m). The path from the cell's first corner steps along the axes by decreasing
+    fraction (equal fractions in axis order); elementwise over the three axes (reductions
+    along an axis of three are slow in numpy, see :func:`~generator.colorimetry.matrices.channel_max`)."""
     base = np.clip(np.floor(index).astype(np.int64), 0, size - 2)
-    fraction = index - base
-    stride = np.array([size * size, size, 1])
-    first = np.argmax(fraction, axis=1)  # the largest fraction's axis, the first of equals
-    last = 2 - np.argmin(fraction[:, ::-1], axis=1)  # the smallest's, the last of equals
-    low, middle, high = np.sort(fraction, axis=1).T
-    origin = (base[:, 0] * size + base[:, 1]) * size + base[:, 2]
-    far = origin + int(stride.sum())
-    nodes = np.stack([origin, origin + stride[first], far - stride[last], far])
-    weights = np.stack([1.0 - high, high - middle, middle - low, low])
-    return nodes, weights
+    r, g, b = index - base
+    high, low = np.maximum(np.maximum(r, g), b), np.minimum(np.minimum(r, g), b)
+    middle = np.maximum(np.minimum(r, g), np.minimum(np.maximum(r, g), b))
+    first = np.where(r == high, size * size, np.where(g == high, size, 1))  # the first of equal largest
+    last = np.where(b == low, 1, np.where(g == low, size, size * size))  # the last of equal smallest
+    origin = (base[0] * size + base[1]) * size + base[2]
+    far = origin + (size * size + size + 1)
+    return np.stack([origin, origin + first, far - last, far]), np.stack([1.0 - high, high - middle, middle - low, low])
 
 
 @dataclass(frozen=True)
@@ -99,9 +99,8 @@ class _System:
 def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
     """The fit's rows of ``colours`` (set name to (input values, expected codes)): the
     unknowns are the nodes neither :func:`_kept` nor unreached by every colour."""
-    corners = [_tetrahedra(coordinates(lat, code) * (lat.size - 1), lat.size) for code, _ in colours.values()]
-    nodes = np.concatenate([n for n, _ in corners], axis=1)
-    weights = np.concatenate([w for _, w in corners], axis=1)
+    code = np.concatenate([code for code, _ in colours.values()]).T
+    nodes, weights = _tetrahedra(coordinates(lat, np.ascontiguousarray(code)) * (lat.size - 1), lat.size)
     expected = np.ascontiguousarray(np.concatenate([np.nan_to_num(codes) for _, codes in colours.values()]).T)
     ends = np.cumsum([0, *(len(code) for code, _ in colours.values())])
     sets = {name: slice(a, b) for name, a, b in zip(colours, ends[:-1], ends[1:])}
