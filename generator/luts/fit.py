@@ -83,8 +83,9 @@ class _System:
     """The fit's colours in the corner-major layout of :mod:`generator.luts.solve`, with
     what every pass shares: ``nodes`` and tetrahedral ``weights`` (4, m), ``expected``
     codes (3, m), each set's rows (``sets``, name to slice), the ``unknown`` nodes (flat
-    mask), their numbering ``columns`` (4, m; 0 where the node is kept), and ``free``, the
-    weights on unknown nodes (``kept``: the others)."""
+    mask), their numbering ``columns`` (4, m; 0 where the node is kept), ``free``, the
+    weights on unknown nodes, and the rows with a kept node (``touching``, their numbers,
+    and ``kept``, their weights on kept nodes: every other row's are 0)."""
 
     nodes: np.ndarray
     weights: np.ndarray
@@ -93,6 +94,7 @@ class _System:
     unknown: np.ndarray
     columns: np.ndarray
     free: np.ndarray
+    touching: np.ndarray
     kept: np.ndarray
 
 
@@ -109,7 +111,9 @@ def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
     unknown = ~_kept(lat.size, zero) & (np.bincount(nodes.ravel(), minlength=lat.size**3) > 0)
     reached = unknown[nodes]
     columns = np.where(reached, (np.cumsum(unknown) - 1)[nodes], 0)
-    return _System(nodes, weights, expected, sets, unknown, columns, weights * reached, weights * ~reached)
+    touching = np.flatnonzero(~reached.all(axis=0))
+    return _System(nodes, weights, expected, sets, unknown, columns, weights * reached, touching,
+                   weights[:, touching] * ~reached[:, touching])
 
 
 def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
@@ -168,7 +172,9 @@ def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _S
     free, columns, unknown = system.free * scale, system.columns, system.unknown
     count = int(np.count_nonzero(unknown))
     start = np.ascontiguousarray(lat.cube.reshape(-1, 3).T)
-    residual = system.expected * scale - solve.interpolate(system.nodes, system.kept * scale, start)
+    residual = system.expected * scale
+    touching = system.touching
+    residual[:, touching] -= solve.interpolate(system.nodes[:, touching], system.kept * scale[touching], start)
     right = solve.accumulate(columns, free, residual, count) + FIT_REGULARISATION * start[:, unknown]
     # The stopping rule is relative to the whole right-hand side, unreached free nodes included.
     rest = FIT_REGULARISATION**2 * (start**2 @ (~_kept(lat.size, zero) & ~unknown).astype(np.float64))
