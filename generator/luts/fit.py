@@ -84,8 +84,10 @@ class _System:
     what every pass shares: ``nodes`` and tetrahedral ``weights`` (4, m), ``expected``
     codes (3, m), each set's rows (``sets``, name to slice), the ``unknown`` nodes (flat
     mask), their numbering ``columns`` (4, m; 0 where the node is kept), ``free``, the
-    weights on unknown nodes, and the rows with a kept node (``touching``, their numbers,
-    and ``kept``, their weights on kept nodes: every other row's are 0)."""
+    weights on unknown nodes, the rows with a kept node (``touching``, their numbers, and
+    ``kept``, their weights on kept nodes: every other row's are 0), and ``rest``, per
+    channel, the squared right-hand side of the free nodes no colour reaches (the
+    regularisation times their sampled values: the same whatever the colours' weights)."""
 
     nodes: np.ndarray
     weights: np.ndarray
@@ -96,6 +98,7 @@ class _System:
     free: np.ndarray
     touching: np.ndarray
     kept: np.ndarray
+    rest: np.ndarray
 
 
 def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
@@ -108,12 +111,15 @@ def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
     sets = {name: slice(a, b) for name, a, b in zip(colours, ends[:-1], ends[1:])}
     # A free node no colour reaches has the equation FIT_REGULARISATION * (x - start) = 0 alone:
     # it keeps its sampled value, and the unknowns are the free nodes the colours reach.
-    unknown = ~_kept(lat.size, zero) & (np.bincount(nodes.ravel(), minlength=lat.size**3) > 0)
+    free = ~_kept(lat.size, zero)
+    unknown = free & (np.bincount(nodes.ravel(), minlength=lat.size**3) > 0)
     reached = unknown[nodes]
     columns = np.where(reached, (np.cumsum(unknown) - 1)[nodes], 0)
     touching = np.flatnonzero(~reached.all(axis=0))
+    start = np.ascontiguousarray(lat.cube.reshape(-1, 3).T)
+    rest = FIT_REGULARISATION**2 * (start**2 @ (free & ~unknown).astype(np.float64))
     return _System(nodes, weights, expected, sets, unknown, columns, weights * reached, touching,
-                   weights[:, touching] * ~reached[:, touching])
+                   weights[:, touching] * ~reached[:, touching], rest)
 
 
 def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
@@ -177,8 +183,7 @@ def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _S
     residual[:, touching] -= solve.interpolate(system.nodes[:, touching], system.kept * scale[touching], start)
     right = solve.accumulate(columns, free, residual, count) + FIT_REGULARISATION * start[:, unknown]
     # The stopping rule is relative to the whole right-hand side, unreached free nodes included.
-    rest = FIT_REGULARISATION**2 * (start**2 @ (~_kept(lat.size, zero) & ~unknown).astype(np.float64))
-    whole = np.sqrt(np.einsum("ck,ck->c", right, right) + rest)
+    whole = np.sqrt(np.einsum("ck,ck->c", right, right) + system.rest)
     diagonal = np.bincount(columns.ravel(), weights=(free**2).ravel(), minlength=count) + FIT_REGULARISATION
 
     def normal(v):
