@@ -78,7 +78,7 @@ def _tetrahedra(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
     return np.stack([origin, origin + first, far - last, far]), np.stack([1.0 - high, high - middle, middle - low, low])
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class _System:
     """The fit's colours in the corner-major layout of :mod:`generator.luts.solve`, with
     what every pass shares: ``nodes`` and tetrahedral ``weights`` (4, m), ``expected``
@@ -136,14 +136,14 @@ def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
         weights = {}
         for name, rows in system.sets.items():
             error = probes.errors(lat.display, actual[:, rows].T, system.expected[:, rows].T)[0]
-            u = error / max(percentile_99(error) if error.size else 1.0, 1e-12)
+            u = error / max(_percentile_99(error) if error.size else 1.0, 1e-12)
             scale = np.where(u > FIT_REWEIGHT_CUTOFF, FIT_REWEIGHT_TAIL, FIT_REWEIGHT_FLOOR + u**2)
             weights[name] = base[name] * scale
         cube = fit(lat, colours, zero, weights, system)
     return cube
 
 
-def percentile_99(values: np.ndarray) -> float:
+def _percentile_99(values: np.ndarray) -> float:
     """``np.percentile(values, 99)`` (its linear method, the same arithmetic) of a non-empty
     1D array, by one partition: np.percentile imports numpy.ma on first use, a tenth of
     the start-up of numpy itself."""
