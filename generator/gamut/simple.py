@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from generator.colorimetry.matrices import channel_max
 from generator.gamut.display import DisplayGamut, sanitize
 
 
@@ -56,7 +57,7 @@ def scale(rgb, display: DisplayGamut | None = None, params=None) -> np.ndarray:
     numpy.ndarray, shape (..., 3), float64, within [0, 1].
     """
     c = np.maximum(sanitize(rgb), 0.0)
-    return c / np.maximum(1.0, c.max(axis=-1, keepdims=True))
+    return c / np.maximum(1.0, channel_max(c))[..., None]
 
 
 def desaturation_amount(rgb: np.ndarray, neutral: np.ndarray) -> np.ndarray:

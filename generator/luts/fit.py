@@ -6,6 +6,8 @@ The solver is :mod:`generator.luts.solve`."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from generator.luts import numbers, probes, solve
@@ -56,20 +58,68 @@ FIT_MAXITER = 500
 def tetrahedral_weights(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
     """Flat node numbers (m, 4) and weights (m, 4) of tetrahedral interpolation at
     fractional node indices ``index`` (m, 3), ``[r, g, b]`` order."""
+    nodes, weights = _tetrahedra(np.ascontiguousarray(index.T), size)
+    return nodes.T, weights.T
+
+
+def _tetrahedra(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`tetrahedral_weights` axis- and corner-major: ``index`` (3, m), node numbers and
+    weights (4, m). The path from the cell's first corner steps along the axes by decreasing
+    fraction (equal fractions in axis order); elementwise over the three axes (reductions
+    along an axis of three are slow in numpy, see :func:`~generator.colorimetry.matrices.channel_max`)."""
     base = np.clip(np.floor(index).astype(np.int64), 0, size - 2)
-    fraction = index - base
-    order = np.argsort(-fraction, axis=1, kind="stable")
-    sorted_fraction = np.take_along_axis(fraction, order, axis=1)
-    corner = base.copy()
-    nodes, weights = [], []
-    for k in range(4):
-        if k:
-            np.put_along_axis(corner, order[:, k - 1:k], np.take_along_axis(corner, order[:, k - 1:k], 1) + 1, 1)
-        nodes.append((corner[:, 0] * size + corner[:, 1]) * size + corner[:, 2])
-        upper = sorted_fraction[:, k - 1] if k else np.ones(len(index))
-        lower = sorted_fraction[:, k] if k < 3 else np.zeros(len(index))
-        weights.append(upper - lower)
-    return np.stack(nodes, axis=1), np.stack(weights, axis=1)
+    r, g, b = index - base
+    high, low = np.maximum(np.maximum(r, g), b), np.minimum(np.minimum(r, g), b)
+    middle = np.maximum(np.minimum(r, g), np.minimum(np.maximum(r, g), b))
+    first = np.where(r == high, size * size, np.where(g == high, size, 1))  # the first of equal largest
+    last = np.where(b == low, 1, np.where(g == low, size, size * size))  # the last of equal smallest
+    origin = (base[0] * size + base[1]) * size + base[2]
+    far = origin + (size * size + size + 1)
+    return np.stack([origin, origin + first, far - last, far]), np.stack([1.0 - high, high - middle, middle - low, low])
+
+
+@dataclass(frozen=True, eq=False)
+class _System:
+    """The fit's colours in the corner-major layout of :mod:`generator.luts.solve`, with
+    what every pass shares: ``nodes`` and tetrahedral ``weights`` (4, m), ``expected``
+    codes (3, m), each set's rows (``sets``, name to slice), the ``unknown`` nodes (flat
+    mask), their numbering ``columns`` (4, m; 0 where the node is kept), ``free``, the
+    weights on unknown nodes, the rows with a kept node (``touching``, their numbers, and
+    ``kept``, their weights on kept nodes: every other row's are 0), and ``rest``, per
+    channel, the squared right-hand side of the free nodes no colour reaches (the
+    regularisation times their sampled values: the same whatever the colours' weights)."""
+
+    nodes: np.ndarray
+    weights: np.ndarray
+    expected: np.ndarray
+    sets: dict
+    unknown: np.ndarray
+    columns: np.ndarray
+    free: np.ndarray
+    touching: np.ndarray
+    kept: np.ndarray
+    rest: np.ndarray
+
+
+def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
+    """The fit's rows of ``colours`` (set name to (input values, expected codes)): the
+    unknowns are the nodes neither :func:`_kept` nor unreached by every colour."""
+    code = np.concatenate([code for code, _ in colours.values()]).T
+    nodes, weights = _tetrahedra(coordinates(lat, np.ascontiguousarray(code)) * (lat.size - 1), lat.size)
+    expected = np.ascontiguousarray(np.concatenate([np.nan_to_num(codes) for _, codes in colours.values()]).T)
+    ends = np.cumsum([0, *(len(code) for code, _ in colours.values())])
+    sets = {name: slice(a, b) for name, a, b in zip(colours, ends[:-1], ends[1:])}
+    # A free node no colour reaches has the equation FIT_REGULARISATION * (x - start) = 0 alone:
+    # it keeps its sampled value, and the unknowns are the free nodes the colours reach.
+    free = ~_kept(lat.size, zero)
+    unknown = free & (np.bincount(nodes.ravel(), minlength=lat.size**3) > 0)
+    reached = unknown[nodes]
+    columns = np.where(reached, (np.cumsum(unknown) - 1)[nodes], 0)
+    touching = np.flatnonzero(~reached.all(axis=0))
+    start = np.ascontiguousarray(lat.cube.reshape(-1, 3).T)
+    rest = FIT_REGULARISATION**2 * (start**2 @ (free & ~unknown).astype(np.float64))
+    return _System(nodes, weights, expected, sets, unknown, columns, weights * reached, touching,
+                   weights[:, touching] * ~reached[:, touching], rest)
 
 
 def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
@@ -79,37 +129,31 @@ def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
     relative to its set's 99th percentile (see :data:`FIT_REWEIGHT_FLOOR`)."""
     base = {name: np.full(len(code), FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
             for name, (code, _) in colours.items()}
-    corners = _corners(lat, colours)
-    cube = fit(lat, colours, zero, base, corners)
+    system = _system(lat, colours, zero)
+    cube = fit(lat, colours, zero, base, system)
     for _ in range(FIT_REWEIGHTS):
+        actual = solve.interpolate(system.nodes, system.weights, np.ascontiguousarray(cube.reshape(-1, 3).T))
         weights = {}
-        for name, (nodes, w) in corners.items():
-            actual = np.einsum("mk,mkc->mc", w, cube.reshape(-1, 3)[nodes])
-            error = probes.errors(lat.display, actual, np.nan_to_num(colours[name][1]))[0]
-            u = error / max(float(np.percentile(error, 99)) if error.size else 1.0, 1e-12)
+        for name, rows in system.sets.items():
+            error = probes.errors(lat.display, actual[:, rows].T, system.expected[:, rows].T)[0]
+            u = error / max(_percentile_99(error) if error.size else 1.0, 1e-12)
             scale = np.where(u > FIT_REWEIGHT_CUTOFF, FIT_REWEIGHT_TAIL, FIT_REWEIGHT_FLOOR + u**2)
             weights[name] = base[name] * scale
-        cube = fit(lat, colours, zero, weights, corners)
+        cube = fit(lat, colours, zero, weights, system)
     return cube
 
 
-def _corners(lat: Lattice, colours: dict) -> dict:
-    """Set name to the tetrahedral node numbers and weights (m, 4) of its colours."""
-    return {name: tetrahedral_weights(coordinates(lat, code) * (lat.size - 1), lat.size)
-            for name, (code, _) in colours.items()}
-
-
-def _fit_rows(colours: dict, weights: dict, corners: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Node numbers (4, m), weights (4, m) and expected codes (3, m) of the fit's
-    colours, each row scaled by the square root of its colour's weight."""
-    nodes, rows, expected = [], [], []
-    for name, (_, codes) in colours.items():
-        scale = np.sqrt(weights[name])[:, None]
-        corner, w = corners[name]
-        nodes.append(corner)
-        rows.append(w * scale)
-        expected.append(np.nan_to_num(codes) * scale)
-    return tuple(np.ascontiguousarray(np.concatenate(part).T) for part in (nodes, rows, expected))
+def _percentile_99(values: np.ndarray) -> float:
+    """``np.percentile(values, 99)`` (its linear method, the same arithmetic) of a non-empty
+    1D array, by one partition: np.percentile imports numpy.ma on first use, a tenth of
+    the start-up of numpy itself."""
+    index = (values.size - 1) * 0.99
+    low = int(index)
+    if low >= values.size - 1:
+        return float(values.max())
+    a, b = np.partition(values, (low, low + 1))[low:low + 2]
+    t, diff = index - low, b - a
+    return float(b - diff * (1 - t) if t >= 0.5 else a + diff * t)
 
 
 def _kept(size: int, zero: int | None) -> np.ndarray:
@@ -122,34 +166,28 @@ def _kept(size: int, zero: int | None) -> np.ndarray:
     return kept
 
 
-def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, corners: dict | None = None) -> np.ndarray:
+def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _System | None = None) -> np.ndarray:
     """Node values minimising the weighted squared error of tetrahedral interpolation
     on ``colours`` (set name to (input values, expected codes); ``weights``, set name
-    to a weight per colour; ``corners``, :func:`_corners` if already computed), plus
+    to a weight per colour; ``system``, :func:`_system` if already built), plus
     :data:`FIT_REGULARISATION` times the squared change of each node. The
     diagonal's nodes (greys) and, with ``zero``, the nodes of a zero channel are
     kept at their sampled values; the others solve the normal equations."""
-    total = lat.size**3
-    nodes, weights, expected = _fit_rows(colours, weights, corners or _corners(lat, colours))
-    kept = _kept(lat.size, zero)
-    start = np.ascontiguousarray(lat.cube.reshape(total, 3).T)
-    # A free node no colour reaches has the equation FIT_REGULARISATION * (x - start) = 0 alone:
-    # it keeps its sampled value, and the unknowns are the free nodes the colours reach.
-    unknown = ~kept & (np.bincount(nodes.ravel(), minlength=total) > 0)
-    reached = unknown[nodes]
-    columns = np.where(reached, (np.cumsum(unknown) - 1)[nodes], 0)
-    free_weights = np.where(reached, weights, 0.0)
+    system = system or _system(lat, colours, zero)
+    scale = np.sqrt(np.concatenate([weights[name] for name in system.sets]))
+    free, columns, unknown = system.free * scale, system.columns, system.unknown
     count = int(np.count_nonzero(unknown))
-    residual = expected - solve.interpolate(nodes, weights - free_weights, start)
-    right = solve.accumulate(columns, free_weights, residual, count) + FIT_REGULARISATION * start[:, unknown]
+    start = np.ascontiguousarray(lat.cube.reshape(-1, 3).T)
+    residual = system.expected * scale
+    touching = system.touching
+    residual[:, touching] -= solve.interpolate(system.nodes[:, touching], system.kept * scale[touching], start)
+    right = solve.accumulate(columns, free, residual, count) + FIT_REGULARISATION * start[:, unknown]
     # The stopping rule is relative to the whole right-hand side, unreached free nodes included.
-    rest = FIT_REGULARISATION**2 * (start**2 @ (~kept & ~unknown).astype(np.float64))
-    whole = np.sqrt(np.einsum("ck,ck->c", right, right) + rest)
-    diagonal = np.bincount(columns.ravel(), weights=(free_weights**2).ravel(), minlength=count) + FIT_REGULARISATION
+    whole = np.sqrt(np.einsum("ck,ck->c", right, right) + system.rest)
+    diagonal = np.bincount(columns.ravel(), weights=(free**2).ravel(), minlength=count) + FIT_REGULARISATION
 
     def normal(v):
-        return solve.accumulate(columns, free_weights, solve.interpolate(columns, free_weights, v), count) + \
-            FIT_REGULARISATION * v
+        return solve.accumulate(columns, free, solve.interpolate(columns, free, v), count) + FIT_REGULARISATION * v
 
     values = start.copy()
     values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, FIT_RTOL * whole,

@@ -163,11 +163,18 @@ def _preimages(size: int, shaper: np.ndarray | None, domain: tuple[float, float]
 
 
 def coordinates(lat: Lattice, code) -> np.ndarray:
-    """Lattice coordinates in [0, 1] of source-layout input values, as a reader computes them."""
+    """Lattice coordinates in [0, 1] of source-layout input values, as a reader computes them:
+    the shaper's entries are uniform over the domain, so the entry below a value is found by
+    arithmetic (np.interp's search took 25 ms of a 65³ .cube bake's 0.39 s)."""
     code = np.clip(np.asarray(code, dtype=np.float64), *lat.domain)
+    position = (code - lat.domain[0]) / (lat.domain[1] - lat.domain[0])
     if lat.shaper is None:
-        return (code - lat.domain[0]) / (lat.domain[1] - lat.domain[0])
-    return np.interp(code, np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size), lat.shaper)
+        return position
+    position *= lat.shaper.size - 1
+    with np.errstate(invalid="ignore"):  # a NaN's entry is no index (taken in "clip" mode), its coordinate NaN
+        entry = np.minimum(position.astype(np.int64), lat.shaper.size - 2)  # clipped above: never negative
+    low = np.take(lat.shaper, entry, mode="clip")
+    return low + (position - entry) * (np.take(lat.shaper, entry + 1, mode="clip") - low)
 
 
 def _grid(axis: np.ndarray) -> np.ndarray:
@@ -191,7 +198,8 @@ def _evaluate(display: Display, method: str, linear_axis: np.ndarray, matrix: np
             code = light.forward(reference.gamut_map(display, method, linear, params))
         else:
             code = reference.map_display_linear(display, method, linear, params)
-    return numbers.rounded(np.maximum(np.nan_to_num(code), 0.0), decimals)
+    finite = code if np.isfinite(code).all() else np.nan_to_num(code)  # the replacements' passes only when needed
+    return numbers.rounded(np.maximum(finite, 0.0), decimals)
 
 
 def display_table(axis: Axis, pre: PreShaper) -> tuple[tuple[float, float], np.ndarray]:

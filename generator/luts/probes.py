@@ -29,6 +29,7 @@ import numpy as np
 
 from generator import tolerances
 from generator.colorimetry import reference
+from generator.colorimetry.matrices import channel_max, channel_min
 from generator.spec.schema import ColourSpace, Display, Spec
 
 SETS = ("in_gamut", "dark", "out_of_gamut", "over_range")
@@ -59,13 +60,30 @@ def _display_linear(spec: Spec, source: ColourSpace, display: Display, rng, coun
     to_display = reference.scene_to_display_matrix(spec, display) @ reference.space_matrix(spec, source)
     sets = {"in_gamut": rng.random((count, 3)) * high}
     dark = rng.random((count, 3))
-    sets["dark"] = dark / dark.max(axis=-1, keepdims=True) * 10.0 ** rng.uniform(-4, -2, (count, 1))
-    wide = reference.apply_matrix(to_display, rng.random((8 * count, 3)))
-    sets["out_of_gamut"] = wide[wide.min(axis=-1) < 0][:count]
-    scale = high * 10.0 ** rng.uniform(0, np.log10(OVER_RANGE), (8 * count, 1))
-    bright = reference.apply_matrix(to_display, rng.random((8 * count, 3)) * scale)
-    sets["over_range"] = bright[bright.max(axis=-1) > high][:count]
+    sets["dark"] = dark / channel_max(dark)[:, None] * 10.0 ** rng.uniform(-4, -2, (count, 1))
+    wide = rng.random((8 * count, 3))
+    sets["out_of_gamut"] = _first(count, lambda rgb: channel_min(rgb) < 0,
+                                  lambda rows: reference.apply_matrix(to_display, rows), wide)
+    exponent = rng.uniform(0, np.log10(OVER_RANGE), (8 * count, 1))
+    bright = rng.random((8 * count, 3))
+    sets["over_range"] = _first(count, lambda rgb: channel_max(rgb) > high,
+                                lambda rows, e: reference.apply_matrix(to_display, rows * (high * 10.0 ** e)), bright,
+                                exponent)
     return sets
+
+
+def _first(count: int, keep, make, *drawn: np.ndarray) -> np.ndarray:
+    """The first ``count`` colours ``make(*rows)`` for which ``keep`` holds, the rows of the
+    arrays ``drawn`` (equally long) taken ``2 * count`` at a time: the candidates past the
+    ``count``-th kept one are drawn (the generator's sequence stays the same) but never made."""
+    block, found, total = max(2 * count, 1), [], 0
+    for start in range(0, len(drawn[0]), block):
+        made = make(*(d[start:start + block] for d in drawn))
+        found.append(made[keep(made)][:count - total])
+        total += len(found[-1])
+        if total >= count:
+            break
+    return np.concatenate(found) if found else np.empty((0, 3))
 
 
 def representable(spec: Spec, source: ColourSpace, ref: np.ndarray, code: np.ndarray | None = None) -> np.ndarray:
@@ -134,7 +152,7 @@ def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
 
         with np.errstate(all="ignore"):
             return np.nan_to_num(delta_e_itp(display, actual, expected)), "ΔE ITP"
-    return np.abs(actual - expected).max(axis=-1) * 1023.0, "10-bit codes"
+    return channel_max(np.abs(actual - expected)) * 1023.0, "10-bit codes"
 
 
 def set_errors(spec: Spec, source: ColourSpace | None, display: Display, method: str, apply,

@@ -24,6 +24,48 @@ def _dense(nodes, weights, size):
     return matrix
 
 
+def test_tetrahedra_step_along_the_axes_by_decreasing_fraction_equal_ones_in_axis_order():
+    """Every corner path of a cell, ties included (fractions on a coarse grid): the corners are
+    the cell's first corner plus unit steps taken largest fraction first, the weights the
+    differences of the sorted fractions, and they interpolate a linear function exactly."""
+    size, rng = 5, np.random.default_rng(RNG_SEED)
+    index = rng.integers(0, size - 1, (2000, 3)) + rng.integers(0, 4, (2000, 3)) / 4.0
+    index[::7] = size - 1  # the last node: the cell below it
+    nodes, weights = fitting.tetrahedral_weights(index, size)
+    base = np.clip(np.floor(index), 0, size - 2).astype(np.int64)
+    fraction = index - base
+    order = np.argsort(-fraction, axis=1, kind="stable")
+    steps = np.zeros((len(index), 4, 3), dtype=np.int64)
+    for k in range(1, 4):
+        steps[:, k] = steps[:, k - 1]
+        steps[np.arange(len(index)), k, order[:, k - 1]] += 1
+    corners = base[:, None, :] + steps
+    assert np.array_equal(nodes, (corners[..., 0] * size + corners[..., 1]) * size + corners[..., 2])
+    ordered = np.concatenate([np.ones((len(index), 1)), -np.sort(-fraction, axis=1), np.zeros((len(index), 1))], 1)
+    assert np.array_equal(weights, ordered[:, :-1] - ordered[:, 1:])
+    linear = np.arange(size**3).reshape(size, size, size).astype(np.float64)  # r * size² + g * size + b
+    assert np.allclose((weights * linear.ravel()[nodes]).sum(axis=1), index @ [size * size, size, 1.0])
+
+
+def test_the_percentile_of_the_reweighting_is_numpys():
+    rng = np.random.default_rng(RNG_SEED)
+    for size in (1, 2, 99, 100, 101, 4097):
+        values = rng.random(size) * 50.0
+        values[::3] = np.round(values[::3])  # ties
+        assert fitting._percentile_99(values.copy()) == float(np.percentile(values, 99)), size
+
+
+def test_coordinates_interpolate_the_shaper_table_uniform_over_the_domain():
+    rng = np.random.default_rng(RNG_SEED)
+    shaper = np.concatenate([[0.0, 0.0], np.sort(rng.random(60)), [1.0, 1.0]])  # flat runs at both ends
+    lat = lattice.Lattice(None, None, "clip", None, None, None, (-0.5, 3.0), shaper, np.zeros((2, 2, 2, 3)))
+    code = np.concatenate([rng.uniform(-2.0, 5.0, 5000), np.linspace(-0.5, 3.0, shaper.size), [np.nan]])
+    expected = np.interp(np.clip(code, -0.5, 3.0), np.linspace(-0.5, 3.0, shaper.size), shaper)
+    got = lattice.coordinates(lat, code)
+    assert np.allclose(got, expected, rtol=0, atol=1e-15, equal_nan=True)
+    assert np.isnan(got[-1])
+
+
 def test_interpolate_and_accumulate_are_the_matrix_and_its_transpose():
     rng = np.random.default_rng(RNG_SEED)
     nodes, weights, rows = _problem(4, 200, rng)
