@@ -64,34 +64,9 @@ def _terminated(signum, frame) -> None:
     raise SystemExit(128 + signum)
 
 
-#: glibc's ``mallopt`` parameters (malloc.h): the free memory at the top of the heap past which
-#: it is returned to the system, and the size from which a block gets a mapping of its own.
-_M_TRIM_THRESHOLD, _M_MMAP_THRESHOLD = -1, -3
-
-#: Blocks up to this size come from the heap (glibc's largest such threshold on 64-bit systems;
-#: a 65³ lattice's arrays are 7 MB at most), and up to this much free memory stays in it.
-_HEAP_BLOCK, _HEAP_KEPT = 32 << 20, 1 << 30
-
-
-def _keep_freed_memory() -> None:
-    """Have glibc's malloc keep the memory numpy frees for its next arrays, instead of returning
-    it to the system for the kernel to fault in again, a page at a time: a 65³ .cube bake
-    touches 19 thousand fresh pages, not 32, and takes 20 ms less (measured). Nothing without
-    glibc's ``mallopt``."""
-    import ctypes  # numpy imports it too
-
-    try:
-        mallopt = ctypes.CDLL(None).mallopt
-    except (OSError, AttributeError, TypeError):
-        return
-    mallopt(_M_MMAP_THRESHOLD, _HEAP_BLOCK)
-    mallopt(_M_TRIM_THRESHOLD, _HEAP_KEPT)
-
-
 def main(argv=None) -> None:
     """Run a command; on the main thread, SIGTERM ends it as an exception would (staged
     output removed), the previous handler restored after."""
-    _keep_freed_memory()
     if threading.current_thread() is not threading.main_thread():
         _run(argv)
         return
