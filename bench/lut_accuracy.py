@@ -155,10 +155,12 @@ def methods(spec, source: str, display: str, size: int, folder: Path) -> None:
 def config_views(spec) -> None:
     """The config's baked views of every display (HDR displays' files end in display light,
     which the config's display space encodes; Desaturate is a lattice in OCIO's HSV),
-    measured through OCIO on ACEScg colours."""
+    measured through OCIO on ACEScg colours against the mapping. Perceptual's view is its
+    lattice (verify holds OCIO to that): its row is the lattice's departure from the mapping."""
     from generator.luts.view import bake_view_lut
 
-    print("\n== config views (as the config runs them), ten-bit codes (SDR) or ΔE ITP (HDR), max/p99")
+    print("\n== config views (as the config runs them) against the mapping, ten-bit codes (SDR) or ΔE ITP (HDR), "
+          "max/p99; perceptual: how far its lattice departs from the mapping")
     for display in spec.displays:
         for method in ("scale", "desaturate", "perceptual"):
             lut = bake_view_lut(spec, display, method)

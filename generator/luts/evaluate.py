@@ -14,27 +14,44 @@ from __future__ import annotations
 import numpy as np
 
 from generator.luts.fit import tetrahedral_weights
-from generator.luts.lattice import Lattice, PreShaper
+from generator.luts.lattice import Lattice, PreShaper, grid, preimages
 from generator.luts.solve import interpolate
 
 
-def display_file(lat: Lattice, linear) -> np.ndarray:
+def coordinates(lat: Lattice, linear) -> np.ndarray:
+    """The lattice coordinates (0 to 1 along each axis, shape (m, 3)) of normalised
+    display-linear RGB ``linear`` (..., 3) in ``lat``'s file: the pre-shaper, the Range that
+    clamps to the shaper's domain, the shaper table. NaN reads as 0."""
+    flat = np.asarray(linear, dtype=np.float64).reshape(-1, 3)
+    with np.errstate(all="ignore"):
+        shaped = np.clip(lat.pre.forward(np.nan_to_num(flat, nan=0.0)), *lat.domain)
+    return np.interp(shaped, np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size), lat.shaper)
+
+
+def display_file(lat: Lattice, linear, coordinate_shift=None) -> np.ndarray:
     """The output of ``lat``'s file for normalised display-linear RGB ``linear`` (..., 3),
     1 = the display's peak: code values, or normalised display light for a file ending in
-    light. A colour with a NaN channel gives NaN (the verifier holds non-finite
-    probes to the display's range instead); an infinity is clamped by the Range."""
+    light; ``coordinate_shift`` (broadcast to ``linear``) moves the lattice coordinates
+    (:func:`coordinates`) first, as float32 rounding in the file's Range and shaper does.
+    A colour with a NaN channel gives NaN (the verifier holds non-finite probes to the
+    display's range instead); an infinity is clamped by the Range."""
     if not isinstance(lat.pre, PreShaper) or lat.shaper is None or lat.post is not None:
         raise ValueError("display_file evaluates a display-layout lattice behind a pre-shaper")
     linear = np.asarray(linear, dtype=np.float64)
-    flat = linear.reshape(-1, 3)
-    number = ~np.isnan(flat).any(axis=1)
-    with np.errstate(all="ignore"):
-        shaped = np.clip(lat.pre.forward(np.nan_to_num(flat, nan=0.0)), *lat.domain)
-    entries = np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size)
-    index = np.interp(shaped, entries, lat.shaper) * (lat.size - 1)
-    nodes, weights = tetrahedral_weights(index, lat.size)
+    number = ~np.isnan(linear.reshape(-1, 3)).any(axis=1)
+    coordinate = coordinates(lat, linear)
+    if coordinate_shift is not None:
+        coordinate = np.clip(coordinate + np.broadcast_to(coordinate_shift, linear.shape).reshape(-1, 3), 0.0, 1.0)
+    nodes, weights = tetrahedral_weights(coordinate * (lat.size - 1), lat.size)
     out = interpolate(nodes.T, weights.T, lat.cube.reshape(-1, 3).T).T
     if lat.light is not None:
         out = lat.light.inverse(out)
     out[~number] = np.nan
     return out.reshape(linear.shape)
+
+
+def cell_inputs(lat: Lattice) -> np.ndarray:
+    """One normalised display-linear input ((n - 1)³, 3) in every cell of ``lat``'s file: the
+    middle of its pre-shaped span on each axis."""
+    shaped = preimages(lat.size, lat.shaper, lat.domain)
+    return grid(lat.pre.inverse((shaped[1:] + shaped[:-1]) / 2.0)).reshape(-1, 3)

@@ -153,13 +153,13 @@ class Lattice:
         return self.cube.shape[0]
 
 
-def _preimages(size: int, shaper: np.ndarray | None, domain: tuple[float, float]) -> np.ndarray:
+def preimages(size: int, shaper: np.ndarray | None, domain: tuple[float, float]) -> np.ndarray:
     """Input values landing exactly on each node: the inverse of the written table."""
     u = np.arange(size, dtype=np.float64) / (size - 1)
-    grid = np.linspace(domain[0], domain[1], shaper.size if shaper is not None else 2)
+    entries = np.linspace(domain[0], domain[1], shaper.size if shaper is not None else 2)
     table = shaper if shaper is not None else np.array([0.0, 1.0])
     increasing = np.concatenate([[True], np.diff(table) > 0])  # drop flat runs: keep the first entry of each
-    return np.interp(u, table[increasing], grid[increasing])
+    return np.interp(u, table[increasing], entries[increasing])
 
 
 def coordinates(lat: Lattice, code) -> np.ndarray:
@@ -177,23 +177,24 @@ def coordinates(lat: Lattice, code) -> np.ndarray:
     return low + (position - entry) * (np.take(lat.shaper, entry + 1, mode="clip") - low)
 
 
-def _grid(axis: np.ndarray) -> np.ndarray:
+def grid(axis: np.ndarray) -> np.ndarray:
+    """Every combination of the per-axis values ``axis`` (n,), shape (n, n, n, 3), ``[r, g, b]`` order."""
     n = axis.size
-    grid = np.empty((n, n, n, 3))
-    grid[..., 0] = axis[:, None, None]
-    grid[..., 1] = axis[None, :, None]
-    grid[..., 2] = axis[None, None, :]
-    return grid
+    out = np.empty((n, n, n, 3))
+    out[..., 0] = axis[:, None, None]
+    out[..., 1] = axis[None, :, None]
+    out[..., 2] = axis[None, None, :]
+    return out
 
 
-def _evaluate(display: Display, method: str, linear_axis: np.ndarray, matrix: np.ndarray, params,
+def node_values(display: Display, method: str, linear_axis: np.ndarray, matrix: np.ndarray, params,
               light: PreShaper | None = None, decimals: int = CUBE_DECIMALS) -> np.ndarray:
     """Mapped code values on the grid of per-axis linear values, ``[r, g, b]`` order (with
     ``light``, its forward curve of the mapped normalised display-linear values instead).
     Codes are not clipped above 1: HLG's inverse EOTF exceeds 1 for saturated colours."""
-    grid = _grid(linear_axis)
+    nodes = grid(linear_axis)
     with np.errstate(all="ignore"):
-        linear = reference.apply_matrix(matrix, grid) if matrix is not None else grid
+        linear = reference.apply_matrix(matrix, nodes) if matrix is not None else nodes
         if light is not None:
             code = light.forward(reference.gamut_map(display, method, linear, params))
         else:
@@ -255,7 +256,7 @@ def _log_lattice(display: Display, method: str, axis: LogAxis, params) -> tuple[
     top = reference.display_encode(display, np.full(3, display.clip_high))[0]
     scale = HLG_UNCLIPPED_SCALE if display.eotf_name == "HLG" else 1.0
     with np.errstate(all="ignore"):
-        mapped = METHODS[method](_grid(axis.nodes()), None, params)  # clip and scale need no display gamut
+        mapped = METHODS[method](grid(axis.nodes()), None, params)  # clip and scale need no display gamut
         code = reference.display_encode(display, mapped * display.clip_high * scale)
         cube = axis.coordinate(grey_linear(display, np.nan_to_num(code) / top) / scale)
     # Mapped colours never pass the peak, so entries past the first one beyond it are never
@@ -272,7 +273,7 @@ def _log_light(display: Display, method: str, axis: LogAxis, params) -> np.ndarr
     """Cube of the :class:`LogAxis` coordinates of the mapped colours (display light)."""
     from generator.gamut import METHODS
 
-    mapped = METHODS[method](_grid(axis.nodes()), None, params)  # clip and scale need no display gamut
+    mapped = METHODS[method](grid(axis.nodes()), None, params)  # clip and scale need no display gamut
     return numbers.rounded(axis.coordinate(mapped), LOG_DECIMALS)
 
 
@@ -301,11 +302,11 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
         return Lattice(source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, post, LOG_DECIMALS)
     pre = PreShaper.for_display(display, scaled=not light)
     domain, table = display_table(axis, pre)
-    linear = pre.inverse(_preimages(size, table, domain)) * display.clip_high
+    linear = pre.inverse(preimages(size, table, domain)) * display.clip_high
     if light:
-        cube = _evaluate(display, method, linear, None, params, pre, LOG_DECIMALS)
+        cube = node_values(display, method, linear, None, params, pre, LOG_DECIMALS)
         return Lattice(source, display, method, decode, matrix, pre, domain, table, cube, None, LOG_DECIMALS, pre)
-    cube = _evaluate(display, method, linear, None, params)
+    cube = node_values(display, method, linear, None, params)
     return Lattice(source, display, method, decode, matrix, pre, domain, table, cube)
 
 
@@ -332,11 +333,11 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: st
 
     domain = shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
     table = _shaper_table(spec, source, display, size, shaper, domain)
-    codes = _preimages(size, table, domain)
+    codes = preimages(size, table, domain)
     with np.errstate(all="ignore"):
         linear = source.curve.decode(codes)
     matrix = reference.scene_to_display_matrix(spec, display) @ reference.space_matrix(spec, source)
-    cube = _evaluate(display, method, linear, matrix, params)
+    cube = node_values(display, method, linear, matrix, params)
     lat = Lattice(source, display, method, None, None, None, domain, table, cube)
     axis = source_axis(spec, source, display, size) if shaper == "auto" else None
     zero = axis.zero if axis is not None and axis.values[axis.zero] == 0.0 else None

@@ -160,7 +160,8 @@ def bake_view_lut_cached(spec: Spec, display: Display, method: str) -> ViewLut:
 
 
 def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = None, params=None) -> ViewLut:
-    """Bake the view of ``display`` with gamut mapping ``method`` and measure it through OCIO.
+    """Bake the view of ``display`` with gamut mapping ``method`` (measured through OCIO when its
+    figures are asked for).
 
     Parameters
     ----------

@@ -106,12 +106,16 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
     return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
 
 
-#: Methods that leave the display's gamut alone: their view read backwards (a display-referred
-#: file into the scene, through its "<view> - <display>" space) is the Colorimetric view's
-#: inverse, exact for every code, where OCIO's inverse of their many-to-one lattice would pick
-#: one of the colours that map to a code (display white read through Scale came back as scene
-#: 2.65, the over-range grey the lattice's inversion landed on).
-INVERTED_AS_COLORIMETRIC = ("scale", "desaturate")
+#: Methods whose view read backwards (a display-referred file into the scene, through its
+#: "<view> - <display>" space) is the Colorimetric view's inverse: the colours the display
+#: shows, exactly, for every code. Scale and desaturate leave the display's gamut alone, so
+#: that is their inverse; OCIO's inverse of their many-to-one lattice picks one of the
+#: colours that map to a code (display white read through Scale came back as scene 2.65, the
+#: over-range grey the lattice's inversion landed on). Perceptual moves displayable colours
+#: too and has no inverse a lattice holds: OCIO's inversion of its 33³ file is off by a
+#: median of 23 ten-bit codes on a round trip, sRGB (0.9, 0.1, 0.1) reading back as ACEScg
+#: (0.77, -0.08, -0.04); the colours shown are what a file rendered through it holds.
+INVERTED_AS_COLORIMETRIC = ("scale", "desaturate", "perceptual")
 
 
 def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict, view_luts: dict) -> ocio.ViewTransform:

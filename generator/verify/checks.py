@@ -211,8 +211,8 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
         allowance = None
         if expected is not None and end.output in (paths.CODE, paths.DISPLAY):
             if end.view:
-                allowance = view_allowance(ref, end.matrix, end.display, end.view, inputs.values, expected,
-                                            end.encode, spec)
+                allowance = view_allowance(spec, ref, end.matrix, end.display, end.view, inputs.values, expected,
+                                            end.encode)
             else:
                 allowance = float32_allowance(ref, end.matrix, end.encode, inputs.values)
             allowance = with_encoding(allowance, spec, end.display, expected, _scene_space(spec, end))
@@ -283,7 +283,7 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
                     continue
                 through = None if fn is None else (lambda v, f=fn, s=src: f(s.decode(v)))
                 expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
-                allowance = with_encoding(view_allowance(src, back, display, view, inputs.values, expected, clip, spec),
+                allowance = with_encoding(view_allowance(spec, src, back, display, view, inputs.values, expected, clip),
                                           spec, display, expected)
                 out.append(Check(VIEW, f"{display.name} / {view}", src.name, output=paths.DISPLAY, expected=expected,
                                  problem=problem, allowance=allowance,

@@ -14,7 +14,7 @@ from generator.colorimetry.matrices import apply_matrix
 from generator.ocio.curves import curve_label
 from generator.spec.schema import Display, Spec
 from generator.verify import paths, probes
-from generator.verify.allowance import hsv_file_allowance
+from generator.verify.allowance import hsv_file_allowance, lattice_file_allowance
 from generator.verify.checks import LUT, Check, _band, _evaluate, _judging, baked_lut
 from generator.verify.probes import Family, Probes, Sizes
 
@@ -49,7 +49,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
     applied tetrahedrally) against its view's mapping."""
     from generator.ocio.emit import LUT_FOLDER
 
-    from generator.luts.view import HSV_METHOD, ends_in_light, view_filename
+    from generator.luts.view import HSV_METHOD, LATTICE_DEFINED, ends_in_light, view_filename
 
     out = []
     for display in spec.displays:
@@ -66,14 +66,42 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
                 checks = hsv_lut_checks(spec, display, view, families)
                 out += [c for c in checks if c.lut not in {o.lut for o in out}]  # one check of the shared file
                 continue
-            fn = paths.view_function(spec, display, view)
-            expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
             name = f"{LUT_FOLDER}/{view_filename(spec, display, method)}"
             encode = partial(_encode_light, display) if ends_in_light(display) else None
-            out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=inputs,
-                             expected=expected, output=paths.DISPLAY, encode=encode,
+            allowance = None
+            if method in LATTICE_DEFINED:
+                checked, expected = _lattice_probes(spec, display, method, families)
+                allowance = lattice_file_allowance(spec, display, method, checked.values * display.clip_high)
+            else:
+                fn = paths.view_function(spec, display, view)
+                checked = inputs
+                expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
+            out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=checked,
+                             expected=expected, output=paths.DISPLAY, encode=encode, allowance=allowance,
                              **_judging(None, display, None, view)))
     return out
+
+
+def _lattice_probes(spec: Spec, display: Display, method: str, families: list[Family]) -> tuple[Probes, np.ndarray]:
+    """The probes of a view file defined by its lattice (:data:`generator.luts.view.LATTICE_DEFINED`)
+    and their expected codes: ``families`` and a colour in every cell against the lattice
+    rebuilt from the spec (every cell, so no part of the file goes unread), and every node
+    against the *mapping itself* at the node's input, rounded as the file holds it (a lattice
+    assembled wrongly fails here, whatever the rebuilt lattice says)."""
+    from generator.luts.evaluate import cell_inputs
+    from generator.luts.lattice import grid, node_values, preimages
+    from generator.luts.view import view_lattice
+
+    lat, peak = view_lattice(spec, display, method), display.clip_high
+    through = paths.lattice_codes(spec, display, method)
+    lattice_families = (*families, Family("a colour in every lattice cell", cell_inputs(lat)))
+    axis = lat.pre.inverse(preimages(lat.size, lat.shaper, lat.domain))
+    nodes = Family("lattice nodes (the mapping itself)", grid(axis).reshape(-1, 3))
+    with np.errstate(all="ignore"):
+        held = node_values(display, method, axis * peak, None, None, lat.light, lat.decimals).reshape(-1, 3)
+        at_nodes = held if lat.light is None else reference.display_encode(display, lat.light.inverse(held) * peak)
+        expected = np.concatenate([through(f.values * peak) for f in lattice_families] + [at_nodes])
+    return Probes((*lattice_families, nodes)), expected
 
 
 def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Family]) -> list[Check]:

@@ -112,6 +112,12 @@ def _worst(check: Check, values: np.ndarray, step: float = 0.0) -> float:
     return float(np.nanmax(errors)) if not np.all(np.isnan(errors)) else 0.0
 
 
+def _engine_output(check: Check, values: np.ndarray) -> np.ndarray:
+    """An engine's raw output as the check judges it (a view file ending in light, encoded)."""
+    values = np.asarray(values, dtype=np.float64).reshape(-1, 3)
+    return values if check.encode is None else check.encode(values)
+
+
 def _approx(outcome: Outcome, why: str) -> Outcome:
     return replace(outcome, verdict=APPROX, note=why, values=None)
 
@@ -120,7 +126,8 @@ def _explain(config: Path, outcome: Outcome) -> Outcome:
     """A default-flags failure the flags explain becomes APPROX, with the flag and operator named."""
     if outcome.violations or outcome.errors is None:
         return outcome
-    why = explain_default_flags(config, outcome.check, lambda values: _worst(outcome.check, values))
+    why = explain_default_flags(config, outcome.check,
+                                lambda values: _worst(outcome.check, _engine_output(outcome.check, values)))
     return _approx(outcome, why) if why else outcome
 
 
@@ -135,7 +142,8 @@ def _inherit(config: Path, outcome: Outcome, explained: dict) -> Outcome:
     proc = processor(cfg, outcome.check, config.parent)
     import PyOpenColorIO as ocio
 
-    ours = apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT), outcome.check.probes.values)
+    ours = _engine_output(outcome.check, apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT),
+                                               outcome.check.probes.values))
     against = replace(outcome.check, expected=ours)
     gap = _worst(against, outcome.values, outcome.step)
     if gap > outcome.check.tolerance:

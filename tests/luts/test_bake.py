@@ -31,7 +31,7 @@ def _transform(paths):
 
 def _node_inputs(req, lat, picks=(0, 3, 9, 16)):
     """Input values landing on lattice nodes, and the outputs there."""
-    coordinates = lattice._preimages(lat.size, lat.shaper, lat.domain)
+    coordinates = lattice.preimages(lat.size, lat.shaper, lat.domain)
     index = np.array([(i, j, k) for i in picks for j in picks for k in picks])
     values = coordinates[index]
     if lat.pre is not None:  # display layout: input is source code; invert pre-shaper and matrix
@@ -124,9 +124,9 @@ def test_resolve_cube_keeps_greys_and_zero_channels(default_spec, tmp_path):
     assert np.abs(apply(grey) - expected).max() * 1023 <= tolerances.LUT_CUBE_GREY_CODES
     lat = bake.build_lattice(req)
     zero = lattice.source_axis(default_spec, req.source, req.display, 33).zero
-    linear = req.source.curve.decode(lattice._preimages(lat.size, lat.shaper, lat.domain))
+    linear = req.source.curve.decode(lattice.preimages(lat.size, lat.shaper, lat.domain))
     matrix = reference.scene_to_display_matrix(default_spec, req.display) @ reference.space_matrix(default_spec, req.source)
-    sampled = lattice._evaluate(req.display, "clip", linear, matrix, None)
+    sampled = lattice.node_values(req.display, "clip", linear, matrix, None)
     np.testing.assert_array_equal(lat.cube[zero], sampled[zero])
     np.testing.assert_array_equal(lat.cube[:, :, zero], sampled[:, :, zero])
     diagonal = np.arange(lat.size)

@@ -22,10 +22,12 @@ def _colours(rng) -> np.ndarray:
     return np.concatenate([inside, faces, outside, far]).astype(np.float32).astype(np.float64)
 
 
-@pytest.mark.parametrize("display_name", ["sRGB - Display", "Rec.1886 Rec.709 - Display", "Rec.2100-PQ - Display"])
+@pytest.mark.parametrize("display_name", ["sRGB - Display", "Rec.1886 Rec.709 - Display", "Rec.2100-PQ - Display",
+                                          "Display P3 HDR - Display"])
 def test_display_file_is_the_file_as_ocio_runs_it(default_spec, tmp_path, display_name):
-    """sRGB's pre-shaper is CLF's moncurve, Rec.1886's a mirrored power, PQ's file ends in
-    display light through the pre-shaper's inverse: OCIO (lossless) and the evaluation agree
+    """sRGB's pre-shaper is CLF's moncurve, Rec.1886's a mirrored power, PQ's and Display P3
+    HDR's (extended range) files end in display light through the pre-shaper's inverse: OCIO
+    (lossless) and the evaluation agree
     to the float32 reading of the file's values (measured 3e-6 of a code value)."""
     display = next(d for d in default_spec.displays if d.name == display_name)
     view = bake_view_lut(default_spec, display, "perceptual")

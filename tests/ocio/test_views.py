@@ -145,11 +145,12 @@ def test_scale_keeps_the_hue_of_highlights_far_beyond_the_peak(built):
         assert error.max() <= targets(display, "Scale")[1], (display.name, error.max())
 
 
-def test_views_that_leave_the_gamut_alone_read_back_as_colorimetric(built):
-    """A display-referred file read into the scene through "Scale - <display>" or "Desaturate -
-    <display>" comes back as through Colorimetric: those methods leave every displayable
-    colour alone, so every code has that one inverse (OCIO's inversion of the lattice sent
-    sRGB white to scene 2.65)."""
+def test_gamut_mapped_views_read_back_as_colorimetric(built):
+    """A display-referred file read into the scene through "Scale - <display>", "Desaturate -
+    <display>" or "Perceptual - <display>" comes back as through Colorimetric: the colours the
+    display shows (Scale and Desaturate leave every displayable colour alone, so that is their
+    one inverse; OCIO's inversion of the Scale lattice sent sRGB white to scene 2.65, of the
+    Perceptual one sRGB (0.9, 0.1, 0.1) to ACEScg (0.77, -0.08, -0.04))."""
     from generator.spec.namespace import display_view_space
 
     cfg, spec = built
@@ -165,7 +166,7 @@ def test_views_that_leave_the_gamut_alone_read_back_as_colorimetric(built):
     checked = 0
     for display in spec.displays:
         expected = back(display_view_space("Colorimetric", display.name))
-        for view in ("Scale", "Desaturate"):
+        for view in ("Scale", "Desaturate", "Perceptual"):
             if view in display.views:
                 actual = back(display_view_space(view, display.name))
                 scale = np.maximum(np.abs(expected).max(axis=-1, keepdims=True), 1.0)

@@ -5,6 +5,7 @@ items must fail in addition to whatever fails there already."""
 
 from __future__ import annotations
 
+import numpy as np
 import PyOpenColorIO as ocio
 import pytest
 
@@ -114,22 +115,63 @@ def test_swapped_desaturate_files_are_named(config_copy):
             "sRGB - Display / Desaturate", "Gamma 2.6 DCI-P3 - Display / Desaturate"} <= failing
 
 
-def test_a_perceptual_file_nudged_is_named(config_copy):
-    """A view defined by its lattice (Perceptual) is held to the lattice rebuilt from the spec:
-    one node value of the sRGB file moved by a tenth of a code value fails the file and the
-    view, no other display's."""
+def _nudge_nodes(clf, nodes, amount: float) -> None:
+    """Add ``amount`` to every value at lattice ``nodes`` ((r, g, b) indices) of a 33³ CLF."""
+    lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
+    start = next(i for i, line in enumerate(lines) if 'dim="33 33 33 3"' in line) + 1
+    for r, g, b in nodes:
+        row = start + (r * 33 + g) * 33 + b  # blue fastest
+        lines[row] = " ".join(f"{float(v) + amount:.5f}" for v in lines[row].split()) + "\n"
+    clf.write_text("".join(lines), encoding="utf-8")
+
+
+@pytest.mark.parametrize("node", [(16, 16, 19), (30, 12, 12)])
+def test_a_perceptual_node_nudged_by_a_tenth_of_a_code_is_named(config_copy, node):
+    """A view defined by its lattice (Perceptual) is held to the mapping at every node and to
+    the rebuilt lattice in every cell: one node of the sRGB file moved by a tenth of a ten-bit
+    code fails the file, inside the display cube (nodes 12 to 20 span codes 0 to 1: (0.5, 0.5,
+    0.875)) and far outside it (red 3 times the peak), where no other probe reaches."""
     def nudge(path):
-        clf = path.parent / "luts" / "view_srgb_display_perceptual_33.clf"
-        lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
-        start = next(i for i, line in enumerate(lines) if 'dim="33 33 33 3"' in line) + 1
-        row = start + (16 * 33 + 16) * 33 + 19  # nodes 12 to 20 span codes 0 to 1: (0.5, 0.5, 0.875)
-        values = [float(v) for v in lines[row].split()]
-        lines[row] = " ".join(f"{v + 0.1:.5f}" for v in values) + "\n"
-        clf.write_text("".join(lines), encoding="utf-8")
+        _nudge_nodes(path.parent / "luts" / "view_srgb_display_perceptual_33.clf", [node], 0.1 / 1023)
+
+    failing = _newly_failing(config_copy, nudge, (LUT,))
+    assert failing == {"luts/view_srgb_display_perceptual_33.clf"}
+
+
+def test_a_perceptual_file_off_by_codes_fails_its_view(config_copy):
+    """Node values a few codes off inside the cube fail the sRGB Perceptual view too, no other
+    display's."""
+    def nudge(path):
+        _nudge_nodes(path.parent / "luts" / "view_srgb_display_perceptual_33.clf",
+                     [(r, g, b) for r in (14, 16, 18) for g in (14, 16, 18) for b in (14, 16, 18)], 5 / 1023)
 
     failing = _newly_failing(config_copy, nudge, (VIEW, LUT))
     assert failing >= {"luts/view_srgb_display_perceptual_33.clf", "sRGB - Display / Perceptual"}
     assert not {item for item in failing if "Perceptual" in item and "sRGB" not in item}
+
+
+def test_a_perceptual_lattice_assembled_wrongly_is_named(tmp_path, monkeypatch):
+    """A generator that assembled a Perceptual lattice wrongly (red and green swapped), for the
+    file it writes and for the lattice verify rebuilds alike, is still caught: every node is
+    held to the mapping itself."""
+    import dataclasses
+
+    from generator.luts import view
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    made = view.view_lattice.__wrapped__
+
+    def swapped(spec, display, method):
+        lat = made(spec, display, method)
+        return dataclasses.replace(lat, cube=np.ascontiguousarray(lat.cube.transpose(1, 0, 2, 3)))
+
+    monkeypatch.setattr(view, "view_lattice", swapped)
+    text = load.default_text().split("[[display]]")[0] + (
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Perceptual", "Raw"]\n')
+    folder = tmp_path / "swapped"
+    build(for_folder(load.parse(text, "swapped.toml", tmp_path), folder), folder)
+    assert "luts/view_srgb_display_perceptual_33.clf" in _failing_items(folder / "config.ocio", (LUT,))
 
 
 def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
