@@ -28,26 +28,25 @@ def coordinates(lat: Lattice, linear) -> np.ndarray:
     return np.interp(shaped, np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size), lat.shaper)
 
 
-def display_file(lat: Lattice, linear, coordinate_shift=None) -> np.ndarray:
+def display_file(lat: Lattice, linear) -> np.ndarray:
     """The output of ``lat``'s file for normalised display-linear RGB ``linear`` (..., 3),
     1 = the display's peak: code values, or normalised display light for a file ending in
-    light; ``coordinate_shift`` (broadcast to ``linear``) moves the lattice coordinates
-    (:func:`coordinates`) first, as float32 rounding in the file's Range and shaper does.
-    A colour with a NaN channel gives NaN (the verifier holds non-finite probes to the
+    light. A colour with a NaN channel gives NaN (the verifier holds non-finite probes to the
     display's range instead); an infinity is clamped by the Range."""
     if not isinstance(lat.pre, PreShaper) or lat.shaper is None or lat.post is not None:
         raise ValueError("display_file evaluates a display-layout lattice behind a pre-shaper")
     linear = np.asarray(linear, dtype=np.float64)
-    number = ~np.isnan(linear.reshape(-1, 3)).any(axis=1)
-    coordinate = coordinates(lat, linear)
-    if coordinate_shift is not None:
-        coordinate = np.clip(coordinate + np.broadcast_to(coordinate_shift, linear.shape).reshape(-1, 3), 0.0, 1.0)
-    nodes, weights = tetrahedral_weights(coordinate * (lat.size - 1), lat.size)
-    out = interpolate(nodes.T, weights.T, lat.cube.reshape(-1, 3).T).T
-    if lat.light is not None:
-        out = lat.light.inverse(out)
-    out[~number] = np.nan
+    out = at_coordinates(lat, coordinates(lat, linear))
+    out[np.isnan(linear.reshape(-1, 3)).any(axis=1)] = np.nan
     return out.reshape(linear.shape)
+
+
+def at_coordinates(lat: Lattice, coordinate: np.ndarray) -> np.ndarray:
+    """``lat``'s file from its lattice coordinates (m, 3) on: the 3D table (tetrahedral) and,
+    for a file ending in light, the pre-shaper's exact inverse; shape (m, 3)."""
+    nodes, weights = tetrahedral_weights(np.clip(coordinate, 0.0, 1.0) * (lat.size - 1), lat.size)
+    out = interpolate(nodes.T, weights.T, lat.cube.reshape(-1, 3).T).T
+    return out if lat.light is None else lat.light.inverse(out)
 
 
 def cell_inputs(lat: Lattice) -> np.ndarray:

@@ -226,11 +226,15 @@ def lattice_file_allowance(spec: Spec, display: Display, method: str, linear: np
     Near black, a coordinate's rounding times the lattice's slope is a large share of the
     light (2 % at 1e-7 of the peak on Display P3 HDR; 3e-8 of the peak where the mapping is
     black, which PQ's steep start makes 0.5 ΔE ITP)."""
-    from generator.luts.evaluate import coordinates
+    from generator.luts.evaluate import at_coordinates, coordinates
     from generator.luts.view import view_lattice
 
     lat, peak = view_lattice(spec, display, method), display.clip_high
-    through = paths.lattice_codes(spec, display, method)
+
+    def codes(coordinate):
+        out = at_coordinates(lat, coordinate.reshape(-1, 3)).reshape(linear.shape)
+        return out if lat.light is None else reference.display_encode(display, out * peak)
+
     with np.errstate(all="ignore"):
         start = coordinates(lat, linear / peak).reshape(linear.shape)
         reach = np.full(linear.shape, tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF)
@@ -238,9 +242,9 @@ def lattice_file_allowance(spec: Spec, display: Display, method: str, linear: np
             for sign in (1.0, -1.0):
                 moved = coordinates(lat, (linear + sign * np.nan_to_num(shift)) / peak).reshape(linear.shape)
                 reach = reach + np.abs(moved - start) / 2.0
-        base, worst = through(linear), np.zeros_like(linear)
+        base, worst = codes(start), np.zeros_like(linear)
         for direction in _BOX:
-            worst = np.maximum(worst, np.abs(through(linear, direction * reach) - base))
+            worst = np.maximum(worst, np.abs(codes(start + direction * reach) - base))
     return np.where(np.isfinite(worst), worst, 0.0)
 
 

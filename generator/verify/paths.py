@@ -247,15 +247,14 @@ def lattice_codes(spec: Spec, display: Display, method: str) -> Evaluate:
     defined by its lattice (:data:`generator.luts.view.LATTICE_DEFINED`), as OCIO runs it,
     evaluated in float64 from the lattice rebuilt from the spec (a file that differs from it,
     or an engine that reads it otherwise, fails); a file ending in display light is then
-    encoded as the display space does. The function takes the file's ``coordinate_shift``
-    too (:func:`generator.luts.evaluate.display_file`)."""
+    encoded as the display space does."""
     from generator.luts.evaluate import display_file
     from generator.luts.view import view_lattice
 
     lat = view_lattice(spec, display, method)
 
-    def codes(linear, coordinate_shift=None):
-        out = display_file(lat, np.asarray(linear, dtype=np.float64) / display.clip_high, coordinate_shift)
+    def codes(linear):
+        out = display_file(lat, np.asarray(linear, dtype=np.float64) / display.clip_high)
         return out if lat.light is None else reference.display_encode(display, out * display.clip_high)
 
     return codes
