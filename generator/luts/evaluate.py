@@ -54,3 +54,17 @@ def cell_inputs(lat: Lattice) -> np.ndarray:
     middle of its pre-shaped span on each axis."""
     shaped = preimages(lat.size, lat.shaper, lat.domain)
     return grid(lat.pre.inverse((shaped[1:] + shaped[:-1]) / 2.0)).reshape(-1, 3)
+
+
+def shaper_inputs(lat: Lattice, other: float = 0.5) -> np.ndarray:
+    """Colours (3 (2 k - 1), 3), normalised display-linear, with one channel on each of the
+    ``k`` entries of ``lat``'s shaper table and on the middle between neighbours, the other
+    two at ``other``: every entry of the table (one column, for the three channels) is read
+    where the file's output moves with it (a grey far below black or above the peak maps to
+    black or white, whatever its coordinate)."""
+    entries = np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size)
+    linear = lat.pre.inverse(np.sort(np.concatenate([entries, (entries[1:] + entries[:-1]) / 2.0])))
+    out = np.full((3, linear.size, 3), other)
+    for channel in range(3):
+        out[channel, :, channel] = linear
+    return out.reshape(-1, 3)

@@ -208,11 +208,12 @@ def lattice_allowance(spec: Spec, src: paths.Endpoint, back: np.ndarray, display
 
 
 #: Displacements of a lattice coordinate, each axis -1, 0 or +1 times its reach: a
-#: tetrahedral lattice is linear on pieces bounded by planes through the colour's point
-#: (``d_i = d_j``, ``d_i = 0``), so its largest change over a box of displacements is at one
-#: of these (a displacement along two axes reaches a diagonal neighbour, which displacements
-#: along one axis at a time do not: measured 14 times their sum near a black node between
-#: bright ones, Display P3 HDR).
+#: tetrahedral lattice is linear on pieces bounded, around a node, by planes through it
+#: (``d_i = d_j``, ``d_i = 0``), so its largest change over a box of displacements from a node
+#: is at one of these (a displacement along two axes reaches a diagonal neighbour, which
+#: displacements along one axis at a time do not: measured 14 times their sum near a black
+#: node between bright ones, Display P3 HDR). Elsewhere the reach, a few float32 roundings,
+#: seldom meets a piece's boundary.
 _BOX = np.array([d for d in np.ndindex(3, 3, 3) if d != (1, 1, 1)], dtype=np.float64) - 1.0
 
 

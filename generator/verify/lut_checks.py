@@ -84,17 +84,18 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
 
 def _lattice_probes(spec: Spec, display: Display, method: str, families: list[Family]) -> tuple[Probes, np.ndarray]:
     """The probes of a view file defined by its lattice (:data:`generator.luts.view.LATTICE_DEFINED`)
-    and their expected codes: ``families`` and a colour in every cell against the lattice
-    rebuilt from the spec (every cell, so no part of the file goes unread), and every node
-    against the *mapping itself* at the node's input, rounded as the file holds it (a lattice
-    assembled wrongly fails here, whatever the rebuilt lattice says)."""
-    from generator.luts.evaluate import cell_inputs
+    and their expected codes: ``families``, a colour in every cell and colours on every entry of
+    the shaper table against the lattice rebuilt from the spec (so no part of the file goes
+    unread), and every node against the *mapping itself* at the node's input, rounded as the
+    file holds it (a lattice assembled wrongly fails here, whatever the rebuilt lattice says)."""
+    from generator.luts.evaluate import cell_inputs, shaper_inputs
     from generator.luts.lattice import grid, node_values, preimages
     from generator.luts.view import view_lattice
 
     lat, peak = view_lattice(spec, display, method), display.clip_high
     through = paths.lattice_codes(spec, display, method)
-    lattice_families = (*families, Family("a colour in every lattice cell", cell_inputs(lat)))
+    lattice_families = (*families, Family("a colour in every lattice cell", cell_inputs(lat)),
+                        Family("a channel on every shaper entry and between", shaper_inputs(lat)))
     axis = lat.pre.inverse(preimages(lat.size, lat.shaper, lat.domain))
     nodes = Family("lattice nodes (the mapping itself)", grid(axis).reshape(-1, 3))
     with np.errstate(all="ignore"):

@@ -138,6 +138,20 @@ def test_a_perceptual_node_nudged_by_a_tenth_of_a_code_is_named(config_copy, nod
     assert failing == {"luts/view_srgb_display_perceptual_33.clf"}
 
 
+@pytest.mark.parametrize("entry", [20, 460])
+def test_a_perceptual_shaper_entry_nudged_is_named(config_copy, entry):
+    """One entry of a Perceptual file's shaper table moved by 1e-3 of a coordinate (far below
+    black, far above the peak: entries no display-code or scene probe reaches) fails the file."""
+    def nudge(path):
+        clf = path.parent / "luts" / "view_srgb_display_perceptual_33.clf"
+        lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
+        start = next(i for i, line in enumerate(lines) if line.startswith("<LUT1D")) + 2  # after <Array>
+        lines[start + entry] = f"{float(lines[start + entry]) + 1e-3:.6f}\n"
+        clf.write_text("".join(lines), encoding="utf-8")
+
+    assert "luts/view_srgb_display_perceptual_33.clf" in _newly_failing(config_copy, nudge, (LUT,))
+
+
 def test_a_perceptual_file_off_by_codes_fails_its_view(config_copy):
     """Node values a few codes off inside the cube fail the sRGB Perceptual view too, no other
     display's."""
