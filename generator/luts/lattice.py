@@ -54,6 +54,17 @@ SHAPER_DECIMALS = 6
 #: 16 times the peak in the ACEScg gamut, reach 27 in sRGB).
 DISPLAY_RANGE = (-16.0, 32.0)
 
+#: Perceptual's display axes reach this high instead (times the peak): a channel clamped at
+#: 32 beside others far below 0 (ACEScg red at 64 times the peak is (109, -8.3, -1.5) in
+#: sRGB) made a bright light's luminance fall below 0, so red practicals showed dark magenta
+#: cores where the mapping goes to white. At 1024 times the peak, a channel there with the
+#: other two at DISPLAY_RANGE's -16 still has a luminance of 15 times the peak or more on
+#: every library display (P3's blue weighs 0.046), so a clamped colour stays white. Measured
+#: on ramps of 400 ACEScg colours from 1 to 1000 times (sRGB): the largest fall of luminance
+#: along a ramp 0.86 -> 0.20, ramps falling by more than 0.1 33 -> 12, error at 1000 times
+#: 1023 -> 0 codes; over-range probes (up to 16 times) p99 187 -> 251, out of gamut 203 -> 178.
+PERCEPTUAL_HIGH = 1024.0
+
 #: A :class:`LogAxis` (clip and scale) reaches half-float's largest value times the peak
 #: (:func:`log_axis_high`): its
 #: mapping is linear inside every tetrahedron whatever the node spacing, so the range costs
@@ -224,13 +235,14 @@ def log_axis_high(display: Display, light: bool = False) -> float:
 
 def display_axis(display: Display, size: int, method: str, light: bool = False) -> Axis | LogAxis:
     """The display layout's axis: normalised display-linear over :data:`DISPLAY_RANGE` (up to
-    :data:`LOG_DISPLAY_HIGH` for clip and scale).
+    :data:`LOG_DISPLAY_HIGH` for clip and scale, :data:`PERCEPTUAL_HIGH` for perceptual).
     With ``light`` (the lattice holds display light, see :func:`display_lattice`) an
     :class:`Axis` is a power of display light inside the cube, where the pre-shaper is."""
     if method in LOG_METHODS:
         return LogAxis.layout(display, size, log_axis_high(display, light), exact=light)
     inside = PreShaper.for_display(display, scaled=False) if light else None
-    return Axis.layout(display, size, *DISPLAY_RANGE, DEFAULT_SHARES, inside=inside)
+    high = PERCEPTUAL_HIGH if method == "perceptual" else DISPLAY_RANGE[1]
+    return Axis.layout(display, size, DISPLAY_RANGE[0], high, DEFAULT_SHARES, inside=inside)
 
 
 def encodes_in_clf(display: Display) -> bool:

@@ -173,3 +173,23 @@ def test_gamut_mapped_views_read_back_as_colorimetric(built):
                 assert (np.abs(actual - expected) <= tolerances.ANALYTIC_RELATIVE * scale).all(), (display.name, view)
                 checked += 1
     assert checked
+
+
+def test_perceptual_takes_bright_saturated_lights_to_white(built):
+    """ACEScg primaries and secondaries at 1000 and 10000 times the peak (practical lights, the
+    sun) come out of every Perceptual view as the mapping sends them, to white: clamped at 32
+    times the peak, a red light's channel beside a far negative green had made its luminance
+    negative, and the view showed (0.69, 0, 0.36) where the mapping shows white."""
+    from generator.colorimetry import reference
+
+    cfg, spec = built
+    hues = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1]], dtype=np.float64)
+    acescg = reference.space_matrix(spec, spec.space("ACEScg"))
+    ref = np.concatenate([hues * k for k in (1e3, 1e4)]) @ acescg.T
+    checked = 0
+    for display in (d for d in spec.displays if "Perceptual" in d.views):
+        expected = reference.mapped_view(spec, display, "perceptual", ref)
+        error = probes.errors(display, view_apply(cfg, spec, display, "Perceptual")(ref), expected)[0]
+        assert error.max() <= tolerances.LUT_CLF_SCALE_CODES, (display.name, error.max())
+        checked += 1
+    assert checked == 6
