@@ -88,8 +88,10 @@ def display_encode(display: Display, rgb) -> np.ndarray:
         from colour.models import eotf_inverse_BT2100_HLG
 
         # A display signal ends at code 1: saturated colours near the peak would need more.
-        code = eotf_inverse_BT2100_HLG(rgb * 100.0, L_B=0.0, L_W=display.peak)
-        return np.clip(np.asarray(code, dtype=np.float64), 0.0, 1.0)
+        # Black is code 0 (the inverse OOTF divides by its luminance, 0).
+        with np.errstate(divide="ignore", invalid="ignore"):
+            code = np.asarray(eotf_inverse_BT2100_HLG(rgb * 100.0, L_B=0.0, L_W=display.peak), dtype=np.float64)
+        return np.clip(np.where(np.all(rgb == 0.0, axis=-1, keepdims=True), 0.0, code), 0.0, 1.0)
     return display.eotf.encode(rgb / display.code_one)
 
 

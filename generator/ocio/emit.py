@@ -171,8 +171,8 @@ def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict) -> None:
                 cfg.addViewTransform(mapped)
                 cfg.addDisplayView(display.name, view, mapped.getName(), display.name, "", "", "")
     cfg.setActiveDisplays(", ".join(d.name for d in spec.displays))
-    views = list(dict.fromkeys(v for d in spec.displays for v in d.views))
-    cfg.setActiveViews(", ".join(views))
+    # No active views: OCIO would order every display's views by that one list, and a display
+    # listing Raw first would default to another display's first view.
 
 
 def _display_view_spaces(spec: Spec, cfg: ocio.Config) -> None:

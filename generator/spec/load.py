@@ -142,6 +142,12 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
     if not displays:
         raise SpecError(source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's")
+    first: dict[str, int] = {}
+    for i, display in enumerate(displays):
+        if display.name.lower() in first:
+            raise SpecError(source, f"display[{i}].name", f"{display.name!r} is listed twice (display[{first[display.name.lower()]}]); "
+                            "allowed: each display once")
+        first[display.name.lower()] = i
     view_spaces = _bool(raw["display_view_spaces"] if "display_view_spaces" in raw
                         else embedded_default("display_view_spaces"), source, "display_view_spaces")
     taken = namespace.generated(displays, view_spaces, tuple(DEFAULT_ROLES), source, tuple(roles))

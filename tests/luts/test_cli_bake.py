@@ -17,6 +17,27 @@ def test_bakes_a_resolve_cube(tmp_path):
     assert [p.name for p in tmp_path.iterdir()] == [out.name]
 
 
+def test_a_bake_into_hlg_warns_of_nothing(tmp_path):
+    """HLG's inverse OOTF divides by a colour's luminance: black is code 0, and numpy's warnings
+    of the division (ten lines on stderr) are not the user's business."""
+    import warnings
+
+    from generator.colorimetry import reference
+    from generator.spec import load
+
+    hlg = next(d for d in load.load().displays if d.name == "Rec.2100-HLG - Display")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert reference.display_encode(hlg, [[0.0, 0.0, 0.0], [0.0, 0.0, 1e-6]])[0].tolist() == [0.0, 0.0, 0.0]
+    out = tmp_path / "hlg.clf"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "Rec.2100-HLG - Display", "--size", "9",
+                                              "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "Warning" not in result.output
+
+
 def test_spi3d_writes_its_shaper_beside(tmp_path):
     out = tmp_path / "a.spi3d"
     result = CliRunner().invoke(command, ["--from", "ACEScct", "--to", "sRGB - Display", "--size", "9", "-o", str(out)])

@@ -189,3 +189,21 @@ def test_committed_default_config_is_what_the_build_gives(tmp_path, default_spec
     built = {p.relative_to(folder): p.read_bytes() for p in sorted(folder.rglob("*")) if p.is_file()}
     on_disk = {p.relative_to(committed): p.read_bytes() for p in sorted(committed.rglob("*")) if p.is_file()}
     assert built == on_disk, "configs/ is stale: run make run"
+
+
+def test_each_display_keeps_its_own_view_order_and_default(tmp_path):
+    """Views are listed, and the default is the first, as each display gives them: a config-wide
+    active_views list had ordered Display P3's (Raw, Scale, Perceptual) after sRGB's, making
+    Perceptual its default view in every host."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+            '[[display]]\nname = "sRGB - Display"\nviews = ["Perceptual", "Colorimetric", "Raw"]\n'
+            '[[display]]\nname = "Display P3 - Display"\nviews = ["Raw", "Scale", "Perceptual"]\n')
+    folder = tmp_path / "order"
+    build(for_folder(load.parse(text, "order.toml", tmp_path), folder), folder)
+    cfg = ocio.Config.CreateFromFile(str(folder / "config.ocio"))
+    assert list(cfg.getViews("sRGB - Display")) == ["Perceptual", "Colorimetric", "Raw"]
+    assert list(cfg.getViews("Display P3 - Display")) == ["Raw", "Scale", "Perceptual"]
+    assert cfg.getDefaultView("Display P3 - Display") == "Raw"

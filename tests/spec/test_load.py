@@ -85,6 +85,8 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[display]]\nname = ''\ngamut = 'Rec.709'\neotf = 'sRGB'", "display[0].name", "required"),
     ("[[display]]\nname = 'sRGB - Display'\nviews = ['Raw', 'Colorimetric', 'Raw']", "display[0].views[2]",
      "listed twice"),
+    ("[[display]]\nname = 'sRGB - Display'\n[[display]]\nname = 'srgb - display'", "display[1].name",
+     "'sRGB - Display' is listed twice (display[0]); allowed: each display once"),
     ("[[file_rule]]\nname = 'Default'", "file_rule[0].colour_space", "required"),
     ("[[display]]\nname = 'Wall'\ngamut = 'Rec.709'\neotf = 'gamma 2.4'\npeak_luminance = 1500",
      "display[0].peak_luminance", "with absolute_luminance = true 1 to 10000 (code 1 emits the peak)"),

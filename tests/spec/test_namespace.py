@@ -50,7 +50,7 @@ def test_a_display_may_not_take_a_colour_space_or_another_displays_name():
     raised = error("[[display]]\nname = 'ACEScg'\ngamut = 'Rec.709'\neotf = 'sRGB'\n")
     assert raised.field == "display[0].name" and "library colour space 'ACEScg'" in raised.message
     raised = error(SRGB + SRGB)
-    assert raised.field == "display[1].name" and "display colour space of display[0]" in raised.message
+    assert raised.field == "display[1].name" and "listed twice (display[0])" in raised.message
 
 
 @pytest.mark.parametrize("target, ok", [("Nope", False), ("ACEScg", True), ("scene_linear", True),
