@@ -11,8 +11,9 @@ import threading
 import click
 
 # A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy
-# starts it on import, which no module above makes) is not started: numpy's import takes
-# 100 ms, not 160 (measured on the project's 2-core machine). A setting in the environment is kept.
+# starts it on import, which no module above makes) is not started: numpy's import took
+# 100 ms rather than 160 on a 2-core machine (the gain varies with the machine and OpenBLAS).
+# A setting in the environment is kept.
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 #: Command name -> module under generator.cli, with its one-line help.

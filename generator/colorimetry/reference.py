@@ -88,10 +88,11 @@ def display_encode(display: Display, rgb) -> np.ndarray:
         from colour.models import eotf_inverse_BT2100_HLG
 
         # A display signal ends at code 1: saturated colours near the peak would need more.
-        # Black is code 0 (the inverse OOTF divides by its luminance, 0).
+        # colour-science's inverse OOTF and OETF divide by and take logarithms of dark values,
+        # where numpy warns though the codes are right (black is code 0).
         with np.errstate(divide="ignore", invalid="ignore"):
             code = np.asarray(eotf_inverse_BT2100_HLG(rgb * 100.0, L_B=0.0, L_W=display.peak), dtype=np.float64)
-        return np.clip(np.where(np.all(rgb == 0.0, axis=-1, keepdims=True), 0.0, code), 0.0, 1.0)
+        return np.clip(code, 0.0, 1.0)
     return display.eotf.encode(rgb / display.code_one)
 
 

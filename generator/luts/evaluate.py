@@ -6,13 +6,14 @@ ending in display light, the pre-shaper's exact inverse.
 
 A view whose mapping no lattice holds (:data:`generator.luts.view.LATTICE_DEFINED`) is
 this evaluation: the verifier compares OCIO with it, and bench/lut_accuracy.py measures
-how far it departs from the mapping itself.
+how far the file, through OCIO, departs from the mapping itself.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from generator.luts import lattice
 from generator.luts.fit import tetrahedral_weights
 from generator.luts.lattice import Lattice, PreShaper, grid, preimages
 from generator.luts.solve import interpolate
@@ -20,12 +21,12 @@ from generator.luts.solve import interpolate
 
 def coordinates(lat: Lattice, linear) -> np.ndarray:
     """The lattice coordinates (0 to 1 along each axis, shape (m, 3)) of normalised
-    display-linear RGB ``linear`` (..., 3) in ``lat``'s file: the pre-shaper, the Range that
-    clamps to the shaper's domain, the shaper table. NaN reads as 0."""
+    display-linear RGB ``linear`` (..., 3) in ``lat``'s file: the pre-shaper, then the Range
+    that clamps to the shaper's domain and the shaper table (:func:`lattice.coordinates`).
+    NaN reads as 0."""
     flat = np.asarray(linear, dtype=np.float64).reshape(-1, 3)
     with np.errstate(all="ignore"):
-        shaped = np.clip(lat.pre.forward(np.nan_to_num(flat, nan=0.0)), *lat.domain)
-    return np.interp(shaped, np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size), lat.shaper)
+        return lattice.coordinates(lat, lat.pre.forward(np.nan_to_num(flat, nan=0.0)))
 
 
 def display_file(lat: Lattice, linear) -> np.ndarray:

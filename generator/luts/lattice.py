@@ -58,8 +58,8 @@ DISPLAY_RANGE = (-16.0, 32.0)
 #: 32 beside others far below 0 (ACEScg red at 64 times the peak is (109, -8.3, -1.5) in
 #: sRGB) made a bright light's luminance fall below 0, so red practicals showed dark magenta
 #: cores where the mapping goes to white. At 1024 times the peak, a channel there with the
-#: other two at DISPLAY_RANGE's -16 still has a luminance of 15 times the peak or more on
-#: every library display (P3's blue weighs 0.046), so a clamped colour stays white. Measured
+#: other two at DISPLAY_RANGE's -16 still has a luminance of 45 times the peak or more on
+#: every library display (Rec.2020's blue weighs 0.059), so a clamped colour stays white. Measured
 #: on ramps of 400 ACEScg colours from 1 to 1000 times (sRGB): the largest fall of luminance
 #: along a ramp 0.86 -> 0.20, ramps falling by more than 0.1 33 -> 12, error at 1000 times
 #: 1023 -> 0 codes; over-range probes (up to 16 times) p99 187 -> 251, out of gamut 203 -> 178.

@@ -5,8 +5,8 @@ The view is scene-reference linear RGB -> :func:`~generator.colorimetry.referenc
 Range, LUT1D, LUT3D in display axes, see :mod:`generator.luts.lattice`); for
 desaturate, the matrix is followed by OCIO's RGB_TO_HSV, the shared coordinates
 file, this file and HSV_TO_RGB (:mod:`generator.luts.hsv`). The function is
-pure: it returns the file's name and bytes with the measured error; the config
-writer writes them.
+pure: it returns the file's name and bytes (measured through OCIO when asked); the
+config writer writes them.
 """
 
 from __future__ import annotations

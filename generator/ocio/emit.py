@@ -112,9 +112,9 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
 #: that is their inverse; OCIO's inverse of their many-to-one lattice picks one of the
 #: colours that map to a code (display white read through Scale came back as scene 2.65, the
 #: over-range grey the lattice's inversion landed on). Perceptual moves displayable colours
-#: too and has no inverse a lattice holds: OCIO's inversion of its 33³ file is off by a
-#: median of 23 ten-bit codes on a round trip, sRGB (0.9, 0.1, 0.1) reading back as ACEScg
-#: (0.77, -0.08, -0.04); the colours shown are what a file rendered through it holds.
+#: too, and OCIO's inversion of its 33³ file depends on the host's flags (random sRGB codes
+#: read back and shown again were off by a median of 23 to 48 ten-bit codes with hosts'
+#: default flags); the colours shown are what a file rendered through it holds.
 INVERTED_AS_COLORIMETRIC = ("scale", "desaturate", "perceptual")
 
 

@@ -240,9 +240,9 @@ def lattice_file_allowance(spec: Spec, display: Display, method: str, linear: np
         start = coordinates(lat, linear / peak).reshape(linear.shape)
         reach = np.full(linear.shape, tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF)
         if shift is not None:
-            for sign in (1.0, -1.0):
-                moved = coordinates(lat, (linear + sign * np.nan_to_num(shift)) / peak).reshape(linear.shape)
-                reach = reach + np.abs(moved - start) / 2.0
+            moves = [np.abs(coordinates(lat, (linear + sign * np.nan_to_num(shift)) / peak).reshape(linear.shape) - start)
+                     for sign in (1.0, -1.0)]
+            reach = reach + np.maximum(*moves)
         base, worst = codes(start), np.zeros_like(linear)
         for direction in _BOX:
             worst = np.maximum(worst, np.abs(codes(start + direction * reach) - base))

@@ -1,6 +1,7 @@
 """The checks of a config's LUT files on their own: every baked curve against the curve it
 stands for, every baked view LUT against its view's mapping (the two files of an HSV view
-each), so that a broken file is named, not only the conversions that read it."""
+each; a view defined by its lattice against that lattice, its nodes against the mapping), so
+that a broken file is named, not only the conversions that read it."""
 
 from __future__ import annotations
 
@@ -46,7 +47,8 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
 def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
     """Every baked view LUT file (a CLF from normalised display-linear RGB, 1 = peak, to
     the display's codes, or to display light that the verifier then encodes in float64,
-    applied tetrahedrally) against its view's mapping."""
+    applied tetrahedrally) against its view's mapping (:func:`_lattice_probes` for a view
+    defined by its lattice)."""
     from generator.ocio.emit import LUT_FOLDER
 
     from generator.luts.view import HSV_METHOD, LATTICE_DEFINED, ends_in_light, view_filename

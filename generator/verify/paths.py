@@ -199,13 +199,12 @@ def lut_range(display: Display, method: str | None = None) -> tuple[float, float
     an HSV view, whose lattice clamps OCIO's HSV value instead (from -256 to 1024 times the
     peak, :mod:`generator.luts.hsv`)."""
     from generator.luts.axes import LOG_METHODS
-    from generator.luts.lattice import DISPLAY_RANGE, PERCEPTUAL_HIGH, log_axis_high
+    from generator.luts.lattice import DISPLAY_RANGE, log_axis_high
     from generator.luts.view import HSV_METHOD, ends_in_light
 
     if method == HSV_METHOD:
         return None
-    high = (log_axis_high(display, ends_in_light(display)) if method in LOG_METHODS else
-            PERCEPTUAL_HIGH if method == "perceptual" else DISPLAY_RANGE[1])
+    high = log_axis_high(display, ends_in_light(display)) if method in LOG_METHODS else DISPLAY_RANGE[1]
     return (DISPLAY_RANGE[0] * display.clip_high, high * display.clip_high)
 
 
