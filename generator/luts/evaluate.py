@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from generator.luts import lattice
-from generator.luts.fit import tetrahedral_weights
+from generator.luts.fit import tetrahedra
 from generator.luts.lattice import Lattice, PreShaper, grid, preimages
 from generator.luts.solve import interpolate
 
@@ -45,8 +45,9 @@ def display_file(lat: Lattice, linear) -> np.ndarray:
 def at_coordinates(lat: Lattice, coordinate: np.ndarray) -> np.ndarray:
     """``lat``'s file from its lattice coordinates (m, 3) on: the 3D table (tetrahedral) and,
     for a file ending in light, the pre-shaper's exact inverse; shape (m, 3)."""
-    nodes, weights = tetrahedral_weights(np.clip(coordinate, 0.0, 1.0) * (lat.size - 1), lat.size)
-    out = interpolate(nodes.T, weights.T, lat.cube.reshape(-1, 3).T).T
+    index = np.clip(coordinate, 0.0, 1.0).T * (lat.size - 1)
+    nodes, weights = tetrahedra(np.ascontiguousarray(index), lat.size)
+    out = interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T
     return out if lat.light is None else lat.light.inverse(out)
 
 

@@ -58,11 +58,11 @@ FIT_MAXITER = 500
 def tetrahedral_weights(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
     """Flat node numbers (m, 4) and weights (m, 4) of tetrahedral interpolation at
     fractional node indices ``index`` (m, 3), ``[r, g, b]`` order."""
-    nodes, weights = _tetrahedra(np.ascontiguousarray(index.T), size)
+    nodes, weights = tetrahedra(np.ascontiguousarray(index.T), size)
     return nodes.T, weights.T
 
 
-def _tetrahedra(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+def tetrahedra(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
     """:func:`tetrahedral_weights` axis- and corner-major: ``index`` (3, m), node numbers and
     weights (4, m). The path from the cell's first corner steps along the axes by decreasing
     fraction (equal fractions in axis order); elementwise over the three axes (reductions
@@ -105,7 +105,7 @@ def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
     """The fit's rows of ``colours`` (set name to (input values, expected codes)): the
     unknowns are the nodes neither :func:`_kept` nor unreached by every colour."""
     code = np.concatenate([code for code, _ in colours.values()]).T
-    nodes, weights = _tetrahedra(coordinates(lat, np.ascontiguousarray(code)) * (lat.size - 1), lat.size)
+    nodes, weights = tetrahedra(coordinates(lat, np.ascontiguousarray(code)) * (lat.size - 1), lat.size)
     expected = np.ascontiguousarray(np.concatenate([np.nan_to_num(codes) for _, codes in colours.values()]).T)
     ends = np.cumsum([0, *(len(code) for code, _ in colours.values())])
     sets = {name: slice(a, b) for name, a, b in zip(colours, ends[:-1], ends[1:])}

@@ -142,12 +142,11 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
     if not displays:
         raise SpecError(source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's")
-    first: dict[str, int] = {}
-    for i, display in enumerate(displays):
-        if display.name.lower() in first:
-            raise SpecError(source, f"display[{i}].name", f"{display.name!r} is listed twice (display[{first[display.name.lower()]}]); "
-                            "allowed: each display once")
-        first[display.name.lower()] = i
+    twice = _repeated([d.name for d in displays])
+    if twice:
+        i, earlier = twice
+        raise SpecError(source, f"display[{i}].name", f"{displays[i].name!r} is listed twice (display[{earlier}]); "
+                        "allowed: each display once")
     view_spaces = _bool(raw["display_view_spaces"] if "display_view_spaces" in raw
                         else embedded_default("display_view_spaces"), source, "display_view_spaces")
     taken = namespace.generated(displays, view_spaces, tuple(DEFAULT_ROLES), source, tuple(roles))
@@ -221,12 +220,22 @@ def _aliases(value, source: str, field: str) -> tuple[str, ...]:
     return aliases
 
 
+def _repeated(names) -> tuple[int, int] | None:
+    """The index of the first name that repeats an earlier one (OCIO's names ignore case) and
+    the earlier one's index, or None."""
+    first: dict[str, int] = {}
+    for i, name in enumerate(names):
+        if name.lower() in first:
+            return i, first[name.lower()]
+        first[name.lower()] = i
+    return None
+
+
 def _unique(names, source: str, field: str) -> None:
-    seen = set()
-    for name in names:
-        if name.lower() in seen:
-            raise SpecError(source, field, f"{name!r} is defined twice")
-        seen.add(name.lower())
+    names = list(names)
+    twice = _repeated(names)
+    if twice:
+        raise SpecError(source, field, f"{names[twice[0]]!r} is defined twice")
 
 
 def _tables(raw: dict, key: str, source: str) -> list:

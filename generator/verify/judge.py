@@ -115,6 +115,12 @@ def policy_violations(check: Check, actual: np.ndarray, step: float = 0.0) -> tu
     return int(bad.sum()), f"non-finite policy: {check.probes.describe(first)} gave ({got})"
 
 
+def judged_output(check: Check, values) -> np.ndarray:
+    """An engine's raw output as the check judges it (a view file ending in light, encoded)."""
+    values = np.asarray(values, dtype=np.float64).reshape(-1, 3)
+    return values if check.encode is None else check.encode(values)
+
+
 def judge(check: Check, engine: str, output: Output) -> Outcome:
     """The verdict on ``output``: FAIL on an engine error, a missing reference, a
     policy violation or an error above the check's tolerance."""
@@ -123,9 +129,7 @@ def judge(check: Check, engine: str, output: Output) -> Outcome:
         return Outcome(check, name, FAIL, note=output.error.strip().splitlines()[-1][:300])
     if check.expected is None:
         return Outcome(check, name, FAIL, note=check.problem)
-    actual = np.asarray(output.values, dtype=np.float64).reshape(-1, 3)
-    if check.encode is not None:
-        actual = check.encode(actual)
+    actual = judged_output(check, output.values)
     errors, undefined = sample_errors(check, actual, output.step)
     compared = int(np.sum(np.isfinite(errors) | np.isinf(errors)))
     if compared == 0:

@@ -21,7 +21,7 @@ from generator.spec.schema import Spec, SpecError
 from generator.verify import checks as checks_module
 from generator.verify.checks import Check
 from generator.verify.engines import IN_PROCESS, apply, explain_default_flags, load_config, processor
-from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, Outcome, judge, sample_errors
+from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, Outcome, judge, judged_output, sample_errors
 
 ON_CI = os.environ.get("CI") == "true"
 
@@ -112,12 +112,6 @@ def _worst(check: Check, values: np.ndarray, step: float = 0.0) -> float:
     return float(np.nanmax(errors)) if not np.all(np.isnan(errors)) else 0.0
 
 
-def _engine_output(check: Check, values: np.ndarray) -> np.ndarray:
-    """An engine's raw output as the check judges it (a view file ending in light, encoded)."""
-    values = np.asarray(values, dtype=np.float64).reshape(-1, 3)
-    return values if check.encode is None else check.encode(values)
-
-
 def _approx(outcome: Outcome, why: str) -> Outcome:
     return replace(outcome, verdict=APPROX, note=why, values=None)
 
@@ -127,7 +121,7 @@ def _explain(config: Path, outcome: Outcome) -> Outcome:
     if outcome.violations or outcome.errors is None:
         return outcome
     why = explain_default_flags(config, outcome.check,
-                                lambda values: _worst(outcome.check, _engine_output(outcome.check, values)))
+                                lambda values: _worst(outcome.check, judged_output(outcome.check, values)))
     return _approx(outcome, why) if why else outcome
 
 
@@ -142,7 +136,7 @@ def _inherit(config: Path, outcome: Outcome, explained: dict) -> Outcome:
     proc = processor(cfg, outcome.check, config.parent)
     import PyOpenColorIO as ocio
 
-    ours = _engine_output(outcome.check, apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT),
+    ours = judged_output(outcome.check, apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT),
                                                outcome.check.probes.values))
     against = replace(outcome.check, expected=ours)
     gap = _worst(against, outcome.values, outcome.step)
