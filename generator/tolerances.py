@@ -129,6 +129,13 @@ DISCONTINUITY_BAND = 2.0 / 1023.0
 #: curve steep near zero (a pure power) turns it into a visible code difference.
 FLOAT32_MATRIX_ROUNDINGS = 3.0
 
+#: Float32 roundings of a 1D table's fractional index behind a Range (OCIO's CPU
+#: renderer): the Range's multiply-add and the scale to entries, each relative to the
+#: index, so a table of a thousand entries moves a coordinate by its slope times hundreds
+#: of units in the last place (a Perceptual file's shaper near Display P3 HDR's black:
+#: 5u, which the lattice's slope there makes 0.5 ΔE ITP of PQ's steep start).
+FLOAT32_TABLE_INDEX_ROUNDINGS = 2.0
+
 #: Float32 roundings an HSV coordinate meets through the desaturate view (generator.luts.hsv:
 #: OCIO's RGB_TO_HSV, the shared file's matrix and table, the display file's matrix, tables
 #: and lattice, and HSV_TO_RGB), each at most half a unit in the last place of the value.

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from generator import tolerances
 from generator.luts import lattice
 from generator.luts.fit import tetrahedra
 from generator.luts.lattice import Lattice, PreShaper, grid, preimages
@@ -27,6 +28,20 @@ def coordinates(lat: Lattice, linear) -> np.ndarray:
     flat = np.asarray(linear, dtype=np.float64).reshape(-1, 3)
     with np.errstate(all="ignore"):
         return lattice.coordinates(lat, lat.pre.forward(np.nan_to_num(flat, nan=0.0)))
+
+
+def index_rounding(lat: Lattice, linear) -> np.ndarray:
+    """How far float32 may move the lattice coordinates (m, 3) of normalised display-linear
+    ``linear`` (..., 3) through the rounding of the shaper table's fractional index
+    (FLOAT32_TABLE_INDEX_ROUNDINGS units of it): times the table's step there."""
+    flat = np.nan_to_num(np.asarray(linear, dtype=np.float64).reshape(-1, 3), nan=0.0)
+    lo, hi = lat.domain
+    with np.errstate(all="ignore"):
+        shaped = np.clip(lat.pre.forward(flat), lo, hi)
+    position = (shaped - lo) / (hi - lo) * (lat.shaper.size - 1)
+    entry = np.minimum(position.astype(np.int64), lat.shaper.size - 2)
+    step = np.abs(lat.shaper[entry + 1] - lat.shaper[entry])
+    return tolerances.FLOAT32_TABLE_INDEX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF * position * step
 
 
 def display_file(lat: Lattice, linear) -> np.ndarray:

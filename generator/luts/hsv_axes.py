@@ -158,15 +158,17 @@ def _half_values() -> np.ndarray:
 def _coordinates(hue: np.ndarray, t: np.ndarray, value: np.ndarray) -> np.ndarray:
     """Lattice coordinates ``(H / 6, u's, V's)`` of hue, ``t = 2 - S`` and value, float64:
     ``u = 2 - t`` up to 1, ``1 / t`` beyond, linear in ``u`` between its nodes; V linear
-    between :data:`VALUE_NODES` (+0 and -0 both at 0); beyond the nodes, clamped."""
+    between :data:`VALUE_NODES`, by its sign bit (+0 at coordinate 0, -0 at 1: OCIO
+    interpolates a float between the two half floats around it, so a V between the
+    smallest negative half float and 0 reads the entries of both, and -0's entry must
+    continue the negative side's); beyond the nodes, clamped."""
     grid = np.linspace(0.0, 1.0, HSV_SIZE)
     with np.errstate(divide="ignore"):
         u = np.where(t >= 1.0, 2.0 - t, 1.0 / np.maximum(t, 0.0))
     nodes, split = np.array(VALUE_NODES), POSITIVE_VALUE_NODES
-    v = np.where(value > 0.0, np.interp(value, nodes[:split], grid[:split]),
-                 np.interp(value, nodes[split:], grid[split:]))
-    return np.stack([np.clip(hue, 0.0, 1.0) / SHARED_SCALE, np.interp(u, saturation_nodes(), grid),
-                     np.where(value == 0.0, 0.0, v)], axis=-1)
+    v = np.where(np.signbit(value), np.interp(value, nodes[split:], grid[split:]),
+                 np.interp(value, nodes[:split], grid[:split]))
+    return np.stack([np.clip(hue, 0.0, 1.0) / SHARED_SCALE, np.interp(u, saturation_nodes(), grid), v], axis=-1)
 
 
 def shared_table() -> np.ndarray:

@@ -223,11 +223,12 @@ def lattice_file_allowance(spec: Spec, display: Display, method: str, linear: np
     display-linear ``linear`` (1.0 = 100 cd/m²): each lattice coordinate may move by what the
     input's ``shift`` (if any) moves it, plus its float32 rounding (FLOAT32_MATRIX_ROUNDINGS u
     of a coordinate within [0, 1]: its Range's multiply-add and its shaper table's
-    interpolation); the largest change of the file's output over that box (:data:`_BOX`).
+    interpolation; and the rounding of the table's index, :func:`index_rounding`); the
+    largest change of the file's output over that box (:data:`_BOX`).
     Near black, a coordinate's rounding times the lattice's slope is a large share of the
     light (2 % at 1e-7 of the peak on Display P3 HDR; 3e-8 of the peak where the mapping is
     black, which PQ's steep start makes 0.5 ΔE ITP)."""
-    from generator.luts.evaluate import at_coordinates, coordinates
+    from generator.luts.evaluate import at_coordinates, coordinates, index_rounding
     from generator.luts.view import view_lattice
 
     lat, peak = view_lattice(spec, display, method), display.clip_high
@@ -238,7 +239,8 @@ def lattice_file_allowance(spec: Spec, display: Display, method: str, linear: np
 
     with np.errstate(all="ignore"):
         start = coordinates(lat, linear / peak).reshape(linear.shape)
-        reach = np.full(linear.shape, tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF)
+        reach = tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF + \
+            index_rounding(lat, linear / peak).reshape(linear.shape)
         if shift is not None:
             moves = [np.abs(coordinates(lat, (linear + sign * np.nan_to_num(shift)) / peak).reshape(linear.shape) - start)
                      for sign in (1.0, -1.0)]

@@ -9,7 +9,8 @@ ColorChecker computed from reflectance spectra (ISO 17321-1) under D65 and
 under illuminant A (CIE 1931 2° observer; the A-lit chart is not adapted, so it
 stays a warm, chromatic set), monochromatic light from 380 to 780 nm (outside
 every display's gamut), the primaries and secondaries of every camera gamut of
-the spec, negatives, over-range values up to half-float max, and NaN / ±Inf.
+the spec, negatives, noise around black, over-range values up to half-float max,
+and NaN / ±Inf.
 
 Every value is rounded to float32 when the family is made: engines see float32,
 and the reference is evaluated on exactly what they see. Random families use
@@ -175,6 +176,16 @@ def negatives(count: int) -> Family:
     return Family("negative", np.concatenate([all_negative, mixed]))
 
 
+def near_black(count: int) -> Family:
+    """Render noise around black: channels of either sign, 1e-12 to 1e-5 in size (a few
+    float32 or half-float steps from 0, where a table over half floats reads the entries
+    of +0, -0 and the smallest subnormals), and -0 itself."""
+    rng = np.random.default_rng(SEED + 3)
+    sign = rng.choice([-1.0, 1.0], (count, 3))
+    noise = sign * rng.random((count, 3)) * 10.0 ** rng.uniform(-12.0, -5.0, (count, 1))
+    return Family("near black", np.concatenate([noise, [[-0.0, -0.0, -0.0], [0.0, 0.0, -0.0]]]))
+
+
 def over_range(checker: Family) -> Family:
     """Neutrals from 1 to half-float max, and the ColorChecker scaled by 2**4, 2**8, 2**12."""
     neutral = np.repeat(np.geomspace(1.0, HALF_MAX, 33)[:, None], 3, axis=1)
@@ -201,4 +212,4 @@ def scene_families(spec: Spec, sizes: Sizes) -> tuple[Family, ...]:
     checker = colorchecker(spec, "D65")
     return (checker, colorchecker(spec, "A"), monochromatic(spec, sizes.wavelength_step), camera_gamut(spec),
             display_faces(spec, max(8, sizes.random // 16)), negatives(max(16, sizes.random // 16)),
-            over_range(checker), non_finite())
+            near_black(max(16, sizes.random // 16)), over_range(checker), non_finite())

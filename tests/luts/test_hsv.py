@@ -75,6 +75,28 @@ def test_a_zero_channel_stays_exactly_zero(default_spec, tmp_path):
     assert np.abs(out - linear).max() < 1e-5
 
 
+@pytest.mark.parametrize("name", SDR)
+def test_colours_a_rounding_from_black_stay_black(default_spec, tmp_path, name):
+    """Render noise around black, channels of either sign down to 1e-12 of the peak: OCIO
+    interpolates a V between the smallest negative half float and 0 from the shared table's
+    entries at both, so -0's entry continues the negative side (at 0, such a grey of -1e-8
+    read coordinate 0.33 and came out white). The view is the method itself to the exact
+    views' tolerance in code values, never brighter, darker at most by the float32
+    resolution of OCIO HSV through the view (near its cone, where V is the small difference
+    of two equal magnitudes, a pure power shows it as a tenth of a code)."""
+    display = _display(default_spec, name)
+    rng = np.random.default_rng(11)
+    linear = rng.choice([-1.0, 1.0], (4000, 3)) * rng.random((4000, 3)) * 10.0 ** rng.uniform(-12, -6, (4000, 1))
+    linear = np.concatenate([linear, [[-1e-8] * 3, [0.0, 0.0, -2e-8], [-0.0] * 3, [3e-8, -3e-8, 0.0]]])
+    linear = linear.astype(np.float32).astype(np.float64)
+    out = _view_apply(default_spec, display, tmp_path, np.eye(3))(linear)
+    expected = desaturate(linear, reference.display_gamut(display))
+    peak, tolerance = display.clip_high, tolerances.LUT_CLF_EXACT_CODES / 1023.0
+    low = np.maximum(expected - hsv_rounding_shift(display, linear * peak) / peak, 0.0)
+    codes, high, least = (reference.display_encode(display, light) for light in (out, expected, low))
+    assert np.all(codes <= high + tolerance) and np.all(codes >= least - tolerance)
+
+
 def test_near_the_cone_the_view_keeps_ocio_hsv_precision(default_spec, tmp_path):
     """An ACEScct green ramp near black crosses OCIO HSV's cone: V is the small difference
     of two equal magnitudes, and a small negative V's coordinate sits near 1 in float32. The

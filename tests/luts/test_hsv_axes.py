@@ -30,7 +30,9 @@ def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
     at = {float(v): i for i, v in enumerate(half) if np.isfinite(v) and not np.signbit(v)}
     n = hsv_axes.HSV_SIZE
     assert table[at[1.0], 1] == 0.5  # t = 2 - S = 1: saturation 1, the cube's surface
-    assert table[at[0.0], 2] == 0.0 and table[np.flatnonzero(half == 0.0)[-1], 2] == 0.0  # +0 and -0
+    minus_zero = np.flatnonzero((half == 0.0) & np.signbit(half))[0]
+    assert table[at[0.0], 2] == 0.0 and table[minus_zero, 2] == 1.0  # +0 first, -0 last, as VALUE_NODES
+    assert table[minus_zero + 1, 2] < 1.0  # the smallest negative half float: a float between reads both
     assert table[at[1.0], 2] == hsv_axes.VALUE_NODES.index(1.0) / (n - 1)
     assert np.array_equal(table[[at[0.25], at[0.5]], 0], np.array([0.25, 0.5]) / hsv_axes.SHARED_SCALE)
     # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at the smallest normal half.

@@ -47,10 +47,10 @@ def test_probe_families_are_float32_and_named(spec):
     families = probes.scene_families(spec, probes.SIZES["quick"])
     names = [f.name for f in families]
     assert names == ["ColorChecker D65", "ColorChecker A", "monochromatic", "camera gamut", "display faces", "negative",
-                     "over-range", probes.NON_FINITE]
+                     "near black", "over-range", probes.NON_FINITE]
     for family in families:
         assert np.array_equal(family.values, family.values.astype(np.float32).astype(np.float64), equal_nan=True)
-    assert np.nanmax(families[6].values) == 65504.0
+    assert np.nanmax(families[7].values) == 65504.0
     special = families[-1].values
     assert np.isnan(special).any() and np.isposinf(special).any() and np.isneginf(special).any()
 
