@@ -53,21 +53,37 @@ def staged_folder(folder: Path) -> Iterator[Path]:
     ``folder`` (renamed into place); when it fails, it is removed and ``folder`` is untouched.
     Failing to create, fill (an OSError on a path inside it) or rename it raises
     :class:`CannotWrite` naming ``folder``."""
-    with _writing(folder):
-        _make_folder(folder.parent)
-        staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
+    missing = [p for p in (folder.parent, *folder.parent.parents) if not p.exists()]
+    done = False
     try:
-        try:
-            yield staging
-        except OSError as error:
-            if _inside(error.filename, staging) or (error.filename is None and error.errno in WRITE_ERRNOS):
-                raise CannotWrite(folder, error) from error
-            raise
         with _writing(folder):
-            _replace_folder(staging, folder)
+            _make_folder(folder.parent)
+            staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
+        try:
+            try:
+                yield staging
+            except OSError as error:
+                if _inside(error.filename, staging) or (error.filename is None and error.errno in WRITE_ERRNOS):
+                    raise CannotWrite(folder, error) from error
+                raise
+            with _writing(folder):
+                _replace_folder(staging, folder)
+            done = True
+        finally:
+            if staging.exists():
+                shutil.rmtree(staging)
     finally:
-        if staging.exists():
-            shutil.rmtree(staging)
+        if not done:
+            _remove_empty(missing)
+
+
+def _remove_empty(folders: list[Path]) -> None:
+    """Remove ``folders`` (innermost first) a failed write created, while they are empty."""
+    for created in folders:
+        try:
+            created.rmdir()
+        except OSError:
+            return
 
 
 def _replace_folder(staging: Path, folder: Path) -> None:

@@ -26,9 +26,10 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     if not output:
         raise SpecError(bake.WHERE, "-o", "give the file to write")
     fmt = bake.format_for(fmt, output)
-    req = bake.request(load.load(spec_path, keep=(source, shaper)), source, display, method or bake.DEFAULT_METHOD, fmt,
+    req = bake.request(load.load(spec_path, keep=(source, shaper)), source, display,
+                       bake.DEFAULT_METHOD if method is None else method, fmt,
                        bake.DEFAULT_SIZE if size is None else size, shaper)
     files = bake.paths(bake.bake(req), output)
-    bake.write(files, force)
+    bake.write(files, force, bake.stale(files, output, fmt))
     written = ", ".join(str(path) for path in files)
     click.echo(f"{written}: {fmt}, {bake.describe(req)} ({time.perf_counter() - started:.2f} s)")

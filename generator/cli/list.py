@@ -24,11 +24,17 @@ def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
 
 @click.command(help="List the library's colour spaces (default), displays or curves; piped, one tab-separated "
                     "line per row.")
-@click.option("--displays", "what", flag_value="displays", help="List displays.")
-@click.option("--curves", "what", flag_value="curves", help="List transfer functions.")
-@click.option("--spaces", "what", flag_value="spaces", default=True, help="List colour spaces.")
-def command(what):
-    header, rows = _rows(what)
+@click.option("--displays", is_flag=True, help="List displays.")
+@click.option("--curves", is_flag=True, help="List transfer functions.")
+@click.option("--spaces", is_flag=True, help="List colour spaces (the default).")
+def command(displays, curves, spaces):
+    from generator.spec.schema import SpecError
+
+    chosen = [name for name, given in (("spaces", spaces), ("displays", displays), ("curves", curves)) if given]
+    if len(chosen) > 1:
+        raise SpecError("ocioforge list", f"--{chosen[1]}", f"given with --{chosen[0]}; allowed: one of --spaces, "
+                        "--displays, --curves")
+    header, rows = _rows(chosen[0] if chosen else "spaces")
     if not sys.stdout.isatty():  # piped (grep, a script): never wrapped
         for row in (header, *rows):
             click.echo("\t".join(row))

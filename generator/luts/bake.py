@@ -78,7 +78,8 @@ def find_display(spec: Spec, name: str, field: str) -> Display:
         space = spec.space(name)
     except KeyError:
         names = [n for d in spec.displays for n in (d.name, *d.aliases)]
-        raise SpecError(WHERE, field, f"unknown display {name!r}{suggest(name, names)}") from None
+        raise SpecError(WHERE, field, f"unknown display {name!r}{suggest(name, names)}; allowed: "
+                        f"{', '.join(d.name for d in spec.displays)}") from None
     raise SpecError(WHERE, field, f"{space.name!r} is a scene colour space; {field} takes a display")
 
 
@@ -91,8 +92,8 @@ def find_source(spec: Spec, name: str, field: str, role: str = "source") -> Colo
     except KeyError:
         if any(name.lower() in (n.lower() for n in (d.name, *d.aliases)) for d in spec.displays):
             raise SpecError(WHERE, field, f"{name!r} is a display; {field} takes a scene colour space") from None
-        names = [n for s in spec.colour_spaces for n in s.all_names]
-        raise SpecError(WHERE, field, f"unknown colour space {name!r}{suggest(name, names)}") from None
+        raise SpecError(WHERE, field, f"unknown colour space {name!r}{suggest(name, spec.space_names)}; "
+                        "'ocioforge list' lists them") from None
     if space.is_data:
         raise SpecError(WHERE, field, f"{space.name!r} is data (never colour managed); it cannot be a {role}")
     if space.special or space.gamut is None:
@@ -217,6 +218,7 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
                 f"Input: {req.source.name} values, decoded and converted to {req.display.name} light exactly; the "
                 f"lattice covers {low:.9g} to {high:.9g} times the display's peak per channel (clamped beyond).",
                 output]
+    output = output[:-1] + " for black to the peak; fitted node values may lie a little outside it."
     lines = [f"ocioforge: {describe(req)}.",
              f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).", output]
     if lat.shaper is not None and req.shaper == "auto":
@@ -255,9 +257,21 @@ def paths(files: dict[str, bytes], output: str | Path) -> dict[Path, bytes]:
     return {(output if not suffix else output.with_suffix(suffix)): data for suffix, data in files.items()}
 
 
-def write(files: dict[Path, bytes], force: bool = False) -> None:
+def stale(files: dict[Path, bytes], output: str | Path, fmt: str) -> list[Path]:
+    """Files an earlier bake to ``output`` left that this one does not write: the shaper
+    beside a .spi3d (paired with the new file, it would put colours tens of codes off)."""
+    shaper = Path(output).with_suffix(SHAPER_SUFFIX)
+    return [shaper] if fmt == "spi3d" and shaper not in files and shaper.is_file() else []
+
+
+def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | None = None) -> None:
     """Write every file or none (:func:`generator.files.write_files`), after checking each
-    path's folder exists and, without ``force``, that no file is there."""
+    path's folder exists and, without ``force``, that no file is there; then, with ``force``,
+    delete ``remove`` (:func:`stale`: refused without it, as the files it replaces are)."""
+    for path in remove or ():
+        if not force:
+            raise SpecError(WHERE, "-o", f"{str(path)!r} exists, an earlier bake's shaper this one does not write; "
+                            "pass --force to replace the bake and delete it")
     for path in files:
         if not path.parent.is_dir():
             what = "is a file, not a folder" if path.parent.exists() else "does not exist"
@@ -265,3 +279,5 @@ def write(files: dict[Path, bytes], force: bool = False) -> None:
         if path.exists() and not force:
             raise SpecError(WHERE, "-o", f"{str(path)!r} exists; pass --force to replace it")
     write_files(files)
+    for path in remove or ():
+        path.unlink(missing_ok=True)

@@ -32,9 +32,17 @@ class BuildResult:
 def _check_baked(spec: Spec, luts: dict) -> None:
     """A curve no 1D LUT holds within BAKED_CURVE_RELATIVE (a table stepping between unevenly
     spaced rows) is refused, naming its file, rather than written off its bound."""
+    from generator.luts.names import slug
+    from generator.ocio.curves import curve_label
+
+    owners = [(s.name, s.curve_name, "custom_space") for s in spec.colour_spaces if not (s.is_data or s.special)]
+    owners += [(d.name, d.eotf_name, "display") for d in spec.displays]
     for name, lut in luts.items():
         if lut.max_relative_error > tolerances.BAKED_CURVE_RELATIVE:
-            raise SpecError(spec.source, "transfer", f"the curve baked as {LUT_FOLDER}/{name} departs "
+            owner, table = next(((o, t) for o, c, t in owners if name.startswith(f"{slug(curve_label(spec, o, c))}_to_")),
+                                ("", "custom_space"))
+            field = f"{table}[name = {owner!r}].{'eotf' if table == 'display' else 'transfer'}" if owner else "transfer"
+            raise SpecError(spec.source, field, f"the curve baked as {LUT_FOLDER}/{name} departs "
                             f"{lut.max_relative_error:.2g} relative from its table at the most entries a 1D LUT "
                             f"takes here ({MAX_SIZE + 1}): a step or kink between rows; allowed: a table whose rows "
                             "are evenly spaced in code (baked on its rows, exactly) or a smoother one")
@@ -67,6 +75,9 @@ def write_files(spec: Spec, folder: Path) -> BuildResult:
 #: among them, is a previous build that ``--force`` may replace.
 BUILD_ENTRIES = (CONFIG_FILENAME, LUT_FOLDER, resolved.FILENAME)
 
+#: What a build writes into its LUT folder: files of these suffixes alone.
+LUT_SUFFIXES = (".clf", ".spi1d")
+
 
 def _replace_problem(out_dir: Path) -> str:
     """Why ``--force`` may not replace the existing ``out_dir`` ("" when it may: a previous build)."""
@@ -79,6 +90,15 @@ def _replace_problem(out_dir: Path) -> str:
                 f"(a folder of {', '.join(BUILD_ENTRIES)})")
     if resolved.FILENAME not in names:
         return f"has no {resolved.FILENAME}, so it is not a previous build; --force replaces only those"
+    luts = out_dir / LUT_FOLDER
+    if luts.exists():
+        if not luts.is_dir():
+            return f"holds a file {LUT_FOLDER!r} where a build writes a folder; --force replaces only a previous build"
+        entries = sorted(luts.iterdir())
+        stray = next((e for e in entries if not e.is_file() or e.suffix not in LUT_SUFFIXES), None)
+        if stray is not None:
+            return (f"holds {LUT_FOLDER}/{stray.name}, which no build writes; --force replaces only a previous build "
+                    f"(its {LUT_FOLDER} holds {' and '.join(LUT_SUFFIXES)} files alone)")
     return ""
 
 

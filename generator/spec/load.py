@@ -117,6 +117,8 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
         text = path.read_text(encoding="utf-8-sig")  # a BOM some editors write is not TOML
     except OSError as error:
         raise SpecError(str(path), "-", f"cannot read the spec: {error.strerror}") from None
+    except UnicodeDecodeError:
+        raise SpecError(str(path), "-", "not UTF-8 text; allowed: a TOML file in UTF-8") from None
     return parse(text, str(path), path.parent, keep)
 
 
@@ -164,8 +166,9 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         keep = (*keep, reference, *DEFAULT_ROLES.values(), *roles.values())
     spaces = (*_kept(listed, keep), *customs)
     present = {n.lower() for s in spaces for n in s.all_names}
+    left_out = tuple(n for d in listed for n in (d.name, *d.aliases) if n.lower() not in present)
     return Spec(
-        name=_string(raw.get("name", "ocioforge"), source, "name"),
+        name=_config_name(raw.get("name", "ocioforge"), source),
         description=_string(raw.get("description", ""), source, "description"),
         ocio_version=version,
         scene_reference=reference,
@@ -177,7 +180,23 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
         display_view_spaces=view_spaces,
         source=recorded(source),
+        left_out=left_out,
     )
+
+
+#: Characters a config's name may not hold: it names the default output folder, configs/<name>,
+#: on any system a show's files travel to.
+NAME_FORBIDDEN = '/\\:*?"<>|'
+
+
+def _config_name(value, source: str) -> str:
+    name = _string(value, source, "name")
+    if not name.strip() or name.strip(".") == "" or name != name.strip() or \
+            any(c in NAME_FORBIDDEN or ord(c) < 32 for c in name):
+        raise SpecError(source, "name", f"{name!r} cannot name a folder (a build's default output is "
+                        f"configs/<name>); allowed: a name without {' '.join(NAME_FORBIDDEN)}, control characters "
+                        "or spaces at either end, and not . or ..")
+    return name
 
 
 def recorded(source: str) -> str:
@@ -390,6 +409,14 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
             raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
     known = {n.lower(): d for d in library.DISPLAYS for n in (d.name, *d.aliases)}
     custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
+    if custom:
+        aliases = _aliases(table.get("aliases", []), source, f"{field}.aliases")
+        taken = next(((key, n) for key, names in (("name", (name,)), ("aliases", aliases)) for n in names
+                      if n.lower() in known), None)
+        if taken:
+            key, n = taken
+            raise SpecError(source, f"{field}.{key}", f"{n!r} names the library display {known[n.lower()].name!r}, "
+                            "whose gamut and eotf are fixed; allowed: another name for a custom display")
     if name.lower() in known and not custom:
         fixed = next((k for k in table if k not in LIBRARY_DISPLAY_KEYS), None)
         if fixed:

@@ -64,7 +64,7 @@ def _record(obj) -> dict:
 
 
 def dumps(spec: Spec) -> str:
-    data = {f.name: getattr(spec, f.name) for f in dataclasses.fields(spec)}
+    data = {f.name: getattr(spec, f.name) for f in dataclasses.fields(spec) if f.metadata.get("resolved", True)}
     data["colour_spaces"] = [_record(s) for s in spec.colour_spaces]
     data["displays"] = [_record(d) for d in spec.displays]
     data["file_rules"] = [dataclasses.asdict(r) for r in spec.file_rules]

@@ -6,7 +6,7 @@ the colorimetry, the emitter, the baker and the verifier all read.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from generator.colorimetry.matrices import Gamut
 from generator.colorimetry.transfer import TransferFunction
@@ -102,6 +102,14 @@ class Spec:
     display_view_spaces: bool  # no default here: a spec that leaves it out takes the embedded default spec's
     inactive: tuple[str, ...] = ()
     source: str = "<default>"
+    #: Names of the spec's colour spaces a load for one command left out (see
+    #: :func:`generator.spec.load.load`'s ``keep``): offered when a name is mistyped, never built.
+    left_out: tuple[str, ...] = field(default=(), compare=False, metadata={"resolved": False})
+
+    @property
+    def space_names(self) -> list[str]:
+        """Every name and alias of the spec's colour spaces, those a load left out included."""
+        return [n for s in self.colour_spaces for n in s.all_names] + list(self.left_out)
 
     def space(self, name: str) -> ColourSpace:
         """The colour space called ``name`` or one of its aliases (case-insensitive)."""

@@ -63,6 +63,42 @@ def test_force_replaces_only_a_previous_build(tmp_path, capsys, foreign):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["show"]
 
 
+def test_force_keeps_what_is_not_a_build_inside_its_lut_folder(tmp_path, capsys):
+    """A previous build whose luts/ also holds a file no build writes is not replaced."""
+    out = tmp_path / "show"
+    assert run(capsys, "build", "-o", str(out))[0] == 0
+    (out / "luts" / "shot.exr").write_bytes(b"keep")
+    code, _, err = run(capsys, "build", "-o", str(out), "--force")
+    assert code == 2 and err.count("\n") == 1 and "luts/shot.exr, which no build writes" in err
+    assert (out / "luts" / "shot.exr").read_bytes() == b"keep"
+
+
+def test_a_spec_not_in_utf8_is_one_line(tmp_path, capsys):
+    spec = tmp_path / "show.toml"
+    spec.write_bytes('name = "show"\n'.encode("utf-16"))
+    code, _, err = run(capsys, "build", str(spec), "-o", str(tmp_path / "out"))
+    assert code == 2 and err.count("\n") == 1 and "not UTF-8 text" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["show.toml"]
+
+
+def test_a_build_failing_while_written_leaves_no_folders_it_made(tmp_path, capsys):
+    """A table no 1D LUT holds is found while the folder is staged: the folders made for the
+    output go too, and the error names the space."""
+    codes = sorted([(i / 39) ** 1.7 for i in range(40)] + [0.33331, 0.33333])  # uneven rows, a step between two
+    (tmp_path / "rough.csv").write_text("".join(f"{x:.6f},{x * 0.3 + (0.2 if x > 0.33332 else 0.0):.6f}\n"
+                                                for x in codes))
+    (tmp_path / "rough.toml").write_text('colour_spaces = ["*"]\n[[custom_space]]\nname = "Rough"\ngamut = "Rec.709"\n'
+                                         'transfer = { family = "tabulated", file = "rough.csv" }\n')
+    code, _, err = run(capsys, "build", str(tmp_path / "rough.toml"), "-o", str(tmp_path / "a" / "b" / "show"))
+    assert code == 2 and err.count("\n") == 1 and "custom_space[name = 'Rough'].transfer" in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["rough.csv", "rough.toml"]
+
+
+def test_list_takes_one_kind(capsys):
+    code, _, err = run(capsys, "list", "--displays", "--curves")
+    assert code == 2 and err.count("\n") == 1 and "allowed: one of --spaces, --displays, --curves" in err
+
+
 @pytest.mark.parametrize("argv", (["build", "-o", "{blocked}/show"], ["init", "{blocked}/show.toml"]))
 def test_an_unwritable_output_is_one_line_and_exit_2(tmp_path, capsys, argv):
     """An output under a regular file cannot be written, for any user: the path and the OS's

@@ -62,6 +62,7 @@ BAD = {
     "scene space as display": ["--from", "ACEScg", "--to", "ACEScct"],
     "unknown format": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "3dl"],
     "unknown method": ["--from", "ACEScg", "--to", "sRGB - Display", "--gamut-map", "squash"],
+    "empty method": ["--from", "ACEScg", "--to", "sRGB - Display", "--gamut-map", ""],
     "size too large": ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "130"],
     "size too small": ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "2"],
     "shaper in iridas": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube", "--shaper", "ACEScct"],
@@ -102,6 +103,31 @@ def test_an_output_folder_that_is_not_one_is_named(tmp_path, run, blocker, reaso
     code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", "-o", str(folder / "out.cube")])
     assert code == 2 and err.count("\n") == 1 and reason in err, err
     assert [p.name for p in tmp_path.iterdir()] == (["luts"] if blocker else [])
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--from", "ARRI LogC4x", "--to", "sRGB - Display"], "did you mean 'ARRI LogC4'"),
+    (["--from", "ACEScg", "--to", "sRGB - Display", "--shaper", "ACEScctt"], "did you mean 'ACEScct'"),
+    (["--from", "ACEScg", "--to", "Nope"], "allowed: sRGB - Display, "),
+])
+def test_a_mistyped_name_is_answered_with_the_names_the_spec_has(tmp_path, run, args, words):
+    """The bake loads only the spaces it names, yet suggests among all the spec's."""
+    code, err = run([*args, "-o", str(tmp_path / "out.cube")])
+    assert code == 2 and err.count("\n") == 1 and words in err, err
+
+
+def test_a_spi3d_rebaked_without_a_shaper_takes_the_old_shaper_with_it(tmp_path, run):
+    """An earlier bake's .spi1d beside a .spi3d that no longer needs one would be paired with
+    it by whoever reads the two: refused without --force, deleted with it."""
+    out = tmp_path / "s.spi3d"
+    args = ["--from", "sRGB Encoded Rec.709 (sRGB)", "--to", "Display P3 - Display", "--size", "9", "-o", str(out)]
+    assert CliRunner().invoke(command, args).exit_code == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.spi1d", "s.spi3d"]
+    (tmp_path / "s.spi3d").unlink()
+    code, err = run([*args, "--shaper", "none"])
+    assert code == 2 and "s.spi1d" in err and "--force" in err
+    assert CliRunner().invoke(command, [*args, "--shaper", "none", "--force"]).exit_code == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s.spi3d"]
 
 
 def test_existing_output_needs_force(tmp_path, run):
