@@ -46,7 +46,7 @@ Method (this project's design, documented here):
    strictly, such a colour would land far inside and the mapping would jump.
    For colours outside the cube of such a display, a point whose negative
    channels are within :data:`FOLD_SLACK` of its largest is counted inside,
-   and the final clip removes the excursion (hue and line kept within 0.003
+   and the final clip removes the excursion (hue and line kept within 0.0032
    there on BT.709, 0.0075 radian on BT.2020, measured). The slack does not
    remove every turn of such a line: beyond the cube near blue (a channel
    negative, blue above 1), a colour whose line grazes the cube can still jump
