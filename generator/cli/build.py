@@ -14,14 +14,14 @@ import click
 @click.option("--ocio-version", help="Config version to write, e.g. 2.1 (overrides the spec).")
 @click.option("--force", is_flag=True, help="Replace the output folder if it holds a previous build.")
 def command(spec, output, ocio_version, force):
-    from generator.ocio.write import build, for_folder
+    from generator.ocio.write import build, for_folder, target
     from generator.spec import load
 
     started = time.perf_counter()
     parsed = load.load(spec)
     version = load.parse_version(ocio_version, "--ocio-version") if ocio_version else None
     out_dir = Path(output) if output else Path("configs") / parsed.name
-    result = build(for_folder(parsed, out_dir.absolute(), version), out_dir, force=force)
+    result = build(for_folder(parsed, target(out_dir), version), out_dir, force=force)
     click.echo(
         f"{result.path / 'config.ocio'}: OCIO {'.'.join(map(str, version or parsed.ocio_version))}, "
         f"{result.colour_spaces} colour spaces, {result.displays} displays, {result.views} views, "

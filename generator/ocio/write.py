@@ -102,10 +102,17 @@ def _replace_problem(out_dir: Path) -> str:
     return ""
 
 
+def target(out_dir: str | Path) -> Path:
+    """The folder a build into ``out_dir`` writes, absolute: a link to a folder (a show's
+    ``current``) stays a link, and the folder it points to is replaced (and names the config)."""
+    out_dir = Path(out_dir).absolute()
+    return out_dir.resolve() if out_dir.is_symlink() and out_dir.resolve().is_dir() else out_dir
+
+
 def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
     """Build ``spec`` into ``out_dir``: a new or empty folder, or with ``force`` a previous
-    build (never a folder holding anything a build does not write)."""
-    out_dir = Path(out_dir).absolute()
+    build (never a folder holding anything a build does not write), at :func:`target`."""
+    out_dir = target(out_dir)
     if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())):
         if not force and out_dir.is_dir():
             raise SpecError(str(out_dir), "-o", "exists and is not empty; pass --force to replace a previous build")

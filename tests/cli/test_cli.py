@@ -73,6 +73,20 @@ def test_force_keeps_what_is_not_a_build_inside_its_lut_folder(tmp_path, capsys)
     assert (out / "luts" / "shot.exr").read_bytes() == b"keep"
 
 
+def test_force_through_a_link_replaces_the_build_it_points_to(tmp_path, capsys):
+    """A show's ``current`` link to a versioned build stays a link; the build is replaced."""
+    build = tmp_path / "v001"
+    assert run(capsys, "build", "-o", str(build))[0] == 0
+    (tmp_path / "current").symlink_to("v001")
+    (build / "config.ocio").write_text("stale")
+    assert run(capsys, "build", "-o", str(tmp_path / "current"), "--force")[0] == 0
+    assert (tmp_path / "current").is_symlink() and (build / "config.ocio").read_text().startswith("ocio_profile_version")
+    import PyOpenColorIO as ocio
+
+    assert ocio.Config.CreateFromFile(str(build / "config.ocio")).getName() == "v001"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["current", "v001"]
+
+
 def test_a_spec_not_in_utf8_is_one_line(tmp_path, capsys):
     spec = tmp_path / "show.toml"
     spec.write_bytes('name = "show"\n'.encode("utf-16"))
