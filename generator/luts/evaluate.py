@@ -35,6 +35,8 @@ def index_rounding(lat: Lattice, linear) -> np.ndarray:
     ``linear`` (..., 3) through the rounding of the shaper table's fractional index
     (FLOAT32_TABLE_INDEX_ROUNDINGS units of it): times the table's step there."""
     flat = np.nan_to_num(np.asarray(linear, dtype=np.float64).reshape(-1, 3), nan=0.0)
+    if lat.shaper is None:
+        return np.zeros_like(flat)
     lo, hi = lat.domain
     with np.errstate(all="ignore"):
         shaped = np.clip(lat.pre.forward(flat), lo, hi)

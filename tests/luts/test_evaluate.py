@@ -57,3 +57,32 @@ def test_display_file_refuses_other_layouts(default_spec):
     display = default_spec.displays[0]
     with pytest.raises(ValueError, match="pre-shaper"):
         evaluate.display_file(view_lattice(default_spec, display, "scale"), np.zeros((1, 3)))
+
+
+@pytest.mark.parametrize("display_name", ["sRGB - Display", "Display P3 HDR - Display"])
+def test_index_rounding_bounds_ocio_coordinates_near_black(default_spec, tmp_path, display_name):
+    """OCIO's lattice coordinates of a view file's pre-shaped values (its Range and shaper
+    table) depart from the float64 ones by the table's output rounding (FLOAT32_MATRIX_ROUNDINGS
+    u) and its index's (:func:`evaluate.index_rounding`), no more; near Display P3 HDR's black
+    the index's is the larger (a thousand-entry table read hundreds of entries in)."""
+    display = next(d for d in default_spec.displays if d.name == display_name)
+    view = bake_view_lut(default_spec, display, "perceptual")
+    path = tmp_path / view.filename
+    path.write_bytes(view.data)
+    cfg = ocio.Config.CreateRaw()
+    ops = cfg.getProcessor(ocio.FileTransform(str(path))).createGroupTransform()
+    shaper = next(i for i, op in enumerate(ops) if isinstance(op, ocio.Lut1DTransform))
+    assert isinstance(ops[1], ocio.RangeTransform) and shaper == 2
+    cpu = cfg.getProcessor(ocio.GroupTransform([ops[1], ops[2]])).getDefaultCPUProcessor()
+    lat = view_lattice(default_spec, display, "perceptual")
+    rng = np.random.default_rng(5)
+    colours = rng.choice([-1.0, 1.0], (4000, 3)) * rng.random((4000, 3)) * 10.0 ** rng.uniform(-12, -1, (4000, 1))
+    shaped = lat.pre.forward(colours).astype(np.float32).astype(np.float64)  # the pre-shaper's output, as OCIO holds it
+    colours = lat.pre.inverse(shaped)
+    pixels = np.ascontiguousarray(shaped, dtype=np.float32)
+    cpu.applyRGB(pixels)
+    departure = np.abs(pixels - evaluate.coordinates(lat, colours))
+    table = tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF
+    assert np.all(departure <= table + evaluate.index_rounding(lat, colours))
+    if display.clip_high > 1.0:
+        assert np.any(departure > table)
