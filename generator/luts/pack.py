@@ -67,8 +67,9 @@ channel 1e-4 to 1e-2 of white), out-of-gamut colours of the source gamut, and
 over-range colours up to 16 times the peak, those the source's codes hold (a capped
 code range leaves the brightest out). Ten-bit code values for SDR
 displays, ΔE ITP (ITU-R BT.2124) for Rec.2100-PQ. "In-gamut probes max" is the
-largest error on the in-gamut and dark probes; "All probes p99" and "All probes
-max" are over all four sets.
+largest error on the in-gamut and dark probes; "Worst set p99" is the largest of the
+four sets' 99th percentiles (above the p99 of all probes pooled), "All probes max" the
+largest error of all four sets.
 
 These are the largest errors on the probes, not bounds over the gamut: random
 colours seldom have a display channel at or near 0, and colours on those faces
@@ -77,7 +78,7 @@ different gamuts that is tens of ten-bit codes more than its in-gamut figure
 below; on a CLF for a pure-power display (Rec.1886, Gamma 2.6), up to a few codes
 where a display channel is exactly 0.
 
-| File | Source | Destination | Method | Size | In-gamut probes max | All probes p99 | All probes max | Unit |
+| File | Source | Destination | Method | Size | In-gamut probes max | Worst set p99 | All probes max | Unit |
 | --- | --- | --- | --- | --- | --- | --- | --- | --- |
 """
 

@@ -53,8 +53,9 @@ PQ_BUILTIN_TABLES = {(2, 0): 4096, (2, 4): HALF_DOMAIN}
 #: as a clamping builtin or a baked curve does: OCIO's CURVE - ST-2084_to_LINEAR mirrors
 #: negative codes, goes on past code 1 (10000 cd/m², where ST 2084 ends) to 2.7e9 at code 1.9
 #: and decodes codes from 2 up to 0, and its inverse mirrors negative light (measured through
-#: PyOpenColorIO). A display's PQ codes need no clamp: its light is clipped to the display's
-#: peak, at most 10000 cd/m², before it is encoded.
+#: PyOpenColorIO). A display's PQ codes are clamped after encoding, where its light, clipped
+#: to the display's peak (at most 10000 cd/m²), never leaves the range: read back, codes
+#: beyond it come to the peak or black as the scene spaces' do, in every library.
 BUILTIN_CLAMPED_DOMAIN = {
     "CURVE - ST-2084_to_LINEAR": (0.0, 1.0),
 }

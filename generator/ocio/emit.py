@@ -101,9 +101,12 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
         # The signal ends at code 1 (OCIO 2.1's builtin clamps there, later versions do not).
         return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),
                         ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0)]
-    decode = curves.decode_transforms(curves.curve_label(spec, display.name, display.eotf_name), display.eotf,
-                                      spec.ocio_version, bakes)
-    return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
+    label = curves.curve_label(spec, display.name, display.eotf_name)
+    decode = curves.decode_transforms(label, display.eotf, spec.ocio_version, bakes)
+    # Codes beyond the signal range, read back, are clamped to it as a scene space's are (the
+    # encoded light never leaves it): OCIO's PQ builtin decodes PQ code 2 as black from 2.2 on.
+    return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else []) + \
+        curves.code_clamp(label, spec.ocio_version)
 
 
 #: Methods whose view read backwards (a display-referred file into the scene, through its

@@ -69,6 +69,7 @@ DEFAULT_ROLES = {
     "data": "Raw", "default": "sRGB Encoded Rec.709 (sRGB)", "aces_interchange": "ACES2065-1",
     "cie_xyz_d65_interchange": "CIE XYZ-D65 - Display-referred", "default_byte": "sRGB Encoded Rec.709 (sRGB)",
     "default_float": "ACEScg", "default_sequencer": "sRGB Encoded Rec.709 (sRGB)",
+    "reference": "ACES2065-1",  # the spec's scene_reference unless [roles] says otherwise
 }
 
 OCIO_MIN_VERSION = (2, 1)
@@ -175,7 +176,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles(roles, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
+        roles=_roles({"reference": reference, **roles}, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
         file_rules=_file_rules(raw, source, every | set(taken)),
         inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
         display_view_spaces=view_spaces,

@@ -136,6 +136,18 @@ def test_colorimetric_views_match_the_reference(built):
         assert error.max() <= tolerances.ANALYTIC_DELTA_E_ITP, (display.name, float(error.max()))
 
 
+def test_display_codes_beyond_the_signal_read_back_as_its_ends(built):
+    """A display's codes past the signal's range, read back into the scene, come to what its
+    ends give (OCIO's PQ builtin from 2.2 on decodes PQ code 2 as black, 2.1's as the peak)."""
+    cfg, spec = built
+    for display in spec.displays:
+        top = float(reference.display_encode(display, np.full(3, display.clip_high))[0])
+        codes = np.array([[2.0, 2.0, 2.0], [1.5, 1.0, 1.2], [-0.5, -2.0, 0.0]]) * max(top, 1.0)
+        ends = np.clip(codes, 0.0, top)
+        processor = cfg.getProcessor(display.name, spec.scene_reference).getOptimizedCPUProcessor(LOSSLESS)
+        assert np.allclose(apply(processor, codes), apply(processor, ends), rtol=1e-6, atol=1e-7), display.name
+
+
 def test_roles_and_rules_hosts_read(built):
     cfg, _ = built
     roles = dict(cfg.getRoles())

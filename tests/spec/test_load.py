@@ -294,3 +294,10 @@ def test_a_spec_saved_with_a_byte_order_mark_loads(tmp_path):
 
 def test_a_library_display_may_be_named_by_an_alias():
     assert parse('[[display]]\nname = "srgb_display"\nviews = ["Colorimetric", "Raw"]').displays[0].name == "sRGB - Display"
+
+
+def test_the_reference_role_follows_the_scene_reference_unless_set():
+    """OCIO 2.1's ociocheck warns of a config without the reference role."""
+    assert ("reference", "ACES2065-1") in parse("").roles
+    assert ("reference", "ACEScg") in parse("scene_reference = 'ACEScg'").roles
+    assert ("reference", "ACEScg") in parse("[roles]\nreference = 'ACEScg'").roles
