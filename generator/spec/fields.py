@@ -218,6 +218,10 @@ def _check_log_break(params: dict, source: str, field: str) -> None:
     if "lin_side_break" not in params:
         if "linear_slope" in params:
             raise SpecError(source, f"{field}.linear_slope", "needs lin_side_break, where the linear segment starts")
+        if params["lin_side_offset"] <= 0.0:
+            raise SpecError(source, f"{field}.lin_side_offset", f"{params['lin_side_offset']:g} leaves black without a "
+                            "code (the log of lin_side_offset at linear 0); allowed: > 0, or a lin_side_break where a "
+                            "linear toe takes over")
         return
     lowest = -params["lin_side_offset"] / params["lin_side_slope"]
     if params["lin_side_break"] <= lowest:

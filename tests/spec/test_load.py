@@ -60,6 +60,9 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = { family = 'log_camera', base = 10, "
      "log_side_slope = 0.25, log_side_offset = 0.4, lin_side_slope = 5.0, lin_side_offset = 0.05, "
      "lin_side_break = 100 }", "custom_space[0].transfer", "which departs 0.00046 relative"),
+    ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = { family = 'log_camera', base = 2, "
+     "log_side_slope = 0.06, log_side_offset = 0.55, lin_side_slope = 1.0, lin_side_offset = 0.0 }",
+     "custom_space[0].transfer.lin_side_offset", "leaves black without a code"),
     ("ocio_version = '2.01'", "ocio_version", "expected a version like"),
     ("ocio_version = ' 2.1'", "ocio_version", "expected a version like"),
     ("chromatic_adaptation = 'Sharp'", "chromatic_adaptation", "allowed: Bradford"),
