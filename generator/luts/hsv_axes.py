@@ -178,15 +178,31 @@ def shared_table() -> np.ndarray:
     return _coordinates(x, x, x)
 
 
+def table_inputs() -> np.ndarray:
+    """OCIO HSV values (n, 3) reading every entry of the shared table the view can reach, one
+    column at a time: hue on every half float from 0 to 1, ``t = 2 - S`` on every half float
+    from 2**-14 (SATURATION_REACH) to 2, V on every finite half float of either sign; the other
+    two at values of their own columns' nodes."""
+    halves = _half_values()
+    finite = halves[np.isfinite(halves)]
+    hue = finite[(finite >= 0.0) & (finite <= 1.0) & ~np.signbit(finite)]
+    t = finite[(finite >= 1.0 / SATURATION_REACH) & (finite <= 2.0)]
+    rows = [np.stack([hue, np.full_like(hue, 0.5), np.full_like(hue, 0.5)], axis=-1),
+            np.stack([np.full_like(t, 0.25), 2.0 - t, np.full_like(t, 0.5)], axis=-1),
+            np.stack([np.full_like(finite, 0.25), np.full_like(finite, 0.5), finite], axis=-1)]
+    return np.concatenate(rows)
+
+
 def _saturation_of_u(u: np.ndarray) -> np.ndarray:
     return np.where(u <= 1.0, u, 2.0 - 1.0 / np.maximum(u, 1.0))
 
 
 def shared_coordinates(values: np.ndarray) -> np.ndarray:
     """What the shared file does to OCIO HSV ``values`` (n, 3), in float64 without its
-    sampling: ``(H / 6, u's coordinate, V's coordinate)``, clamped as the table clamps."""
+    sampling: ``(H / 6, u's coordinate, V's coordinate)``, clamped as the table clamps. Its
+    Matrix adds +0 to V, so a V of -0 reads +0's entry (both give black)."""
     values = np.asarray(values, dtype=np.float64)
-    return _coordinates(values[:, 0], 2.0 - values[:, 1], values[:, 2])
+    return _coordinates(values[:, 0], 2.0 - values[:, 1], values[:, 2] + 0.0)
 
 
 def lattice_coordinates(values: np.ndarray, weights: np.ndarray) -> np.ndarray:

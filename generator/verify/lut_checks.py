@@ -120,7 +120,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
     to_display = reference.normalised_display_matrix(spec, display)
     finite = [f for f in families if f.name != probes.NON_FINITE]
     values = [Family(f.name, _float32(hsv_axes.ocio_rgb_to_hsv(f.values)), f.notes) for f in finite]
-    shared = Probes(tuple(values))
+    shared = Probes((*values, Family("every entry of the table", _float32(hsv_axes.table_inputs()))))
     coordinates = Probes(tuple(Family(f.name, _float32(hsv_axes.shared_coordinates(f.values)), f.notes)
                                for f in values))
     shared_name = f"{LUT_FOLDER}/{hsv.SHARED_FILE}"

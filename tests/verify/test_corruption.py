@@ -152,6 +152,22 @@ def test_a_perceptual_shaper_entry_nudged_is_named(config_copy, entry):
     assert "luts/view_srgb_display_perceptual_33.clf" in _newly_failing(config_copy, nudge, (LUT,))
 
 
+@pytest.mark.parametrize("half, column", [(0x0CBA, 0), (0x0B5B, 2)])
+def test_an_entry_of_the_shared_hsv_table_is_named(config_copy, half, column):
+    """Every entry of the shared HSV table is read (a hue near 3e-4, a value near 2e-4: a
+    narrow band no scene colour of the quick probes reaches), and one moved is named."""
+    def nudge(path):
+        clf = path.parent / "luts" / "hsv_coordinates.clf"
+        lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
+        start = next(i for i, line in enumerate(lines) if line.startswith("<LUT1D")) + 2  # after <Array>
+        values = [float(v) for v in lines[start + half].split()]
+        values[column] = values[column] * 1.5 + 1e-3
+        lines[start + half] = " ".join(f"{v:.9g}" for v in values) + "\n"
+        clf.write_text("".join(lines), encoding="utf-8")
+
+    assert _newly_failing(config_copy, nudge, (LUT,)) == {"luts/hsv_coordinates.clf"}
+
+
 def test_a_perceptual_file_off_by_codes_fails_its_view(config_copy):
     """Node values a few codes off inside the cube fail the sRGB Perceptual view too, no other
     display's."""
