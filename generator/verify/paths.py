@@ -268,14 +268,25 @@ def _lattice_view(spec: Spec, display: Display, method: str) -> Evaluate:
 
 
 def display_view_spaces(spec: Spec) -> list[Endpoint]:
-    """The "<view> - <display>" spaces a config holds when the spec asks for them."""
+    """The "<view> - <display>" spaces a config holds when the spec asks for them. Read back
+    into the scene, a view the config inverts as Colorimetric (clip, and
+    :data:`~generator.ocio.emit.INVERTED_AS_COLORIMETRIC`) decodes as its display does;
+    RGC's analytic inverse has no evaluation here (no decode: checked forward only)."""
+    from generator.ocio.emit import INVERTED_AS_COLORIMETRIC
+
     if not spec.display_view_spaces:
         return []
-    back = {d.name: np.linalg.inv(reference.display_matrix(spec, d) @ reference.scene_to_display_reference(spec))
-            for d in spec.displays}
-    return [Endpoint(display_view_space(view, display.name), None, view_function(spec, display, view), (0.0, 1.0), DISPLAY,
-                     display, matrix=back[display.name], view=view) for display in spec.displays for view in display.views
-            if view != RAW]
+    out = []
+    for display in spec.displays:
+        shown = _display_endpoint(spec, display)
+        for view in display.views:
+            if view == RAW:
+                continue
+            colorimetric = view_method(view) in ("clip", *INVERTED_AS_COLORIMETRIC)
+            out.append(Endpoint(display_view_space(view, display.name), shown.decode if colorimetric else None,
+                                view_function(spec, display, view), (0.0, 1.0), DISPLAY, display, matrix=shown.matrix,
+                                linear=shown.linear if colorimetric else None, view=view))
+    return out
 
 
 def endpoints(spec: Spec) -> dict[str, Endpoint]:

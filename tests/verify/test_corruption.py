@@ -204,6 +204,24 @@ def test_a_perceptual_lattice_assembled_wrongly_is_named(tmp_path, monkeypatch):
     assert "luts/view_srgb_display_perceptual_33.clf" in _failing_items(folder / "config.ocio", (LUT,))
 
 
+@pytest.mark.parametrize("view", ["Scale", "Desaturate"])
+def test_a_view_read_back_wrongly_is_named(config_copy, view):
+    """A "<view> - <display>" space read into the scene (a display-referred image brought into
+    a comp) is checked against the display's decoding: its view transform's inverse matrix
+    off by a tenth in one entry fails that space alone."""
+    def change(cfg):
+        vt = cfg.getViewTransform(f"{view} (sRGB - Display)")
+        matrix = vt.getTransform(ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
+        values = list(matrix.getMatrix())
+        values[0] *= 1.1
+        matrix.setMatrix(values)
+        vt.setTransform(matrix, ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
+        cfg.addViewTransform(vt)
+
+    failing = _newly_failing(config_copy, lambda path: _rewrite(path, change), (TO_REFERENCE,))
+    assert failing == {f"{view} - sRGB - Display"}
+
+
 def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
     missing = config_copy.parent / "luts" / "mi_log_to_linear.spi1d"
     assert _newly_failing(config_copy, lambda path: missing.unlink(), (TO_REFERENCE, LUT)) == {
