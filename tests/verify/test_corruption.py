@@ -209,17 +209,23 @@ def test_a_view_read_back_wrongly_is_named(config_copy, view):
     """A "<view> - <display>" space read into the scene (a display-referred image brought into
     a comp) is checked against the display's decoding: its view transform's inverse matrix
     off by a tenth in one entry fails that space alone."""
-    def change(cfg):
-        vt = cfg.getViewTransform(f"{view} (sRGB - Display)")
-        matrix = vt.getTransform(ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
-        values = list(matrix.getMatrix())
-        values[0] *= 1.1
-        matrix.setMatrix(values)
-        vt.setTransform(matrix, ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
-        cfg.addViewTransform(vt)
-
+    change = _scale_view_matrix(f"{view} (sRGB - Display)", ocio.VIEWTRANSFORM_DIR_TO_REFERENCE, 0, 1.1)
     failing = _newly_failing(config_copy, lambda path: _rewrite(path, change), (TO_REFERENCE,))
     assert failing == {f"{view} - sRGB - Display"}
+
+
+def _scale_view_matrix(name: str, direction, entry: int, factor: float):
+    """A change multiplying one entry of view transform ``name``'s matrix in ``direction``."""
+    def change(cfg):
+        vt = cfg.getViewTransform(name)
+        matrix = vt.getTransform(direction)
+        values = list(matrix.getMatrix())
+        values[entry] *= factor
+        matrix.setMatrix(values)
+        vt.setTransform(matrix, direction)
+        cfg.addViewTransform(vt)
+
+    return change
 
 
 def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
@@ -234,15 +240,7 @@ def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
 
 
 def test_a_wrong_view_transform_fails_every_colorimetric_view(config_copy):
-    def nudge(cfg):
-        view = cfg.getViewTransform("Colorimetric")
-        matrix = view.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
-        values = list(matrix.getMatrix())
-        values[5] *= 1.001
-        matrix.setMatrix(values)
-        view.setTransform(matrix, ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
-        cfg.addViewTransform(view)
-
+    nudge = _scale_view_matrix("Colorimetric", ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE, 5, 1.001)
     failing = _newly_failing(config_copy, lambda path: _rewrite(path, nudge), (VIEW,))
     displays = ocio.Config.CreateFromFile(str(config_copy)).getDisplays()
     assert {f"{d} / Colorimetric" for d in displays} <= failing
