@@ -81,7 +81,20 @@ def load(config_path: str | Path) -> tuple[Path, Spec]:
     except Exception as error:  # PyOpenColorIO.Exception and friends
         raise SpecError(str(path), "-", f"OpenColorIO cannot load it: {str(error).splitlines()[0]}") from None
     _same_inventory(path, cfg, spec)
+    _same_declarations(path, cfg, spec)
     return path.absolute(), spec
+
+
+def _same_declarations(path: Path, cfg, spec: Spec) -> None:
+    """The config declares the roles, file rules, inactive spaces, views and aliases its stored
+    spec builds (:mod:`generator.verify.declarations`): no check's numbers would show an edit."""
+    from generator.verify.declarations import differences
+
+    found = differences(cfg, spec)
+    if found:
+        more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
+        raise SpecError(str(path), "-", f"it declares what its stored spec does not build: {found[0]}{more}; allowed: "
+                        "a config as ocioforge build wrote it, beside its ocioforge-spec.json (rebuild it)")
 
 
 def _same_inventory(path: Path, cfg, spec: Spec) -> None:

@@ -1,0 +1,62 @@
+"""What a config declares beside its transforms, against its stored spec.
+
+Roles, file rules, inactive spaces, each display's views in order (the first is its
+default), the active displays and the spec's aliases decide which transform a host
+picks; none of them moves a number the checks compare, so an edit to one (a role
+pointed elsewhere, a file rule sending EXR to a log space, an alias moved onto another
+space) is found here, by name.
+"""
+
+from __future__ import annotations
+
+from generator.spec.schema import Spec
+
+
+def _canonical(cfg, name: str) -> str:
+    """The colour space (or display) ``name`` names in ``cfg``, as its own name."""
+    space = cfg.getColorSpace(name)
+    return space.getName() if space is not None else name
+
+
+def _names(listed) -> list[str]:
+    """A config's list of names: a comma-separated string or, in later PyOpenColorIO, an iterable."""
+    items = listed.split(",") if isinstance(listed, str) else list(listed)
+    return [n.strip() for n in items if n.strip()]
+
+
+def differences(cfg, spec: Spec) -> list[str]:
+    """Each declaration of ``cfg`` that is not what ``spec`` builds, described in a phrase."""
+    import PyOpenColorIO as ocio
+
+    out = []
+    roles = dict(cfg.getRoles())
+    for role, target in spec.roles:
+        held = roles.get(role)
+        if held is None or _canonical(cfg, held) != _canonical(cfg, target):
+            out.append(f"role {role} is {held!r}, the spec's {target!r}")
+    out += [f"role {role} is not the spec's" for role in sorted(set(roles) - {r for r, _ in spec.roles})]
+    rules = cfg.getFileRules()
+    held_rules = [(rules.getName(i), rules.getPattern(i), rules.getExtension(i), _canonical(cfg, rules.getColorSpace(i)))
+                  for i in range(rules.getNumEntries())]
+    built = [(r.name, r.pattern, r.extension, _canonical(cfg, r.colour_space)) for r in spec.file_rules]
+    if held_rules[:-1] != built[:-1] or held_rules[-1][3] != built[-1][3]:
+        index = next((i for i, (a, b) in enumerate(zip(held_rules, built)) if a != b), min(len(held_rules), len(built)))
+        out.append(f"file rule {index + 1} is {held_rules[index] if index < len(held_rules) else None}, "
+                   f"the spec's {built[index] if index < len(built) else None}")
+    inactive = set(_names(cfg.getInactiveColorSpaces()))
+    if inactive != set(spec.inactive):
+        out.append(f"inactive spaces are {sorted(inactive)}, the spec's {sorted(spec.inactive)}")
+    active = _names(cfg.getActiveDisplays())
+    if active != [d.name for d in spec.displays]:
+        out.append(f"active displays are {active}, the spec's {[d.name for d in spec.displays]}")
+    if _names(cfg.getActiveViews()):
+        out.append(f"active views are {_names(cfg.getActiveViews())}, where the spec lets each display order its own")
+    for display in spec.displays:
+        views = list(cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, display.name))
+        if views != list(display.views):
+            out.append(f"{display.name}'s views are {views}, the spec's {list(display.views)} (the first the default)")
+    for space in (*spec.colour_spaces, *spec.displays):
+        for alias in space.aliases:
+            if _canonical(cfg, alias) != space.name:
+                out.append(f"alias {alias!r} names {_canonical(cfg, alias)!r}, the spec's {space.name!r}")
+    return out

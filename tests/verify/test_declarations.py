@@ -1,0 +1,69 @@
+"""verify refuses a config whose declarations are not what its stored spec builds, naming the edit."""
+
+from __future__ import annotations
+
+import PyOpenColorIO as ocio
+import pytest
+
+from generator.spec import resolved
+from generator.spec.schema import SpecError
+from generator.verify import declarations
+from generator.verify.run import load
+
+
+def _move_alias(cfg):
+    """The alias lin_rec2020 moved from Linear Rec.2020 onto Linear Rec.709 (sRGB)."""
+    source, target = cfg.getColorSpace("Linear Rec.2020"), cfg.getColorSpace("Linear Rec.709 (sRGB)")
+    source.removeAlias("lin_rec2020")
+    target.addAlias("lin_rec2020")
+    cfg.addColorSpace(source)
+    cfg.addColorSpace(target)
+
+
+def _exr_as_log(cfg):
+    rules = cfg.getFileRules()
+    rules.setColorSpace(rules.getIndexForRule("OpenEXR"), "ACEScct")
+    cfg.setFileRules(rules)
+
+
+def _raw_first(cfg):
+    views = list(cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, "sRGB - Display"))
+    moved = ["Raw", *[v for v in views if v != "Raw"]]
+    entries = [(v, cfg.getDisplayViewTransformName("sRGB - Display", v), cfg.getDisplayViewColorSpaceName(
+        "sRGB - Display", v)) for v in views]
+    for view in views:
+        cfg.removeDisplayView("sRGB - Display", view)
+    by_name = {v: (t, s) for v, t, s in entries}
+    for view in moved:
+        transform, space = by_name[view]
+        if transform:
+            cfg.addDisplayView("sRGB - Display", view, transform, space, "", "", "")
+        else:
+            cfg.addDisplayView("sRGB - Display", view, space)
+
+
+EDITS = {
+    "role": (lambda cfg: cfg.setRole("scene_linear", "ACES2065-1"), "role scene_linear is 'ACES2065-1'"),
+    "file rule": (_exr_as_log, "file rule 1 is ('OpenEXR', '*', 'exr', 'ACEScct')"),
+    "inactive": (lambda cfg: cfg.setInactiveColorSpaces("ACEScct, Linear Rec.2020"), "inactive spaces are"),
+    "active views": (lambda cfg: cfg.setActiveViews("Colorimetric, Raw"), "active views are ['Colorimetric', 'Raw']"),
+    "active displays": (lambda cfg: cfg.setActiveDisplays("Rec.2100-PQ - Display, sRGB - Display"),
+                        "active displays are ['Rec.2100-PQ - Display', 'sRGB - Display']"),
+    "default view": (_raw_first, "sRGB - Display's views are ['Raw', "),
+    "alias": (_move_alias, "alias 'lin_rec2020' names 'Linear Rec.709 (sRGB)', the spec's 'Linear Rec.2020'"),
+}
+
+
+def test_the_built_config_declares_what_its_spec_builds(config_copy):
+    assert declarations.differences(ocio.Config.CreateFromFile(str(config_copy)), resolved.read_beside(config_copy)) == []
+
+
+@pytest.mark.parametrize("edit", sorted(EDITS))
+def test_an_edited_declaration_is_named(config_copy, edit):
+    change, words = EDITS[edit]
+    cfg = ocio.Config.CreateFromFile(str(config_copy))
+    change(cfg)
+    config_copy.write_text(cfg.serialize(), encoding="utf-8")
+    with pytest.raises(SpecError, match="declares what its stored spec does not build") as raised:
+        load(config_copy)
+    assert words in str(raised.value) and "\n" not in str(raised.value)
