@@ -66,10 +66,13 @@ SATURATION_NODES_ABOVE = (8 / 7, 4 / 3, 2.0, 4.0, 8.0, 32.0, 256.0, 2048.0, SATU
 #: resolves 6e-8: the cells there shrink geometrically (by 16), so a small negative V keeps
 #: about 1e-6 of its relative precision (with one cell from -1/16 to -0 it kept 5e-3, 0.6
 #: ten-bit codes on an ACEScct ramp near black). The shared half-domain table takes V to
-#: its node's coordinate, linearly between nodes (all half floats); the cell between 1024
-#: and -256 is never entered. Values beyond are clamped (V from -256 to 1024 times the
-#: display's peak).
-VALUE_NODES = (0.0, 1 / 64, 1 / 16, 0.25, 1.0, 4.0, 16.0, 64.0, 256.0, 1024.0,
+#: its node's coordinate, linearly between nodes (all half floats); the cell between the
+#: largest half float and -256 is never entered. Values beyond are clamped (V from -256 to
+#: 65504 times the display's peak): the mapped value is linear in V across a cell, so a wide
+#: top cell costs only float32 resolution, while a clamp at 1024 left colours far outside
+#: the gamut whose luminance is below a thousandth of V dimmer than the mapping (scene 20
+#: on a 1 cd/m² display, 216 ten-bit codes).
+VALUE_NODES = (0.0, 1 / 64, 1 / 16, 0.25, 1.0, 4.0, 16.0, 64.0, 256.0, 65504.0,
                -256.0, -16.0, -1.0, -2.0**-4, -2.0**-8, -2.0**-12, -2.0**-16, -2.0**-20, -0.0)
 
 #: Nodes of :data:`VALUE_NODES` at or above 0.

@@ -196,7 +196,7 @@ def view_method(view: str) -> str | None:
 def lut_range(display: Display, method: str | None = None) -> tuple[float, float] | None:
     """Display-linear range (1.0 = 100 cd/m²) a baked view LUT covers per channel; it clamps
     beyond (clip and scale treat every negative channel as 0, as their lattice does). None for
-    an HSV view, whose lattice clamps OCIO's HSV value instead (from -256 to 1024 times the
+    an HSV view, whose lattice clamps OCIO's HSV value instead (from -256 to 65504 times the
     peak, :mod:`generator.luts.hsv`)."""
     from generator.luts.axes import LOG_METHODS
     from generator.luts.lattice import DISPLAY_RANGE, log_axis_high

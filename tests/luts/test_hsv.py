@@ -97,6 +97,24 @@ def test_colours_a_rounding_from_black_stay_black(default_spec, tmp_path, name):
     assert np.all(codes <= high + tolerance) and np.all(codes >= least - tolerance)
 
 
+def test_bright_colours_of_little_luminance_are_mapped_beyond_a_thousand_times_the_peak(default_spec, tmp_path):
+    """Far outside the gamut a colour's desaturated value can be a thousandth of its V: at V
+    from 1e3 to 6e4 times the peak the lattice still holds the method (it had clamped V at
+    1024, leaving such a colour at 2000 times the peak 216 codes dim), within the float32
+    resolution of its HSV through the view, which grows with V there (a code or two)."""
+    display = _display(default_spec, "Gamma 2.2 Rec.709 - Display")
+    direction = np.array([[-1.2152757, -1.91399594, 22.55316027], [-0.9, 0.05, -0.02], [0.3, -0.2, 0.5]])
+    linear = np.concatenate([direction * k for k in (50.0, 90.0, 400.0, 2500.0)]).astype(np.float32).astype(np.float64)
+    assert hsv_axes.ocio_rgb_to_hsv(linear)[:, 2].max() > 2000.0
+    out = _view_apply(default_spec, display, tmp_path, np.eye(3))(linear)
+    expected = desaturate(linear, reference.display_gamut(display))
+    shift = hsv_rounding_shift(display, linear * display.clip_high) / display.clip_high
+    codes, low, high = (reference.display_encode(display, np.clip(light, 0.0, 1.0))
+                        for light in (out, expected - shift, expected + shift))
+    tolerance = tolerances.LUT_CLF_SCALE_CODES / 1023.0
+    assert np.all(codes >= low - tolerance) and np.all(codes <= high + tolerance)
+
+
 def test_near_the_cone_the_view_keeps_ocio_hsv_precision(default_spec, tmp_path):
     """An ACEScct green ramp near black crosses OCIO HSV's cone: V is the small difference
     of two equal magnitudes, and a small negative V's coordinate sits near 1 in float32. The
