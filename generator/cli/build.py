@@ -20,7 +20,7 @@ def command(spec, output, ocio_version, force):
     started = time.perf_counter()
     parsed = load.load(spec)
     version = load.parse_version(ocio_version, "--ocio-version") if ocio_version else None
-    out_dir = Path(output) if output else Path("configs") / parsed.name
+    out_dir = Path(output) if output else Path("configs") / load.folder_name(parsed.name, parsed.source)
     result = build(for_folder(parsed, target(out_dir), version), out_dir, force=force)
     click.echo(
         f"{result.path / 'config.ocio'}: OCIO {'.'.join(map(str, version or parsed.ocio_version))}, "

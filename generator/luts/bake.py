@@ -93,7 +93,7 @@ def find_source(spec: Spec, name: str, field: str, role: str = "source") -> Colo
         if any(name.lower() in (n.lower() for n in (d.name, *d.aliases)) for d in spec.displays):
             raise SpecError(WHERE, field, f"{name!r} is a display; {field} takes a scene colour space") from None
         raise SpecError(WHERE, field, f"unknown colour space {name!r}{suggest(name, spec.space_names)}; "
-                        "'ocioforge list' lists them") from None
+                        "'ocioforge list' lists the library's") from None
     if space.is_data:
         raise SpecError(WHERE, field, f"{space.name!r} is data (never colour managed); it cannot be a {role}")
     if space.special or space.gamut is None:

@@ -193,6 +193,8 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
         return label, transfer.PiecewisePower(params["gamma"], params["offset"])
     _check_log_break(params, source, field)
     curve = transfer.LogCamera(**params)
+    if curve.lin_side_break is None:
+        _check_black(curve, source, field)
     departure = curve.float32_departure(tolerances.RELATIVE_FLOOR)
     if departure > tolerances.LOG_CAMERA_FLOAT32_RELATIVE:
         raise SpecError(source, field, f"OCIO evaluates a log_camera curve in float32, which departs {departure:.2g} "
@@ -210,6 +212,21 @@ def _describe(low: float, high: float, open_low: bool) -> str:
     if high == math.inf:
         return f"> {low:g}" if open_low else f">= {low:g}"
     return f"> {low:g} and <= {high:g}" if open_low else f"{low:g} to {high:g}"
+
+
+def _check_black(curve, source: str, field: str) -> None:
+    """A log_camera curve without a toe keeps black off the log's pole: float32's rounding of
+    linear 0 (a unit in the last place of 1, what a matrix leaves in a channel at 0) moves
+    black's code by at most the verifier's ANALYTIC_RELATIVE (floor RELATIVE_FLOOR)."""
+    import numpy as np
+
+    black, rounded = curve.encode(np.array([0.0, tolerances.FLOAT32_UNIT_ROUNDOFF]))
+    moved = abs(rounded - black) / max(abs(black), tolerances.RELATIVE_FLOOR)
+    if moved > tolerances.ANALYTIC_RELATIVE:
+        raise SpecError(source, f"{field}.lin_side_offset", f"{curve.lin_side_offset:g} puts black so near the log's "
+                        f"pole that float32's rounding of linear 0 moves its code by {moved:.2g} (relative); allowed: "
+                        f"a lin_side_offset large enough that it moves by at most {tolerances.ANALYTIC_RELATIVE:g}, or "
+                        "a lin_side_break where a linear toe takes over")
 
 
 def _check_log_break(params: dict, source: str, field: str) -> None:

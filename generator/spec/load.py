@@ -169,14 +169,15 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     present = {n.lower() for s in spaces for n in s.all_names}
     left_out = tuple(n for d in listed for n in (d.name, *d.aliases) if n.lower() not in present)
     return Spec(
-        name=_config_name(raw.get("name", "ocioforge"), source),
+        name=_string(raw.get("name", "ocioforge"), source, "name"),
         description=_string(raw.get("description", ""), source, "description"),
         ocio_version=version,
         scene_reference=reference,
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles({"reference": reference, **roles}, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
+        roles=_roles({"reference": reference, **{r.lower(): t for r, t in roles.items()}}, source,
+                     every | {namespace.DISPLAY_REFERENCE.lower()}),
         file_rules=_file_rules(raw, source, every | set(taken)),
         inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
         display_view_spaces=view_spaces,
@@ -190,8 +191,9 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
 NAME_FORBIDDEN = '/\\:*?"<>|'
 
 
-def _config_name(value, source: str) -> str:
-    name = _string(value, source, "name")
+def folder_name(name: str, source: str) -> str:
+    """The spec's ``name`` as the default output folder's (``configs/<name>``); SpecError when
+    it cannot name one."""
     if not name.strip() or name.strip(".") == "" or name != name.strip() or \
             any(c in NAME_FORBIDDEN or ord(c) < 32 for c in name):
         raise SpecError(source, "name", f"{name!r} cannot name a folder (a build's default output is "
@@ -237,6 +239,7 @@ def _aliases(value, source: str, field: str) -> tuple[str, ...]:
     for i, alias in enumerate(aliases):
         if not alias.strip():
             raise SpecError(source, f"{field}[{i}]", "blank; allowed: names with a visible character")
+        _no_comma(alias, source, f"{field}[{i}]")
     return aliases
 
 
@@ -272,7 +275,15 @@ def _name(table: dict, source: str, field: str) -> str:
     name = _string(table.get("name", ""), source, f"{field}.name")
     if not name.strip():
         raise SpecError(source, f"{field}.name", "required: a name with a visible character")
+    _no_comma(name, source, f"{field}.name")
     return name
+
+
+def _no_comma(name: str, source: str, field: str) -> None:
+    """OCIO's lists of names (active displays, inactive spaces) are split at commas."""
+    if "," in name:
+        raise SpecError(source, field, f"{name!r} holds a comma, at which OCIO splits its lists of names (active "
+                        "displays, inactive spaces); allowed: a name without commas")
 
 
 def parse_version(value, source: str) -> tuple[int, int]:
@@ -480,6 +491,14 @@ def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
 
 
 def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
+    """Roles by name in lower case, as OCIO keeps them (one given twice in two cases is refused)."""
+    given = {}
+    for role, target in table.items():
+        if role.lower() in given:
+            raise SpecError(source, f"roles.{role}", f"the role {role.lower()!r} is given twice (role names are "
+                            "matched in any case); allowed: each role once")
+        given[role.lower()] = target
+    table = given
     roles = {**DEFAULT_ROLES, **table}
     for role, target in roles.items():
         if not isinstance(target, str) or target.lower() not in names:

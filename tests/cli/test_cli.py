@@ -108,6 +108,18 @@ def test_a_build_failing_while_written_leaves_no_folders_it_made(tmp_path, capsy
     assert sorted(p.name for p in tmp_path.iterdir()) == ["rough.csv", "rough.toml"]
 
 
+@pytest.mark.parametrize("name", ["../escape", "", "..", "show\nbuild", "a/b"])
+def test_a_spec_name_that_cannot_name_the_default_folder_is_refused(tmp_path, capsys, monkeypatch, name):
+    """Without -o a build goes to configs/<name>: a name no folder takes is one line, exit 2."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "show.toml").write_text(f"name = {name!r}\n".replace("'", '"').replace("\n\"", "\\n\""))
+    code, _, err = run(capsys, "build", "show.toml")
+    assert code == 2 and err.count("\n") == 1 and "cannot name a folder" in err, err
+    assert sorted(p.name for p in tmp_path.rglob("*")) == ["show.toml"]
+    (tmp_path / "show.toml").write_text('name = "Show: A"\n')
+    assert run(capsys, "build", "show.toml", "-o", str(tmp_path / "out"))[0] == 0  # -o names the folder
+
+
 def test_list_takes_one_kind(capsys):
     code, _, err = run(capsys, "list", "--displays", "--curves")
     assert code == 2 and err.count("\n") == 1 and "allowed: one of --spaces, --displays, --curves" in err

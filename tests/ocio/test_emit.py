@@ -145,7 +145,7 @@ def test_display_codes_beyond_the_signal_read_back_as_its_ends(built):
         codes = np.array([[2.0, 2.0, 2.0], [1.5, 1.0, 1.2], [-0.5, -2.0, 0.0]]) * max(top, 1.0)
         ends = np.clip(codes, 0.0, top)
         processor = cfg.getProcessor(display.name, spec.scene_reference).getOptimizedCPUProcessor(LOSSLESS)
-        assert np.allclose(apply(processor, codes), apply(processor, ends), rtol=1e-6, atol=1e-7), display.name
+        assert np.allclose(apply(processor, codes), apply(processor, ends), rtol=tolerances.ANALYTIC_RELATIVE, atol=0.0), display.name
 
 
 def test_roles_and_rules_hosts_read(built):

@@ -67,3 +67,26 @@ def test_an_edited_declaration_is_named(config_copy, edit):
     with pytest.raises(SpecError, match="declares what its stored spec does not build") as raised:
         load(config_copy)
     assert words in str(raised.value) and "\n" not in str(raised.value)
+
+
+@pytest.mark.parametrize("version", [(2, 1), (2, 6)])
+def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
+    """Custom spaces and displays with aliases, inactive spaces named by alias, roles in any case,
+    file rules of their own, no display-view spaces: nothing a build writes is refused."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+            '"Linear Rec.2020"]\ninactive = ["lin_rec2020", "Cam Log"]\ndisplay_view_spaces = false\n'
+            '[[custom_space]]\nname = "Cam Log"\naliases = ["cam_log"]\ngamut = "Rec.2020"\n'
+            'transfer = { family = "log_camera", base = 10, log_side_slope = 0.25, log_side_offset = 0.6, '
+            'lin_side_slope = 5.0, lin_side_offset = 0.05 }\n'
+            '[[display]]\nname = "Wall"\naliases = ["wall_display"]\ngamut = "P3-D65"\neotf = "gamma 2.4"\n'
+            'views = ["Raw", "Colorimetric"]\n[[display]]\nname = "sRGB - Display"\n'
+            '[roles]\nCompositing_Log = "cam_log"\n'
+            '[[file_rule]]\nname = "Plates"\npattern = "*plate*"\nextension = "dpx"\ncolour_space = "Cam Log"\n'
+            '[[file_rule]]\nname = "Default"\ncolour_space = "default"\n')
+    folder = tmp_path / "show"
+    build(for_folder(load.parse(text, "show.toml", tmp_path), folder, version), folder)
+    config = folder / "config.ocio"
+    assert declarations.differences(ocio.Config.CreateFromFile(str(config)), resolved.read_beside(config)) == []
