@@ -39,8 +39,8 @@ def _check_baked(spec: Spec, luts: dict) -> None:
     owners += [(d.name, d.eotf_name, "display") for d in spec.displays]
     for name, lut in luts.items():
         if lut.max_relative_error > tolerances.BAKED_CURVE_RELATIVE:
-            owner, table = next(((o, t) for o, c, t in owners if name.startswith(f"{slug(curve_label(spec, o, c))}_to_")),
-                                ("", "custom_space"))
+            files = {f"{slug(curve_label(spec, o, c))}_to_linear.spi1d": (o, t) for o, c, t in owners}
+            owner, table = files.get(name, ("", "custom_space"))
             field = f"{table}[name = {owner!r}].{'eotf' if table == 'display' else 'transfer'}" if owner else "transfer"
             raise SpecError(spec.source, field, f"the curve baked as {LUT_FOLDER}/{name} departs "
                             f"{lut.max_relative_error:.2g} relative from its table at the most entries a 1D LUT "
