@@ -112,6 +112,9 @@ def target(out_dir: str | Path) -> Path:
 def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
     """Build ``spec`` into ``out_dir``: a new or empty folder, or with ``force`` a previous
     build (never a folder holding anything a build does not write), at :func:`target`."""
+    if Path(out_dir).is_symlink() and not Path(out_dir).exists():
+        raise SpecError(str(out_dir), "-o", f"is a link to {str(Path(out_dir).readlink())!r}, which does not exist; "
+                        "allowed: a folder, or a link to one")
     out_dir = target(out_dir)
     if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())):
         if not force and out_dir.is_dir():

@@ -87,6 +87,13 @@ def test_force_through_a_link_replaces_the_build_it_points_to(tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["current", "v001"]
 
 
+def test_a_link_to_nothing_is_named(tmp_path, capsys):
+    (tmp_path / "current").symlink_to("v002")
+    code, _, err = run(capsys, "build", "-o", str(tmp_path / "current"))
+    assert code == 2 and err.count("\n") == 1 and "is a link to 'v002', which does not exist" in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["current"] and not (tmp_path / "current").exists()
+
+
 def test_a_spec_not_in_utf8_is_one_line(tmp_path, capsys):
     spec = tmp_path / "show.toml"
     spec.write_bytes('name = "show"\n'.encode("utf-16"))
