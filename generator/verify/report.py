@@ -66,6 +66,9 @@ def summary(verification: Verification) -> str:
     lines.append(f"  {'engine':<24} {'check':<15} {'metric':<16} {'n':>4} {'pass':>5} {'approx':>6} {'FAIL':>5} "
                  f"{'max':>9} {'p99':>9} {'tolerance':>9}")
     for (engine, kind, metric), g in groups(verification).items():
+        if g[NOT_RUN] == g["checks"]:  # an engine that did not run compared nothing: no figures of 0
+            lines.append(f"  {engine:<24} {kind:<15} {metric:<16} {g['checks']:>4}  not run")
+            continue
         lines.append(f"  {engine:<24} {kind:<15} {metric:<16} {g['checks']:>4} {g[PASS]:>5} {g[APPROX]:>6} "
                      f"{g[FAIL]:>5} {g['max']:>9.3g} {g['p99']:>9.3g} {g['tolerance']:>9.3g}")
     for o in verification.outcomes:

@@ -65,6 +65,10 @@ def test_a_config_newer_than_a_hosts_ocio_is_not_run_there(build_config):
     run = next(e for e in result.engines if e.name == "ocioconvert")
     if run.skipped:  # a host whose OCIO predates 2.3
         assert TOO_NEW in run.skipped and all(o.verdict == NOT_RUN for o in outcomes)
+        from generator.verify.report import summary
+
+        rows = [line for line in summary(result).splitlines() if line.strip().startswith("ocioconvert ")]
+        assert rows and all(line.endswith("not run") for line in rows)  # no figures of 0 for what never ran
 
 
 def _verified_on(tmp_path, program: str, text: str, **options):
