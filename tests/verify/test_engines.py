@@ -172,3 +172,23 @@ def test_a_stopped_run_leaves_no_working_folder(build_config, tmp_path, monkeypa
     with pytest.raises(SystemExit):
         verify(build_config((2, 1)), ("ocio",), density="quick", workdir=tmp_path)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_flag_whose_operator_cannot_be_isolated_names_none(tmp_path):
+    """Run operator by operator, a Desaturate chain (RGB_TO_HSV, half-domain tables, the
+    lattice) departs by itself: the explanation names the flag and no operator (it had named a
+    RangeTransform, 'alone: 650')."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from generator.verify.judge import APPROX
+
+    text = ('[[display]]\nname = "Odd Wide D50 - Display"\nprimaries = [[0.70, 0.29], [0.12, 0.84], [0.145, 0.035]]\n'
+            'white = "D50"\neotf = { family = "gamma", exponent = 2.4 }\n'
+            '[[display]]\nname = "Dim 48 - Display"\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\n'
+            'white = "D65"\neotf = { family = "gamma", exponent = 2.6 }\npeak_luminance = 48\n'
+            'absolute_luminance = true\nviews = ["Desaturate"]\n')
+    folder = tmp_path / "dim"
+    build(for_folder(load.parse(text, "dim.toml", tmp_path), folder), folder)
+    result = verify(folder / "config.ocio", ("ocio",), only="Dim 48 - Display / Desaturate from Odd Wide")
+    explained = [o.note for o in result.outcomes if o.verdict == APPROX]
+    assert explained and all("operator not isolated" in note and " in " not in note.split(";")[0] for note in explained)
