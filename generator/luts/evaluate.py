@@ -37,11 +37,8 @@ def index_rounding(lat: Lattice, linear) -> np.ndarray:
     flat = np.nan_to_num(np.asarray(linear, dtype=np.float64).reshape(-1, 3), nan=0.0)
     if lat.shaper is None:
         return np.zeros_like(flat)
-    lo, hi = lat.domain
     with np.errstate(all="ignore"):
-        shaped = np.clip(lat.pre.forward(flat), lo, hi)
-    position = (shaped - lo) / (hi - lo) * (lat.shaper.size - 1)
-    entry = np.minimum(position.astype(np.int64), lat.shaper.size - 2)
+        position, entry = lattice.table_position(lat, lat.pre.forward(flat))
     step = np.abs(lat.shaper[entry + 1] - lat.shaper[entry])
     return tolerances.FLOAT32_TABLE_INDEX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF * position * step
 

@@ -55,16 +55,9 @@ FIT_RTOL = 1e-3
 FIT_MAXITER = 500
 
 
-def tetrahedral_weights(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
-    """Flat node numbers (m, 4) and weights (m, 4) of tetrahedral interpolation at
-    fractional node indices ``index`` (m, 3), ``[r, g, b]`` order."""
-    nodes, weights = tetrahedra(np.ascontiguousarray(index.T), size)
-    return nodes.T, weights.T
-
-
 def tetrahedra(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`tetrahedral_weights` axis- and corner-major: ``index`` (3, m), node numbers and
-    weights (4, m). The path from the cell's first corner steps along the axes by decreasing
+    """Flat node numbers and weights (4, m) of tetrahedral interpolation at fractional node
+    indices ``index`` (3, m), ``[r, g, b]`` order, axis- and corner-major. The path from the cell's first corner steps along the axes by decreasing
     fraction (equal fractions in axis order); elementwise over the three axes (reductions
     along an axis of three are slow in numpy, see :func:`~generator.colorimetry.matrices.channel_max`)."""
     base = np.clip(np.floor(index).astype(np.int64), 0, size - 2)

@@ -220,6 +220,10 @@ def _check_black(curve, source: str, field: str) -> None:
     black's code by at most the verifier's ANALYTIC_RELATIVE (floor RELATIVE_FLOOR)."""
     import numpy as np
 
+    if curve.lin_side_offset <= 0.0:
+        raise SpecError(source, f"{field}.lin_side_offset", f"{curve.lin_side_offset:g} leaves black without a code "
+                        "(the log of lin_side_offset at linear 0); allowed: > 0, or a lin_side_break where a linear "
+                        "toe takes over")
     black, rounded = curve.encode(np.array([0.0, tolerances.FLOAT32_UNIT_ROUNDOFF]))
     moved = abs(rounded - black) / max(abs(black), tolerances.RELATIVE_FLOOR)
     if moved > tolerances.ANALYTIC_RELATIVE:
@@ -235,10 +239,6 @@ def _check_log_break(params: dict, source: str, field: str) -> None:
     if "lin_side_break" not in params:
         if "linear_slope" in params:
             raise SpecError(source, f"{field}.linear_slope", "needs lin_side_break, where the linear segment starts")
-        if params["lin_side_offset"] <= 0.0:
-            raise SpecError(source, f"{field}.lin_side_offset", f"{params['lin_side_offset']:g} leaves black without a "
-                            "code (the log of lin_side_offset at linear 0); allowed: > 0, or a lin_side_break where a "
-                            "linear toe takes over")
         return
     lowest = -params["lin_side_offset"] / params["lin_side_slope"]
     if params["lin_side_break"] <= lowest:

@@ -176,8 +176,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles({"reference": reference, **{r.lower(): t for r, t in roles.items()}}, source,
-                     every | {namespace.DISPLAY_REFERENCE.lower()}),
+        roles=_roles(roles, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
         file_rules=_file_rules(raw, source, every | set(taken)),
         inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
         display_view_spaces=view_spaces,
@@ -490,19 +489,14 @@ def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
     return result
 
 
-def _roles(table, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
-    """Roles by name in lower case, as OCIO keeps them (one given twice in two cases is refused)."""
-    given = {}
-    for role, target in table.items():
-        if role.lower() in given:
-            raise SpecError(source, f"roles.{role}", f"the role {role.lower()!r} is given twice (role names are "
-                            "matched in any case); allowed: each role once")
-        given[role.lower()] = target
-    table = given
-    roles = {**DEFAULT_ROLES, **table}
+def _roles(table, reference: str, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
+    """Roles by name in lower case, as OCIO keeps them (the namespace check has refused a role
+    given twice in two cases); the reference role follows ``reference`` unless set."""
+    given = {"reference": reference, **{role.lower(): target for role, target in table.items()}}
+    roles = {**DEFAULT_ROLES, **given}
     for role, target in roles.items():
         if not isinstance(target, str) or target.lower() not in names:
-            if role in table:
+            if role in given:
                 raise SpecError(source, f"roles.{role}", f"{target!r} is not among the colour spaces")
             raise SpecError(source, f"roles.{role}", f"the default target {target!r} is not among the colour spaces; "
                             f"allowed: list it in colour_spaces, or set {role} under [roles]")

@@ -12,8 +12,8 @@ RNG_SEED = 7
 
 def _problem(size: int, count: int, rng):
     """Random colours in a size³ unit lattice: node numbers and weights (4, m), codes (3, m)."""
-    nodes, weights = fitting.tetrahedral_weights(rng.random((count, 3)) * (size - 1), size)
-    return np.ascontiguousarray(nodes.T), np.ascontiguousarray(weights.T), rng.random((3, count))
+    nodes, weights = fitting.tetrahedra(np.ascontiguousarray(rng.random((3, count)) * (size - 1)), size)
+    return nodes, weights, rng.random((3, count))
 
 
 def _dense(nodes, weights, size):
@@ -31,7 +31,7 @@ def test_tetrahedra_step_along_the_axes_by_decreasing_fraction_equal_ones_in_axi
     size, rng = 5, np.random.default_rng(RNG_SEED)
     index = rng.integers(0, size - 1, (2000, 3)) + rng.integers(0, 4, (2000, 3)) / 4.0
     index[::7] = size - 1  # the last node: the cell below it
-    nodes, weights = fitting.tetrahedral_weights(index, size)
+    nodes, weights = (a.T for a in fitting.tetrahedra(np.ascontiguousarray(index.T), size))
     base = np.clip(np.floor(index), 0, size - 2).astype(np.int64)
     fraction = index - base
     order = np.argsort(-fraction, axis=1, kind="stable")
@@ -102,8 +102,8 @@ def test_fit_is_the_regularised_least_squares_solution_with_kept_nodes(monkeypat
     matrix, expected = [], []
     for name, (code, codes) in colours.items():
         scale = np.sqrt(colour_weights[name])[:, None]
-        nodes, weights = fitting.tetrahedral_weights(code * (size - 1), size)
-        matrix.append(_dense(nodes.T, weights.T, size) * scale)
+        nodes, weights = fitting.tetrahedra(np.ascontiguousarray(code.T * (size - 1)), size)
+        matrix.append(_dense(nodes, weights, size) * scale)
         expected.append(codes * scale)
     matrix, expected = np.concatenate(matrix), np.concatenate(expected)
     start = cube.reshape(-1, 3)
