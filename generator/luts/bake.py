@@ -218,7 +218,8 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
                 f"Input: {req.source.name} values, decoded and converted to {req.display.name} light exactly; the "
                 f"lattice covers {low:.9g} to {high:.9g} times the display's peak per channel (clamped beyond).",
                 output]
-    output = output[:-1] + " for black to the peak; fitted node values may lie a little outside it."
+    low, high = float(lat.cube.min()), float(lat.cube.max())
+    output = output[:-1] + f" for black to the peak; the fitted node values range from {low:.6g} to {high:.6g}."
     lines = [f"ocioforge: {describe(req)}.",
              f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).", output]
     if lat.shaper is not None and req.shaper == "auto":

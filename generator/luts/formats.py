@@ -28,6 +28,9 @@ from generator.luts.axes import LogAxis
 from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice
 from generator.luts.spi1d import format_spi1d
 
+#: The XML namespace of CLF v3 (S-2014-006), which its version attribute "3.0" goes with.
+CLF_NAMESPACE = "urn:AMPAS:CLF:v3.0"
+
 #: Interpolation CLF's LUT3D asks for (and what the config's FileTransform uses).
 INTERPOLATION = "tetrahedral"
 
@@ -224,7 +227,8 @@ def clf(lattice: Lattice, identifier: str, description: str, include_matrix: boo
 
 def clf_document(ops: list[str], identifier: str, description: str, descriptors: tuple[str, str] = ("", "")) -> bytes:
     """A CLF v3 ProcessList of the process nodes ``ops`` (text from :func:`op`)."""
-    head = (f'<?xml version="1.0" encoding="UTF-8"?>\n<ProcessList compCLFversion="3" id="{_xml(identifier)}">\n'
+    head = (f'<?xml version="1.0" encoding="UTF-8"?>\n'
+            f'<ProcessList xmlns="{CLF_NAMESPACE}" compCLFversion="3.0" id="{_xml(identifier)}">\n'
             f"<Description>{_xml(description)}</Description>\n")
     if descriptors[0]:
         head += f"<InputDescriptor>{_xml(descriptors[0])}</InputDescriptor>\n"

@@ -237,6 +237,23 @@ def test_a_clf_says_what_its_lattice_covers_and_where_its_codes_end(default_spec
     assert "code values (full range, 0 to 2.69872)" in text
 
 
+def test_a_clf_root_is_clf_v3_with_its_namespace(default_spec):
+    from xml.etree import ElementTree
+
+    root = ElementTree.fromstring(bake.bake(_request(default_spec, "clf"))[""])
+    assert root.tag == "{urn:AMPAS:CLF:v3.0}ProcessList" and root.get("compCLFversion") == "3.0"
+    assert root.find("{urn:AMPAS:CLF:v3.0}LUT3D").get("interpolation") == "tetrahedral"
+
+
+def test_a_cube_header_gives_the_range_of_its_fitted_nodes(default_spec):
+    req = _request(default_spec, "resolve_cube", source="ACEScg", size=17)
+    lat = bake.build_lattice(req)
+    low, high = lat.cube.min(), lat.cube.max()
+    assert low < 0 and high > 1  # fitted nodes past the output range, which the header must say
+    text = bake.bake(req)[""].decode()
+    assert f"the fitted node values range from {low:.6g} to {high:.6g}." in text
+
+
 def test_a_clf_into_a_tabulated_eotf_puts_the_peak_on_an_entry(tmp_path):
     """Clip and scale end in a 1D table from lattice coordinates to codes whose entries fall on
     every node's coordinate: a display with a tabulated EOTF shows white and brighter greys at
