@@ -16,7 +16,7 @@ $(STAMP): pyproject.toml
 run: $(STAMP)
 	$(BIN)/ocioforge build -o $(CONFIG) --force
 	$(BIN)/python -m generator.luts.pack luts
-	$(BIN)/ocioforge verify $(CONFIG)/config.ocio --summary --report build/verify
+	$(BIN)/ocioforge verify $(CONFIG)/config.ocio --summary --report build/verify --force
 
 test: $(STAMP)
 	$(BIN)/pytest -n 2 -p no:warnings

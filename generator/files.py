@@ -1,12 +1,14 @@
-"""Writing files and whole folders so that they are never seen half-written."""
+"""Writing files and whole folders so that they are never seen half-written, and never in
+place of anything the user did not ask to replace."""
 
 from __future__ import annotations
 
 import errno
 import os
 import shutil
+import stat
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
@@ -18,6 +20,49 @@ class CannotWrite(Exception):
     def __init__(self, path: str | Path, error: OSError):
         super().__init__(f"{path}: cannot write: {error.strerror or error}")
         self.path, self.error = Path(path), error
+
+
+class Refused(Exception):
+    """An output the user named is something a command may not replace: the path, what is
+    there and what is allowed."""
+
+    def __init__(self, path: str | Path, reason: str):
+        super().__init__(f"{path}: {reason}")
+        self.path = Path(path)
+
+
+class Stopped(BaseException):
+    """A signal asked the process to stop: raised instead of renaming anything into place."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
+#: The signal that asked the process to stop (0: none). Recorded by the signal handler, so
+#: that an exception the handler raised and something swallowed (a weakref callback) can
+#: never lead to files renamed into place.
+_stop_signal = 0
+
+
+def stop(signum: int) -> None:
+    """Record that signal ``signum`` asked the process to stop."""
+    global _stop_signal
+    _stop_signal = signum
+
+
+def stop_signal() -> int:
+    """The signal recorded by :func:`stop` (0: none)."""
+    return _stop_signal
+
+
+def _unless_stopped() -> None:
+    if _stop_signal:
+        raise Stopped(_stop_signal)
+
+
+#: What ``--force`` allows, said in refusals.
+ALLOWED = "allowed: a new file's path, or with --force a regular file or a link to one"
 
 
 @contextmanager
@@ -38,6 +83,57 @@ def _make_folder(folder: Path) -> None:
         raise NotADirectoryError(errno.ENOTDIR, os.strerror(errno.ENOTDIR), error.filename) from error
 
 
+def _mode(path: Path) -> int | None:
+    """``path``'s own file type and mode (a link's, not its target's); None when nothing is there."""
+    with _writing(path):
+        try:
+            return os.lstat(path).st_mode
+        except (FileNotFoundError, NotADirectoryError):  # a folder on the way missing, or a file: written, it fails
+            return None
+
+
+def named(path: Path, what: str = "file") -> Path:
+    """``path``, whose last component names a file or folder (not ``.``, ``..`` or ``/``)."""
+    if path.name in ("", ".", ".."):
+        raise Refused(path, f"names no {what} of its own; allowed: a path ending in the {what}'s name")
+    return path
+
+
+def target(path: str | Path, force: bool) -> Path:
+    """Where writing the file ``path`` goes: ``path`` when nothing is there; with ``force``, a
+    regular file there, or the regular file a link there points to (written, the link kept, as
+    a build through a show's ``current`` link does). :class:`Refused` otherwise: an existing
+    file or link without ``force``, and anything else (a folder, device, pipe, a link to nothing
+    or in a loop) even with it."""
+    path = named(Path(path))
+    mode = _mode(path)
+    if mode is None:
+        return path
+    if stat.S_ISLNK(mode):
+        if not force:
+            raise Refused(path, f"is a link; pass --force to write the file it points to; {ALLOWED}")
+        return _linked_file(path)
+    if stat.S_ISDIR(mode):
+        raise CannotWrite(path, IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR)))
+    if not stat.S_ISREG(mode):
+        raise Refused(path, f"exists and is not a regular file (a device, pipe or socket); {ALLOWED}")
+    if not force:
+        raise Refused(path, "exists; pass --force to replace it")
+    return path
+
+
+def _linked_file(link: Path) -> Path:
+    """The regular file ``link`` points to; :class:`Refused` when it points to nothing, to itself
+    through a loop, or to anything but a regular file."""
+    real = Path(os.path.realpath(link))
+    mode = _mode(real)
+    if mode is None or stat.S_ISLNK(mode):
+        raise Refused(link, f"is a link to nothing (a missing file, or a loop of links); {ALLOWED}")
+    if not stat.S_ISREG(mode):
+        raise Refused(link, f"is a link to something that is not a regular file; {ALLOWED}")
+    return real
+
+
 #: Errors of writing that Python reports without a file name (a full disk on close).
 WRITE_ERRNOS = (errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EIO, errno.EROFS)
 
@@ -47,12 +143,19 @@ def _inside(filename, folder: Path) -> bool:
     return filename is not None and Path(os.fsdecode(filename)).is_relative_to(folder)
 
 
+def _no_check(folder: Path) -> None:
+    """Any folder may be replaced."""
+
+
 @contextmanager
-def staged_folder(folder: Path) -> Iterator[Path]:
+def staged_folder(folder: Path, check: Callable[[Path], None] = _no_check) -> Iterator[Path]:
     """Yield an empty temporary sibling of ``folder``; when the block succeeds, it replaces
     ``folder`` (renamed into place); when it fails, it is removed and ``folder`` is untouched.
+    ``check(path)`` raises when what is at ``path`` may not be replaced: it is run again on
+    what is there right before the rename (another process may have written there meanwhile).
     Failing to create, fill (an OSError on a path inside it) or rename it raises
     :class:`CannotWrite` naming ``folder``."""
+    named(folder, "folder")
     missing = [p for p in (folder.parent, *folder.parent.parents) if not p.exists()]
     done = False
     try:
@@ -67,7 +170,7 @@ def staged_folder(folder: Path) -> Iterator[Path]:
                     raise CannotWrite(folder, error) from error
                 raise
             with _writing(folder):
-                _replace_folder(staging, folder)
+                _replace_folder(staging, folder, check)
             done = True
         finally:
             if staging.exists():
@@ -86,16 +189,34 @@ def _remove_empty(folders: list[Path]) -> None:
             return
 
 
-def _replace_folder(staging: Path, folder: Path) -> None:
-    """Rename the complete ``staging`` to ``folder``, moving a previous ``folder`` aside first."""
+#: What renaming a folder onto an existing path says when that path holds something.
+_OCCUPIED = (errno.ENOTEMPTY, errno.EEXIST, errno.ENOTDIR, errno.EISDIR)
+
+
+def _replace_folder(staging: Path, folder: Path, check: Callable[[Path], None]) -> None:
+    """Rename the complete ``staging`` to ``folder``, after ``check`` allows what is there: in
+    one step when nothing (or an empty folder) is there, as the rename itself refuses anything
+    else; otherwise what is there is moved aside, checked again there (what it held when
+    moved is what is deleted), and deleted only then; moved back when the check refuses it."""
     os.chmod(staging, _plain_mode(0o777))
-    if folder.exists():
-        old = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent))
-        folder.rename(old / "x")
+    _unless_stopped()
+    check(folder)
+    try:
         staging.rename(folder)
-        shutil.rmtree(old)
-    else:
+        return
+    except OSError as error:
+        if error.errno not in _OCCUPIED:
+            raise
+    aside = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent)) / "previous"
+    folder.rename(aside)
+    try:
+        check(aside)
         staging.rename(folder)
+    except BaseException:
+        aside.rename(folder)  # should this fail, what was there stays in aside: never deleted
+        aside.parent.rmdir()
+        raise
+    shutil.rmtree(aside.parent)
 
 
 def _plain_mode(full: int = 0o666) -> int:
@@ -106,14 +227,18 @@ def _plain_mode(full: int = 0o666) -> int:
     return full & ~umask
 
 
-def write_files(files: dict[Path, bytes]) -> None:
-    """Write every file or none: each goes to a private temporary sibling first, gets a
-    plain write's permissions, and only once all are complete are they renamed into place.
-    A file that cannot be written raises :class:`CannotWrite` naming it."""
+def write_files(files: dict[Path, bytes], force: bool = True) -> list[Path]:
+    """Write every file or none: each target is checked (:func:`target`: without ``force`` no
+    file may be there) before any is written, each goes to a private temporary sibling first
+    and gets a plain write's permissions, and only once all are complete, and every target is
+    checked again, are they renamed into place (the default ``force`` serves a caller that made
+    its own check, as :func:`generator.luts.bake.write` does). Returns the paths written (a
+    link's file where a link was). A file that cannot be written raises :class:`CannotWrite`."""
+    targets = {target(path, force): data for path, data in files.items()}
     staged: list[tuple[str, Path]] = []
     mode = _plain_mode()
     try:
-        for path, data in files.items():
+        for path, data in targets.items():
             with _writing(path):
                 _make_folder(path.parent)
                 handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
@@ -121,6 +246,9 @@ def write_files(files: dict[Path, bytes]) -> None:
                 with os.fdopen(handle, "wb") as stream:
                     stream.write(data)
                 os.chmod(temporary, mode)
+        _unless_stopped()
+        for _, path in staged:
+            target(path, force)
         for temporary, path in staged:
             with _writing(path):
                 os.replace(temporary, path)
@@ -128,8 +256,9 @@ def write_files(files: dict[Path, bytes]) -> None:
         for temporary, _ in staged:
             if os.path.exists(temporary):
                 os.unlink(temporary)
+    return list(targets)
 
 
-def write_atomic(path: Path, data: bytes) -> None:
-    """One file through :func:`write_files`."""
-    write_files({Path(path): data})
+def write_atomic(path: Path, data: bytes, force: bool = True) -> Path:
+    """One file through :func:`write_files`; returns the path written."""
+    return write_files({Path(path): data}, force)[0]

@@ -37,11 +37,18 @@ BAKED_CURVE_RELATIVE = 1e-4
 #: smallest is 0.024.
 GAMUT_MIN_XY_AREA = 1e-3
 
-#: How far a spec's log_camera curve evaluated in float32 (as OCIO does) may depart from it,
-#: relative: a tenth of ANALYTIC_RELATIVE, so a verify of the built config can pass (the
-#: library's LogCamera curves depart 1.3e-6 at most; a base of 1e6 or a log-side slope of 1e-6
-#: overflow, a log-side offset of 100 departs 980).
-LOG_CAMERA_FLOAT32_RELATIVE = ANALYTIC_RELATIVE / 10
+#: How far a spec's log_camera or piecewise_gamma curve evaluated as OCIO does (float32, and for
+#: piecewise_gamma OCIO's clamps of gamma and offset) may depart from it, relative, on the codes
+#: and linear values verify probes (transfer.float32_departure): a tenth of ANALYTIC_RELATIVE, so
+#: a verify of the built config can pass. Measured: the library's LogCamera curves depart 1.6e-6
+#: at most, its piecewise powers 8.2e-7; a base of 1e6 or a log-side slope of 1e-6 overflow, a
+#: log-side offset of 100 departs 980, a lin_side_break of 1000 above black 3.8e-3 (OCIO itself
+#: 2.4e-3: the toe's code carries the break's code, 1.3, whose float32 rounding the toe's
+#: slope magnifies); a piecewise_gamma offset of 1e-9 departs 1.6e4 (OCIO evaluates offsets
+#: below 1e-6 as 1e-6, a toe 1e4 times less steep), and gamma 10 with an offset up to 1e-4
+#: overflows (the inverse toe's slope, ((gamma - 1) / offset)^(gamma - 1) ((1 + offset) /
+#: gamma)^gamma, passes float32's 3.4e38).
+CURVE_FLOAT32_RELATIVE = ANALYTIC_RELATIVE / 10
 
 #: Chromaticity difference within which two gamuts are the same (published primaries
 #: are given to three or four decimals): an HLG display's must be BT.2020's.
@@ -229,3 +236,11 @@ LUT_CUBE_GREY_CODES = 0.3
 #: a steep encoding can amplify (measured 0.09, ACEScct to sRGB, brightest over-range colours;
 #: the issue's target).
 LUT_CLF_EVERY_SET_CODES = 1.0
+
+#: Least share of white's luminance each of a display's primaries must give (a display's
+#: primaries are lights it emits). The desaturate view's lattice follows ``1 / h_Y``, the
+#: inverse luminance of a hue's saturated colour, which grows steep near a primary of
+#: little luminance (measured through verify, a display with red (0.73, 0.28), green (0.14,
+#: 0.86) and a blue of share 0.0050: 0.43 ten-bit codes against its tolerance of 1; share
+#: 0.0012: 4.3; Rec.709's blue gives 0.072, DCI-P3's 0.069).
+DISPLAY_MIN_LUMINANCE_SHARE = 0.005

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import os
+import signal
 import stat
+from pathlib import Path
 
 import pytest
 
-from generator.files import CannotWrite, staged_folder, write_atomic, write_files
+from generator import files
+from generator.files import CannotWrite, Refused, Stopped, staged_folder, write_atomic, write_files
 
 
 def test_a_written_file_is_readable_as_a_plain_write_would_leave_it(tmp_path):
@@ -58,4 +61,130 @@ def test_a_full_disk_reported_without_a_file_name_is_a_write_failure(tmp_path):
     with pytest.raises(CannotWrite, match=r"show: cannot write: No space left on device$"):
         with staged_folder(tmp_path / "show"):
             raise OSError(28, os.strerror(28))
+    assert list(tmp_path.iterdir()) == []
+
+
+def _refuse_unless_empty(path):
+    if path.exists() and any(path.iterdir()):
+        raise ValueError(f"{path.name} holds something")
+
+
+def test_what_appears_at_the_folder_during_a_build_is_checked_again_and_kept(tmp_path):
+    """The check runs again right before the rename: footage copied into the folder while it was
+    staged (or another build finishing first) is refused, untouched, the staging folder removed."""
+    folder = tmp_path / "show"
+    with pytest.raises(ValueError, match="show holds something"):
+        with staged_folder(folder, _refuse_unless_empty) as staging:
+            (staging / "config.ocio").write_bytes(b"new")
+            folder.mkdir()
+            (folder / "footage.exr").write_bytes(b"precious")
+    assert (folder / "footage.exr").read_bytes() == b"precious"
+    assert sorted(p.name for p in tmp_path.rglob("*")) == ["footage.exr", "show"]
+
+
+def test_what_is_moved_aside_is_checked_there_and_moved_back_when_refused(tmp_path):
+    """What is deleted is what was checked: a folder that passes the first check but not the one
+    made once it was moved aside (written to in between) is put back, whole."""
+    folder = tmp_path / "show"
+    folder.mkdir()
+    (folder / "config.ocio").write_bytes(b"old")
+    calls = []
+
+    def second_refuses(path):
+        calls.append(path)
+        if len(calls) > 1:
+            raise ValueError("changed")
+
+    with pytest.raises(ValueError, match="changed"):
+        with staged_folder(folder, second_refuses) as staging:
+            (staging / "config.ocio").write_bytes(b"new")
+    assert calls[0] == folder and calls[1] != folder
+    assert (folder / "config.ocio").read_bytes() == b"old"
+    assert sorted(p.name for p in tmp_path.rglob("*")) == ["config.ocio", "show"]
+
+
+def _special(tmp_path, kind):
+    """A FIFO, or (as root) a character device like /dev/null, in ``tmp_path``."""
+    path = tmp_path / f"{kind}.png"
+    if kind == "fifo":
+        os.mkfifo(path)
+    else:
+        try:
+            os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, 3))
+        except PermissionError:
+            pytest.skip("making a device needs root")
+    return path
+
+
+@pytest.mark.parametrize("kind", ("fifo", "device"))
+@pytest.mark.parametrize("force", (False, True))
+def test_only_a_regular_file_is_replaced(tmp_path, kind, force):
+    path = _special(tmp_path, kind)
+    with pytest.raises(Refused, match="is not a regular file"):
+        write_atomic(path, b"x", force)
+    assert not path.is_file() and path.exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == [path.name]
+
+
+def test_a_link_is_replaced_only_with_force_and_then_its_file_is_written(tmp_path):
+    (tmp_path / "real.png").write_bytes(b"old")
+    link = tmp_path / "link.png"
+    link.symlink_to("real.png")
+    with pytest.raises(Refused, match="is a link; pass --force"):
+        write_atomic(link, b"new", force=False)
+    assert write_atomic(link, b"new", force=True) == tmp_path / "real.png"
+    assert link.is_symlink() and (tmp_path / "real.png").read_bytes() == b"new"
+
+
+@pytest.mark.parametrize("force", (False, True))
+def test_a_link_to_nothing_or_a_loop_is_never_replaced(tmp_path, force):
+    (tmp_path / "dangling").symlink_to("nowhere")
+    (tmp_path / "l1").symlink_to("l2")
+    (tmp_path / "l2").symlink_to("l1")
+    for name in ("dangling", "l1"):
+        with pytest.raises(Refused, match="link" if not force else "a link to nothing"):
+            write_atomic(tmp_path / name, b"x", force)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["dangling", "l1", "l2"]
+    assert all((tmp_path / n).is_symlink() for n in ("dangling", "l1", "l2"))
+
+
+def test_every_target_is_checked_before_any_is_written(tmp_path):
+    """A .spi3d and its .spi1d, the .spi1d a folder: the .spi3d is not replaced either."""
+    (tmp_path / "pair.spi3d").write_bytes(b"old")
+    (tmp_path / "pair.spi1d").mkdir()
+    with pytest.raises(CannotWrite, match="pair.spi1d: cannot write: Is a directory"):
+        write_files({tmp_path / "pair.spi3d": b"new", tmp_path / "pair.spi1d": b"shaper"}, force=True)
+    assert (tmp_path / "pair.spi3d").read_bytes() == b"old"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["pair.spi1d", "pair.spi3d"]
+
+
+def test_an_existing_file_is_refused_without_force(tmp_path):
+    (tmp_path / "a.png").write_bytes(b"old")
+    with pytest.raises(Refused, match="exists; pass --force"):
+        write_files({tmp_path / "b.png": b"new", tmp_path / "a.png": b"new"}, force=False)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.png"]
+
+
+@pytest.mark.parametrize("path", (Path("."), Path("x/.."), Path("/")))
+def test_a_path_naming_no_file_is_refused(path):
+    """pathlib had raised ValueError ("has an empty name") on such an output's suffix or name."""
+    with pytest.raises(Refused, match="names no file of its own"):
+        write_atomic(path, b"x")
+
+
+@pytest.fixture
+def stopped():
+    """A stop signal recorded, as the CLI's handler does before raising (the exception may be
+    swallowed); cleared after."""
+    files.stop(signal.SIGTERM)
+    yield
+    files.stop(0)
+
+
+def test_nothing_is_renamed_into_place_once_a_stop_is_recorded(tmp_path, stopped):
+    with pytest.raises(Stopped):
+        write_atomic(tmp_path / "a.clf", b"x")
+    with pytest.raises(Stopped):
+        with staged_folder(tmp_path / "show") as staging:
+            (staging / "config.ocio").write_bytes(b"x")
     assert list(tmp_path.iterdir()) == []

@@ -10,6 +10,8 @@ import threading
 
 import click
 
+from generator.files import CannotWrite, Refused, Stopped, stop, stop_signal
+
 # A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy
 # starts it on import, which no module above makes) is not started: numpy's import took
 # 100 ms rather than 160 on a 2-core machine (the gain varies with the machine and OpenBLAS).
@@ -54,46 +56,148 @@ def cli():
     """ocioforge: OpenColorIO configs and LUTs from a declarative spec, checked by numbers."""
 
 
+def printable(text: str) -> str:
+    """``text`` with every character a terminal would not print as itself (a newline in a path)
+    escaped as Python writes it, so that a message stays one line."""
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
+
+
 def fail(message: str) -> None:
     """One line on stderr and exit status 2 (bad input)."""
-    click.echo(f"error: {message}", err=True)
+    click.echo(f"error: {printable(message)}", err=True)
     sys.exit(2)
 
 
-def _terminated(signum, frame) -> None:
-    """SIGTERM ends the command as an exception would, so staged output is removed."""
+class _Given:
+    """A parameter type refusing an empty value (``-o ""`` had meant the default)."""
+
+    def convert(self, value, param, ctx):
+        if value == "":
+            self.fail("is empty; give a value", param, ctx)
+        return super().convert(value, param, ctx)
+
+
+class GivenPath(_Given, click.Path):
+    """A path: anything but empty."""
+
+
+class Name(_Given, click.types.StringParamType):
+    """A name or keyword: surrounding blanks dropped (as a name is written anywhere else), then
+    anything but empty."""
+
+    def convert(self, value, param, ctx):
+        return super().convert(value.strip() if isinstance(value, str) else value, param, ctx)
+
+
+NAME = Name()
+
+
+class Command(click.Command):
+    """A command refusing an option given twice (the last had silently won)."""
+
+    def parse_args(self, ctx, args):
+        _, _, order = self.make_parser(ctx).parse_args(args=[*args])  # (list: the command module)
+        single = [p for p in order if isinstance(p, click.Option) and not (p.is_flag or p.multiple or p.count)]
+        repeated = next((p for i, p in enumerate(single) if p in single[:i]), None)
+        if repeated is not None:
+            raise click.UsageError(f"{repeated.opts[-1]} is given more than once; allowed: once", ctx)
+        return super().parse_args(ctx, args)
+
+
+def _stop(signum, frame) -> None:
+    """SIGTERM and SIGINT end the command as an exception would, so staged output is removed;
+    the signal is recorded first, so that nothing is renamed into place even when the exception
+    is swallowed (raised inside a weakref callback, it is only printed)."""
+    stop(signum)
+    if signum == signal.SIGINT:
+        raise KeyboardInterrupt
     raise SystemExit(128 + signum)
 
 
+#: The signals that end a command, removing what it staged.
+STOP_SIGNALS = (signal.SIGTERM, signal.SIGINT)
+
+
 def main(argv=None) -> None:
-    """Run a command; on the main thread, SIGTERM ends it as an exception would (staged
-    output removed), the previous handler restored after."""
+    """Run a command; on the main thread, SIGTERM and Ctrl-C end it as an exception would
+    (staged output removed), the previous handlers restored after."""
+    stop(0)  # a stop recorded in an earlier run in this process is not this one's
     if threading.current_thread() is not threading.main_thread():
         _run(argv)
         return
-    previous = signal.signal(signal.SIGTERM, _terminated)
+    previous = {signum: signal.signal(signum, _stop) for signum in STOP_SIGNALS}
     try:
         _run(argv)
     finally:
-        signal.signal(signal.SIGTERM, previous)
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+
+
+def _stopped(signum: int) -> None:
+    """Exit as a shell reports a signal, 128 + its number; Ctrl-C with one line (not bad input)."""
+    if signum == signal.SIGINT:
+        click.echo("error: interrupted", err=True)
+    sys.exit(128 + signum)
 
 
 def _run(argv) -> None:
+    try:
+        _checked_run(argv)
+    except KeyboardInterrupt:  # what was staged is gone
+        _stopped(signal.SIGINT)
+    except Stopped as stopped:
+        _stopped(stopped.signum)
+    except SystemExit:
+        if not stop_signal():
+            raise
+    if stop_signal():  # the exception the signal raised was swallowed; nothing was renamed into place
+        _stopped(stop_signal())
+
+
+def _checked_run(argv) -> None:
+    """Run the command, its bad input (argument, path, environment) one ``error:`` line, exit 2."""
     from generator.colour_science import skip_plotting
-    from generator.files import CannotWrite
     from generator.spec.schema import SpecError
 
-    skip_plotting()
     try:
-        cli.main(args=argv, prog_name="ocioforge", standalone_mode=False)
-    except click.exceptions.Abort:  # Ctrl-C: what was staged is gone; 128 + SIGINT, as a shell reports it
-        click.echo("error: interrupted", err=True)
-        sys.exit(128 + signal.SIGINT)
+        _check_environment()
+        skip_plotting()
+        with cli.make_context("ocioforge", [*(sys.argv[1:] if argv is None else argv)]) as ctx:
+            cli.invoke(ctx)
     except click.exceptions.NoArgsIsHelpError as error:
         click.echo(error.ctx.get_help())
     except click.UsageError as error:
         fail(error.format_message().replace("\n", " "))
-    except (SpecError, CannotWrite) as error:
+    except (SpecError, CannotWrite, Refused) as error:
         fail(str(error))
+    except BrokenPipeError:  # the reader stopped reading (| head): no message, as a shell's tools
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        sys.exit(128 + signal.SIGPIPE)
+    except OSError as error:  # a path that cannot be read or resolved: too long, a loop, gone
+        fail(_os_error(error))
     except click.exceptions.Exit as exit_:
         sys.exit(exit_.exit_code)
+
+
+def _os_error(error: OSError) -> str:
+    """What an OSError says about its path, or about the working directory when it names none
+    and that is gone."""
+    if error.filename is None:
+        try:
+            os.getcwd()
+        except OSError:
+            return f"the working directory: {error.strerror}; allowed: run ocioforge in a folder that exists"
+    name = "" if error.filename is None else f"{os.fsdecode(error.filename)}: "
+    return f"{name}{error.strerror or error}"
+
+
+def _check_environment() -> None:
+    """What the environment must give a command: an open standard output, and a SOURCE_DATE_EPOCH
+    that is unset or an integer (reproducible-builds.org: a malformed one is an error; numpy's
+    f2py, imported by colour-science, failed on it with a traceback)."""
+    if sys.stdout is None:
+        fail("standard output is closed; allowed: a command with its output open (a file, a pipe or /dev/null)")
+    epoch = os.environ.get("SOURCE_DATE_EPOCH")
+    if epoch is not None and not (epoch.isascii() and epoch.isdigit()):
+        fail(f"SOURCE_DATE_EPOCH={epoch!r} is not a whole number of seconds since 1970; allowed: unset, or "
+             "such a number")

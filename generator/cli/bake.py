@@ -6,18 +6,27 @@ import time
 
 import click
 
+from generator.cli import NAME, Command, GivenPath, printable
 
-@click.command(help="Bake the transform from scene colour space SRC (--from) to display DST (--to) into a LUT file.")
-@click.option("--from", "source", required=True, help="Source colour space (name or alias).")
-@click.option("--to", "display", required=True, help="Destination display (name or alias).")
-@click.option("--gamut-map", "method", default=None, help="clip, desaturate, scale, rgc or perceptual (default: scale).")
+
+@click.command(cls=Command,
+               help="Bake the transform from scene colour space SRC (--from) to display DST (--to) into a LUT file.")
+@click.option("--from", "source", type=NAME, required=True, help="Source colour space (name or alias).")
+@click.option("--to", "display", type=NAME, required=True, help="Destination display (name or alias).")
+@click.option("--gamut-map", "method", type=NAME, default=None,
+              help="clip, desaturate, scale, rgc or perceptual (default: scale).")
 @click.option("--size", type=int, default=None, help="Lattice nodes a side (default: 33).")
-@click.option("--format", "fmt", default=None, help="resolve_cube, iridas_cube, spi3d or clf (default: from the suffix).")
-@click.option("--shaper", default="auto", show_default=True, help="auto, none, or a colour space whose curve spaces the nodes.")
-@click.option("--spec", "spec_path", type=click.Path(dir_okay=False), default=None, help="Spec file (default: the embedded spec).")
-@click.option("-o", "--output", default=None, help="File to write (a .spi3d's shaper goes beside it as .spi1d).")
-@click.option("--force", is_flag=True, help="Replace existing files.")
+@click.option("--format", "fmt", type=NAME, default=None,
+              help="resolve_cube, iridas_cube, spi3d or clf (default: from the suffix).")
+@click.option("--shaper", type=NAME, default="auto", show_default=True,
+              help="auto, none, or a colour space whose curve spaces the nodes.")
+@click.option("--spec", "spec_path", type=GivenPath(dir_okay=False), default=None,
+              help="Spec file (default: the embedded spec).")
+@click.option("-o", "--output", type=GivenPath(), default=None,
+              help="File to write (a .spi3d's shaper goes beside it as .spi1d).")
+@click.option("--force", is_flag=True, help="Replace existing files (through a link, the file it points to).")
 def command(source, display, method, size, fmt, shaper, spec_path, output, force):
+    from generator.files import target
     from generator.luts import bake
     from generator.spec import load
     from generator.spec.schema import SpecError
@@ -25,11 +34,13 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     started = time.perf_counter()
     if not output:
         raise SpecError(bake.WHERE, "-o", "give the file to write")
+    target(output, force)  # refused before the bake, not after
     fmt = bake.format_for(fmt, output)
     req = bake.request(load.load(spec_path, keep=(source, shaper)), source, display,
-                       bake.DEFAULT_METHOD if method is None else method, fmt,
+                       bake.DEFAULT_METHOD if method is None else method.lower(), fmt,
                        bake.DEFAULT_SIZE if size is None else size, shaper)
     files = bake.paths(bake.bake(req), output)
-    bake.write(files, force, bake.stale(files, output, fmt))
-    written = ", ".join(str(path) for path in files)
+    stale = bake.stale(files, output, fmt)
+    bake.write({target(path, force): data for path, data in files.items()}, force, stale)  # every one checked first
+    written = ", ".join(printable(path) for path in files)
     click.echo(f"{written}: {fmt}, {bake.describe(req)} ({time.perf_counter() - started:.2f} s)")

@@ -7,11 +7,18 @@ from pathlib import Path
 
 import click
 
+from generator.cli import NAME, Command, GivenPath, printable
 
-@click.command(help="Build an OCIO config from SPEC (default: the embedded spec) into a folder.")
-@click.argument("spec", required=False, type=click.Path(dir_okay=False))
-@click.option("-o", "--output", type=click.Path(file_okay=False), help="Folder to write (default: configs/<name>).")
-@click.option("--ocio-version", help="Config version to write, e.g. 2.1 (overrides the spec).")
+
+def counted(number: int, noun: str) -> str:
+    """``number`` and ``noun``, plural unless one ("1 display", "3 displays")."""
+    return f"{number} {noun}{'' if number == 1 else 's'}"
+
+
+@click.command(cls=Command, help="Build an OCIO config from SPEC (default: the embedded spec) into a folder.")
+@click.argument("spec", required=False, type=GivenPath(dir_okay=False))
+@click.option("-o", "--output", type=GivenPath(file_okay=False), help="Folder to write (default: configs/<name>).")
+@click.option("--ocio-version", type=NAME, help="Config version to write, e.g. 2.1 (overrides the spec).")
 @click.option("--force", is_flag=True, help="Replace the output folder if it holds a previous build.")
 def command(spec, output, ocio_version, force):
     from generator.ocio.write import build, for_folder, target
@@ -23,7 +30,7 @@ def command(spec, output, ocio_version, force):
     out_dir = Path(output) if output else Path("configs") / load.folder_name(parsed.name, parsed.source)
     result = build(for_folder(parsed, target(out_dir), version), out_dir, force=force)
     click.echo(
-        f"{result.path / 'config.ocio'}: OCIO {'.'.join(map(str, version or parsed.ocio_version))}, "
-        f"{result.colour_spaces} colour spaces, {result.displays} displays, {result.views} views, "
-        f"{result.files} files ({time.perf_counter() - started:.2f} s)"
+        f"{printable(result.path / 'config.ocio')}: OCIO {'.'.join(map(str, version or parsed.ocio_version))}, "
+        f"{counted(result.colour_spaces, 'colour space')}, {counted(result.displays, 'display')}, "
+        f"{counted(result.views, 'view')}, {counted(result.files, 'file')} ({time.perf_counter() - started:.2f} s)"
     )

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import click
 
+from generator.cli import NAME, Command
+
 
 def _lines(space, spec) -> list[str]:
     import numpy as np
@@ -46,8 +48,8 @@ def _expression(space, version) -> str:
     return f"analytic ({type(space.curve).__name__})"
 
 
-@click.command(help="Describe a library colour space: gamut, white, curve, matrix, how OCIO expresses it.")
-@click.argument("name")
+@click.command(cls=Command, help="Describe a library colour space: gamut, white, curve, matrix, how OCIO expresses it.")
+@click.argument("name", type=NAME)
 def command(name):
     from generator.spec.load import library_space, load
 

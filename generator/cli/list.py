@@ -6,6 +6,8 @@ import sys
 
 import click
 
+from generator.cli import Command
+
 
 def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
     """The header and rows of the listing of ``what``."""
@@ -22,7 +24,7 @@ def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
             [(s.name, s.family, s.gamut or "-", s.curve, ", ".join(s.aliases)) for s in library.SPACES])
 
 
-@click.command(help="List the library's colour spaces (default), displays or curves; piped, one tab-separated "
+@click.command(cls=Command, help="List the library's colour spaces (default), displays or curves; piped, one tab-separated "
                     "line per row.")
 @click.option("--displays", is_flag=True, help="List displays.")
 @click.option("--curves", is_flag=True, help="List transfer functions.")

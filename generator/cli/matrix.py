@@ -7,6 +7,8 @@ import json
 import click
 import numpy as np
 
+from generator.cli import NAME, Command
+
 FORMATS = ("plain", "json", "nuke", "ocio")
 
 
@@ -56,21 +58,21 @@ def render(matrix, fmt: str, label: str) -> str:
     return "\n".join(" ".join(f"{v: .10f}" for v in row) for row in rows)
 
 
-@click.command(help="Print the 3x3 matrix taking linear SRC RGB to linear DST RGB (column vectors).")
-@click.argument("src")
-@click.argument("dst")
-@click.option("--cat", default=None,
+@click.command(cls=Command, help="Print the 3x3 matrix taking linear SRC RGB to linear DST RGB (column vectors).")
+@click.argument("src", type=NAME)
+@click.argument("dst", type=NAME)
+@click.option("--cat", type=NAME, default=None,
               help="Chromatic adaptation: Bradford, CAT02, CAT16, von Kries, XYZ scaling, none (default: the one "
                    "behind each camera gamut's published matrices, else Bradford, through ACES2065-1 as a config "
                    "with the default spec converts).")
-@click.option("--format", "fmt", type=click.Choice(FORMATS), default="plain", show_default=True)
+@click.option("--format", "fmt", type=click.Choice(FORMATS, case_sensitive=False), default="plain", show_default=True)
 def command(src, dst, cat, fmt):
     from generator.colorimetry.matrices import CATS, rgb_to_rgb
     from generator.spec.load import library_space
     from generator.spec.schema import SpecError
 
     if cat is not None:
-        chosen = next((c for c in CATS if c.lower() == cat.strip().lower()), None)
+        chosen = next((c for c in CATS if c.lower() == cat.lower()), None)
         if chosen is None:
             raise SpecError("ocioforge matrix", "--cat", f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
         cat = chosen

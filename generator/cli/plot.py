@@ -6,32 +6,31 @@ from pathlib import Path
 
 import click
 
+from generator.cli import Command, GivenPath, printable
+
 FORMATS = ("png", "svg", "pdf")
 
 
-@click.command(help="Draw the CIE 1931 xy diagram of CONFIG's colour spaces and displays (from the spec "
+@click.command(cls=Command,
+               help="Draw the CIE 1931 xy diagram of CONFIG's colour spaces and displays (from the spec "
                     "stored beside it): the spectral locus and every gamut triangle. With --mapping, the "
                     "verifier's probe colours and where each gamut-mapping method sends them on the first display.")
-@click.argument("config", type=click.Path(dir_okay=False))
-@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False),
+@click.argument("config", type=GivenPath(dir_okay=False))
+@click.option("-o", "--output", required=True, type=GivenPath(),
               help="Image to write: .png, .svg or .pdf.")
 @click.option("--mapping", is_flag=True, help="Add the probe colours and each gamut mapping's result.")
-def command(config, output, mapping):
-    from generator.cli import fail
-    from generator.spec import resolved
+@click.option("--force", is_flag=True, help="Replace an existing image (through a link, the file it points to).")
+def command(config, output, mapping, force):
+    from generator.files import target, write_atomic
     from generator.spec.schema import SpecError
     from generator.verify.figures import chromaticity, png
-    from generator.files import write_atomic
+    from generator.verify.run import load
 
     fmt = Path(output).suffix.lower().lstrip(".")
     if fmt not in FORMATS:
-        fail(f"{output}:-o: unknown image format {fmt!r}; allowed: {', '.join(FORMATS)}")
-    if not Path(config).is_file():
-        fail(f"{config}:-: no such config file")
-    try:
-        spec = resolved.read_beside(config)
-    except SpecError as error:
-        fail(str(error))
+        raise SpecError(output, "-o", f"unknown image format {fmt!r}; allowed: {', '.join(FORMATS)}")
+    target(output, force)  # refused before the drawing, not after
+    _, spec = load(config)
     display = spec.displays[0] if spec.displays and mapping else None
-    write_atomic(Path(output), png(chromaticity(spec, display, spaces=True), fmt))
-    click.echo(f"wrote {output}")
+    write_atomic(Path(output), png(chromaticity(spec, display, spaces=True), fmt), force)
+    click.echo(f"wrote {printable(output)}")

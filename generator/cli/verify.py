@@ -7,54 +7,63 @@ from pathlib import Path
 
 import click
 
+from generator.cli import NAME, Command, GivenPath, fail, printable
+
 ENGINES = "ocio,oiiotool,ocioconvert,blender"
 
 
-@click.command(help="Verify CONFIG (a built config.ocio): probe images through OCIO engines against the "
-                    "float64 evaluation of the spec stored beside it. Exit status 1 if any check fails.")
-@click.argument("config", type=click.Path(dir_okay=False))
-@click.option("--engines", default=ENGINES, show_default=True,
-              help="Comma-separated: ocio (PyOpenColorIO, default and lossless flags), oiiotool, ocioconvert, blender.")
-@click.option("--report", "report_dir", type=click.Path(file_okay=False),
+@click.command(cls=Command,
+               help="Verify CONFIG (a built config.ocio): probe images through OCIO engines against the "
+                    "float64 evaluation of the spec stored beside it. Exit status 1 if any check fails, or if an "
+                    "engine --engines names cannot run.")
+@click.argument("config", type=GivenPath(dir_okay=False))
+@click.option("--engines", type=NAME, default=ENGINES, show_default=True,
+              help="Comma-separated: ocio (PyOpenColorIO, default and lossless flags), oiiotool, ocioconvert, blender. "
+                   "Of the default list, those not installed are reported as not run; named, they must run.")
+@click.option("--report", "report_dir", type=GivenPath(file_okay=False),
               help="Folder to write report.html (self-contained) and summary.json into.")
+@click.option("--force", is_flag=True, help="Replace the report's files in --report's folder.")
 @click.option("--quick", is_flag=True, help="Small probe sets: every check, far fewer samples.")
 @click.option("--only", default="", help="Run only the checks whose title contains this text (e.g. HLG); an error if none does.")
 @click.option("--summary", "summary_only", is_flag=True, help="Print the summary, not every row.")
-def command(config, engines, report_dir, quick, only, summary_only):
-    from generator.cli import fail
-    from generator.spec.schema import SpecError
+@click.pass_context
+def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
     from generator.verify import report
     from generator.verify.run import verify
 
     if report_dir:
-        _check_report_folder(Path(report_dir), fail)
-    names = tuple(dict.fromkeys(e.strip() for e in engines.split(",") if e.strip()))  # each engine once
+        _check_report_folder(Path(report_dir), force)
+    names = tuple(dict.fromkeys(e.strip().lower() for e in engines.split(",") if e.strip()))  # each engine once
     if not names:
         fail(f"--engines names none; allowed: a comma-separated list of {ENGINES}")
-    try:
-        result = verify(config, names, density="quick" if quick else "full", only=only)
-    except SpecError as error:
-        fail(str(error))
+    named = ctx.get_parameter_source("engines") is not click.core.ParameterSource.DEFAULT
+    result = verify(config, names, density="quick" if quick else "full", only=only, strict=named)
     if not summary_only:
         click.echo(report.table(result))
     click.echo(report.summary(result))
     if report_dir:
         from generator.verify.figures import report_figures
 
-        for path in report.write_report(result, report_dir, report_figures(result)):
-            click.echo(f"wrote {path}")
+        for path in report.write_report(result, report_dir, report_figures(result), force):
+            click.echo(f"wrote {printable(path)}")
     if not result.passed:
         sys.exit(1)
 
 
-def _check_report_folder(folder: Path, fail) -> None:
+def _check_report_folder(folder: Path, force: bool) -> None:
     """The report's folder can be written, checked before the run (it used to fail after it):
-    a folder or a new path whose nearest existing parent is a writable folder."""
+    a folder or a new path whose nearest existing parent is a writable folder, its report files
+    absent or (with ``force``) regular files."""
     import errno
     import os
 
+    from generator.files import CannotWrite, target
+    from generator.verify.report import report_paths
+
     existing = next(p for p in (folder, *folder.parents) if p.exists())
-    if not existing.is_dir():
-        fail(f"{folder}: cannot write: {os.strerror(errno.ENOTDIR)}")
-    if not os.access(existing, os.W_OK | os.X_OK):
-        fail(f"{folder}: cannot write: {os.strerror(errno.EACCES)}")
+    for code, broken in ((errno.ENOTDIR, not existing.is_dir()),
+                         (errno.EACCES, not os.access(existing, os.W_OK | os.X_OK))):
+        if broken:
+            raise CannotWrite(folder, OSError(code, os.strerror(code)))
+    for path in report_paths(folder):
+        target(path, force)

@@ -118,7 +118,11 @@ def whitepoint_from_sd(sd: colour.SpectralDistribution, cmfs: str = CIE_1931_2_D
         raise ValueError(f"{sd.name!r} does not overlap the colour-matching functions' {observer.shape}")
     shape = colour.SpectralShape(start, end, 1)
     inside = (wavelengths >= start) & (wavelengths <= end)
-    aligned = colour.SpectralDistribution(sd[wavelengths[inside]], wavelengths[inside], name=sd.name)
+    values = sd[wavelengths[inside]]
+    # Scaled to a peak of 1 (the chromaticity is the spectrum's shape): a finite spectrum of
+    # huge values would overflow in the sums.
+    values = values / np.max(values) if np.max(values) > 0.0 else values
+    aligned = colour.SpectralDistribution(values, wavelengths[inside], name=sd.name)
     XYZ = colour.sd_to_XYZ(aligned, observer.trim(shape), illuminant=colour.sd_ones(shape), method="Integration")
     if not np.sum(XYZ) > 0.0:
         raise ValueError(f"{sd.name!r} has no positive tristimulus sum; it has no chromaticity")
@@ -252,6 +256,12 @@ def _check_wavelengths(path, wavelengths: np.ndarray, lines: list[int]) -> None:
         )
 
 
+#: Smallest peak a spectrum's column may have: the smallest normal float64. Below it every value
+#: is subnormal, with fewer significant bits the smaller it is (5e-324 has one), so the spectrum's
+#: shape, and with it the chromaticity, is lost before it is integrated.
+MINIMUM_PEAK_POWER = float(np.finfo(np.float64).tiny)
+
+
 def _check_power(path, values: np.ndarray, lines: list[int], name: str) -> None:
     negative = np.flatnonzero(values < 0.0)
     if negative.size:
@@ -259,6 +269,21 @@ def _check_power(path, values: np.ndarray, lines: list[int], name: str) -> None:
         raise ValueError(f"{path}, line {lines[i]}: {name} {values[i]:g} is negative; spectral power must be >= 0")
     if not np.any(values > 0.0):
         raise ValueError(f"{path}: column {name!r} is zero throughout; a spectrum needs some positive power")
+    if values.max() < MINIMUM_PEAK_POWER:
+        raise ValueError(f"{path}: column {name!r} peaks at {values.max():g}, below the smallest normal float "
+                         f"({MINIMUM_PEAK_POWER:g}), where values lose their digits; allowed: the spectrum scaled up "
+                         "(only its shape sets the chromaticity)")
+
+
+def _check_float32(path, values: np.ndarray, lines: list[int], name: str) -> None:
+    """A curve's values become a LUT's float32 entries: each must be finite in float32."""
+    with np.errstate(over="ignore"):
+        beyond = np.flatnonzero(~np.isfinite(values.astype(np.float32)))
+    if beyond.size:
+        i = int(beyond[0])
+        raise ValueError(f"{path}, line {lines[i]}: {name} {values[i]:g} is beyond float32's range "
+                         f"(±{float(np.finfo(np.float32).max):.4g}), in which OCIO's LUTs hold their values; "
+                         "allowed: values within it")
 
 
 def _sd(wavelengths: np.ndarray, values: np.ndarray, name: str) -> colour.SpectralDistribution:
@@ -332,6 +357,7 @@ def read_curve_csv(path) -> tuple[tuple[float, ...], tuple[float, ...]]:
         Naming the file, the line and what is allowed.
     """
     table, lines = _read_table(path, ("code", "linear"))
-    _check_increasing(path, table[:, 0], lines, "code value")
-    _check_increasing(path, table[:, 1], lines, "linear value")
+    for column, name in enumerate(("code value", "linear value")):
+        _check_float32(path, table[:, column], lines, name)
+        _check_increasing(path, table[:, column], lines, name)
     return tuple(table[:, 0].tolist()), tuple(table[:, 1].tolist())

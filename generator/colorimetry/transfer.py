@@ -23,6 +23,48 @@ def _array(values) -> np.ndarray:
     return np.asarray(values, dtype=np.float64)
 
 
+#: Linear magnitudes verify probes a scene space's curve with, either sign and 0, beside its codes
+#: 0 to 1 (generator.verify.probes: noise around black from 1e-12, over-range neutrals to half-float
+#: max): the float32 checks of the analytic families cover them and the codes they encode to.
+PROBED_LINEAR = (1e-12, 65504.0)
+
+#: OCIO's moncurve (ExponentWithLinearTransform) evaluates max(gamma, 1 + EPS) and max(offset, EPS)
+#: (OpenColorIO ops/gamma/GammaOpUtils.cpp, EPS = 1e-6), so a smaller offset is a different curve.
+OCIO_MONCURVE_EPS = 1e-6
+
+
+def probed_values(curve, samples: int) -> tuple[np.ndarray, np.ndarray]:
+    """Codes and linear values where verify probes ``curve``, float32 exactly (engines see float32):
+    codes 0 to 1 and those of the linear values; linear ±PROBED_LINEAR, 0 and those of the codes."""
+    magnitudes = np.geomspace(*PROBED_LINEAR, samples)
+    ramp = np.linspace(0.0, 1.0, samples)
+    with np.errstate(all="ignore"):
+        light = np.concatenate([-magnitudes, [0.0], magnitudes, curve.decode(ramp)])
+        codes = np.concatenate([ramp, curve.encode(light)])
+        codes, light = (v[np.isfinite(v)].astype(np.float32) for v in (codes, light))
+    return tuple(v[np.isfinite(v)].astype(np.float64) for v in (codes, light))
+
+
+def _relative(approximate: np.ndarray, exact: np.ndarray, floor: float) -> np.ndarray:
+    """|approximate - exact| / max(|exact|, floor) where ``exact`` is finite (+Inf where the
+    approximation is not)."""
+    shown = np.isfinite(exact)
+    error = np.abs(approximate[shown].astype(np.float64) - exact[shown]) / np.maximum(np.abs(exact[shown]), floor)
+    return np.nan_to_num(error, nan=np.inf, posinf=np.inf)
+
+
+def float32_departure(curve, floor: float, samples: int = 4097) -> float:
+    """Largest relative departure (``floor`` below which it is absolute) of ``curve`` evaluated as
+    OCIO does (its ``float32(codes, light)``: decoded codes and encoded light, in float32) from its
+    float64 formula, over the values verify probes (:func:`probed_values`); +Inf where it overflows."""
+    codes, light = probed_values(curve, samples)
+    with np.errstate(all="ignore"):
+        decoded, encoded = curve.float32(codes.astype(np.float32), light.astype(np.float32))
+        worst = np.concatenate([_relative(decoded, curve.decode(codes), floor),
+                                _relative(encoded, curve.encode(light), floor)])
+    return float(worst.max(initial=0.0))
+
+
 def _root(x: np.ndarray, exponent: float) -> np.ndarray:
     """``x ** exponent`` (``x >= 0``, ``exponent > 0``), the power evaluated only where ``x`` is
     neither 0 nor 1, which it leaves unchanged exactly: a lattice of clipped colours is mostly
@@ -105,6 +147,23 @@ class PiecewisePower:
         power = (1.0 + self.offset) * _root(np.maximum(v, self.break_linear), 1.0 / self.gamma) - self.offset
         return np.where(v > self.break_linear, power, v / self.slope)
 
+    def float32(self, codes: np.ndarray, light: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``codes`` decoded and ``light`` encoded as OCIO's CPU renderer evaluates the curve
+        (ops/gamma/GammaOpCPU.cpp): OCIO_MONCURVE_EPS's clamps, then float32 parameters and
+        arithmetic; with ``mirror``, on magnitudes, the sign put back."""
+        f = np.float32
+        g, o = max(self.gamma, 1.0 + OCIO_MONCURVE_EPS), max(self.offset, OCIO_MONCURVE_EPS)
+        knee = o * g / ((g - 1.0) * (1.0 + o))
+        fwd = [f(v) for v in (1.0 / (1.0 + o), o / (1.0 + o), g, o / (g - 1.0), (g - 1.0) / o * knee**g)]
+        rev = [f(v) for v in (1.0 + o, o, 1.0 / g, knee**g, ((g - 1.0) / o) ** (g - 1.0) * ((1.0 + o) / g) ** g)]
+        sign = (np.sign(codes), np.sign(light)) if self.mirror else (f(1.0), f(1.0))
+        x, y = (np.abs(v) if self.mirror else v for v in (codes, light))
+        scale, offset, gamma, knot, slope = fwd
+        decoded = np.where(x <= knot, x * slope, np.power(x * scale + offset, gamma))
+        scale, offset, gamma, knot, slope = rev
+        encoded = np.where(y <= knot, y * slope, np.power(y, gamma) * scale - offset)
+        return sign[0] * decoded, sign[1] * encoded
+
 
 @dataclass(frozen=True)
 class LogCamera:
@@ -169,30 +228,20 @@ class LogCamera:
         toe = (y - self.break_code) / self.toe_slope + self.lin_side_break
         return np.where(y > self.break_code, lin, toe)
 
-    def float32_departure(self, floor: float, samples: int = 4097) -> float:
-        """Largest relative departure (``floor`` below which it is absolute) of the curve's formula
-        evaluated in float32, as OCIO evaluates it, from float64: decoding codes 0 to 1 and
-        encoding their light back. Extreme parameters (a huge base, a tiny slope, offsets far
-        from the codes) lose the curve to float32 cancellation; +Inf where it overflows."""
+    def float32(self, codes: np.ndarray, light: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``codes`` decoded and ``light`` encoded with the curve's formula in float32, as OCIO
+        evaluates it. Extreme parameters (a huge base, a tiny slope, offsets far from the codes, a
+        break far above black) lose the curve to float32 cancellation or overflow."""
         f = np.float32
-        codes = np.linspace(0.0, 1.0, samples)
         b, s, o, ls, lo = (f(v) for v in (self.base, self.log_side_slope, self.log_side_offset, self.lin_side_slope,
                                            self.lin_side_offset))
-        with np.errstate(all="ignore"):
-            exact = self.decode(codes)
-            y = codes.astype(f)
-            lin = (b ** ((y - o) / s) - lo) / ls
-            x = exact.astype(f)
-            code = s * np.log(ls * x + lo) / f(math.log(self.base)) + o
-            if self.lin_side_break is not None:
-                bc, ts, lb = f(self.break_code), f(self.toe_slope), f(self.lin_side_break)
-                lin = np.where(y > bc, lin, (y - bc) / ts + lb)
-                code = np.where(x > lb, code, ts * (x - lb) + bc)
-            shown = np.isfinite(exact)
-            decoded = np.abs(lin.astype(np.float64) - exact) / np.maximum(np.abs(exact), floor)
-            encoded = np.abs(code.astype(np.float64) - codes) / np.maximum(np.abs(codes), floor)
-            worst = np.maximum(decoded, encoded)[shown]
-        return float(np.nan_to_num(worst, nan=np.inf, posinf=np.inf).max(initial=0.0))
+        lin = (b ** ((codes - o) / s) - lo) / ls
+        code = s * np.log(ls * light + lo) / f(math.log(self.base)) + o
+        if self.lin_side_break is not None:
+            bc, ts, lb = f(self.break_code), f(self.toe_slope), f(self.lin_side_break)
+            lin = np.where(codes > bc, lin, (codes - bc) / ts + lb)
+            code = np.where(light > lb, code, ts * (light - lb) + bc)
+        return lin, code
 
 
 @dataclass(frozen=True)

@@ -92,13 +92,18 @@ def find_source(spec: Spec, name: str, field: str, role: str = "source") -> Colo
     except KeyError:
         if any(name.lower() in (n.lower() for n in (d.name, *d.aliases)) for d in spec.displays):
             raise SpecError(WHERE, field, f"{name!r} is a display; {field} takes a scene colour space") from None
+        from generator.colorimetry import library
+
+        if name.lower() in (n.lower() for d in library.SPACES for n in (d.name, *d.aliases)):
+            raise SpecError(WHERE, field, f"{name!r} is in the library but not in this spec ({spec.source}); allowed: "
+                            f"add it to the spec's colour_spaces{suggest(name, spec.space_names)}") from None
         raise SpecError(WHERE, field, f"unknown colour space {name!r}{suggest(name, spec.space_names)}; "
                         "'ocioforge list' lists the library's") from None
     if space.is_data:
         raise SpecError(WHERE, field, f"{space.name!r} is data (never colour managed); it cannot be a {role}")
     if space.special or space.gamut is None:
-        raise SpecError(WHERE, field, f"{space.name!r} is not a per-channel encoding of RGB primaries; "
-                        "baking it is not supported")
+        raise SpecError(WHERE, field, f"{space.name!r} is not a per-channel curve of RGB primaries (it decodes to "
+                        "the scene reference by its own transform); allowed: a space with a curve and primaries")
     return space
 
 
@@ -279,6 +284,6 @@ def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | No
             raise SpecError(WHERE, "-o", f"folder {str(path.parent)!r} {what}")
         if path.exists() and not force:
             raise SpecError(WHERE, "-o", f"{str(path)!r} exists; pass --force to replace it")
-    write_files(files)
+    write_files(files, force)
     for path in remove or ():
         path.unlink(missing_ok=True)

@@ -6,6 +6,7 @@ so a failed build never leaves a half-written folder behind.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -106,22 +107,30 @@ def target(out_dir: str | Path) -> Path:
     """The folder a build into ``out_dir`` writes, absolute: a link to a folder (a show's
     ``current``) stays a link, and the folder it points to is replaced (and names the config)."""
     out_dir = Path(out_dir).absolute()
-    return out_dir.resolve() if out_dir.is_symlink() and out_dir.resolve().is_dir() else out_dir
+    real = Path(os.path.realpath(out_dir))  # a loop of links stays a loop (Path.resolve raises)
+    return real if out_dir.is_symlink() and real.is_dir() else out_dir
+
+
+def _check_replaceable(out_dir: Path, force: bool, contents: Path | None = None) -> None:
+    """SpecError naming ``out_dir`` unless what it holds (at ``contents`` when moved aside to be
+    replaced) may be replaced: nothing or an empty folder, or with ``force`` a previous build."""
+    contents = out_dir if contents is None else contents
+    if not contents.exists() or (contents.is_dir() and not any(contents.iterdir())):
+        return
+    problem = _replace_problem(contents) or ("" if force else "holds a previous build; pass --force to replace it")
+    if problem:
+        raise SpecError(str(out_dir), "-o", problem)
 
 
 def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
     """Build ``spec`` into ``out_dir``: a new or empty folder, or with ``force`` a previous
-    build (never a folder holding anything a build does not write), at :func:`target`."""
+    build (never a folder holding anything a build does not write), at :func:`target`; checked
+    before the build and again as the folder is replaced (another process may write there)."""
     if Path(out_dir).is_symlink() and not Path(out_dir).exists():
-        raise SpecError(str(out_dir), "-o", f"is a link to {str(Path(out_dir).readlink())!r}, which does not exist; "
-                        "allowed: a folder, or a link to one")
+        raise SpecError(str(out_dir), "-o", f"is a link to {str(Path(out_dir).readlink())!r}, which does not exist "
+                        "(or is a loop of links); allowed: a folder, or a link to one")
     out_dir = target(out_dir)
-    if out_dir.exists() and (not out_dir.is_dir() or any(out_dir.iterdir())):
-        if not force and out_dir.is_dir():
-            raise SpecError(str(out_dir), "-o", "exists and is not empty; pass --force to replace a previous build")
-        problem = _replace_problem(out_dir)
-        if problem:
-            raise SpecError(str(out_dir), "-o", problem)
-    with staged_folder(out_dir) as staging:
+    _check_replaceable(out_dir, force)
+    with staged_folder(out_dir, lambda contents: _check_replaceable(out_dir, force, contents)) as staging:
         result = write_files(spec, staging)
     return replace(result, path=out_dir)

@@ -58,10 +58,16 @@ def xy_pair(value, source: str, field: str, white: bool = False) -> tuple[float,
     """A chromaticity [x, y]: a white needs y > 0; a primary may be imaginary (y < 0) but not y = 0."""
     if not isinstance(value, list) or len(value) != 2:
         raise SpecError(source, field, f"expected a chromaticity [x, y], got {value!r}")
-    x, y = (number(v, source, field) for v in value)
+    return plausible_xy(tuple(number(v, source, field) for v in value), source, field, white)
+
+
+def plausible_xy(xy, source: str, field: str, white: bool = False, origin: str = "") -> tuple[float, float]:
+    """``xy`` (typed, or derived from a spectrum as ``origin`` says) if it is a chromaticity a gamut can
+    take; a white needs y > 0, a primary may be imaginary (y < 0) but not y = 0."""
+    x, y = (float(v) for v in xy)
     if (white and y <= 0.0) or y == 0.0 or not (-1.0 < x < 2.0 and -1.0 < y < 2.0):
         need = "0 < y < 2" if white else "-1 < y < 2, y != 0"
-        raise SpecError(source, field, f"chromaticity {value!r} is not plausible: need -1 < x < 2 and {need}")
+        raise SpecError(source, field, f"{origin}chromaticity {[x, y]!r} is not plausible: need -1 < x < 2 and {need}")
     return (x, y)
 
 
@@ -127,8 +133,9 @@ def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float
             raise SpecError(source, field, f"CCT {cct:g} K is outside 1667 to 25000 K")
         return tuple(float(v) for v in spectral.whitepoint_from_cct(cct))
     if isinstance(value, str) and value.lower().endswith(".csv"):
-        sd = _csv(spectral.read_spd_csv, resolve_path(value, base, source, field), source, field)
-        return tuple(float(v) for v in spectral.whitepoint_from_sd(sd))
+        path = resolve_path(value, base, source, field)
+        xy = _csv(lambda p: spectral.whitepoint_from_sd(spectral.read_spd_csv(p)), path, source, field)
+        return plausible_xy(xy, source, field, white=True, origin=f"{path.name}: the spectrum's ")
     if isinstance(value, str):
         import colour
 
@@ -145,7 +152,7 @@ def spectral_primaries(value, base: Path, source: str, field: str) -> tuple:
 
     path = resolve_path(value, base, source, field)
     xy = _csv(spectral.read_primaries_spectra_csv, path, source, field)
-    return tuple((float(x), float(y)) for x, y in xy)
+    return tuple(plausible_xy(p, source, field, origin=f"{path.name}: column {c}'s ") for c, p in zip("rgb", xy))
 
 
 def transfer_function(value, base: Path, source: str, field: str):
@@ -160,9 +167,12 @@ def transfer_function(value, base: Path, source: str, field: str):
                         "allowed: a library curve (ocioforge list --curves) or a table with 'family'")
     if not isinstance(value, dict):
         raise SpecError(source, field, f"expected a curve name or a table, got {value!r}")
-    family = value.get("family")
-    if family not in TRANSFER_FAMILIES:
-        raise SpecError(source, f"{field}.family", f"unknown family {family!r}; allowed: {', '.join(TRANSFER_FAMILIES)}")
+    if "family" not in value:
+        raise SpecError(source, f"{field}.family", f"missing; allowed: {', '.join(TRANSFER_FAMILIES)}")
+    family = value["family"]
+    if not isinstance(family, str) or family not in TRANSFER_FAMILIES:
+        what = f"unknown family {family!r}" if isinstance(family, str) else f"expected a string, got {family!r}"
+        raise SpecError(source, f"{field}.family", f"{what}; allowed: {', '.join(TRANSFER_FAMILIES)}")
     allowed = set(TRANSFER_FAMILIES[family]) | {"family"}
     for key in value:
         if key not in allowed:
@@ -184,24 +194,39 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
         code, linear = _csv(spectral.read_curve_csv, path, source, f"{field}.file")
         return label, transfer.Tabulated(path.name, tuple(map(float, code)), tuple(map(float, linear)))
     params = {k: number(v, source, f"{field}.{k}") for k, v in value.items() if k != "family"}
-    for key, limits in PARAMETER_RANGES[family].items():
-        if key in params and not _within(params[key], *limits):
-            raise SpecError(source, f"{field}.{key}", f"{params[key]:g} is out of range; allowed: {_describe(*limits)}")
+    check_ranges(family, params, source, field)
     if family == "gamma":
         return label, transfer.Power(params["exponent"])
     if family == "piecewise_gamma":
-        return label, transfer.PiecewisePower(params["gamma"], params["offset"])
+        curve = transfer.PiecewisePower(params["gamma"], params["offset"])
+        _check_float32(curve, family, source, field, "an offset of at least 1e-6, below which OCIO evaluates "
+                       "1e-6, and with a steep gamma one whose toe's slopes stay within float32")
+        return label, curve
     _check_log_break(params, source, field)
     curve = transfer.LogCamera(**params)
     if curve.lin_side_break is None:
         _check_black(curve, source, field)
-    departure = curve.float32_departure(tolerances.RELATIVE_FLOOR)
-    if departure > tolerances.LOG_CAMERA_FLOAT32_RELATIVE:
-        raise SpecError(source, field, f"OCIO evaluates a log_camera curve in float32, which departs {departure:.2g} "
-                        f"relative from this one over codes 0 to 1; allowed: parameters it follows within "
-                        f"{tolerances.LOG_CAMERA_FLOAT32_RELATIVE:g} (a base, slopes and offsets of a real camera "
-                        "curve: the library's are within 1.3e-6)")
+    _check_float32(curve, family, source, field, "a base, slopes, offsets and break of a real camera curve: the "
+                   "library's are within 1.6e-6")
     return label, curve
+
+
+def _check_float32(curve, family: str, source: str, field: str, hint: str) -> None:
+    """OCIO evaluates the curve in float32 (transfer.float32_departure): it must follow the formula
+    within CURVE_FLOAT32_RELATIVE wherever verify probes it."""
+    departure = transfer.float32_departure(curve, tolerances.RELATIVE_FLOOR)
+    if departure > tolerances.CURVE_FLOAT32_RELATIVE:
+        low, high = transfer.PROBED_LINEAR
+        raise SpecError(source, field, f"OCIO evaluates a {family} curve in float32, which departs {departure:.2g} "
+                        f"relative from this one on codes 0 to 1 and linear values ±{low:g} to {high:g}; allowed: "
+                        f"parameters it follows within {tolerances.CURVE_FLOAT32_RELATIVE:g} ({hint})")
+
+
+def check_ranges(family: str, params: dict, source: str, field: str) -> None:
+    """The analytic ``family``'s ``params`` (those given) within :data:`PARAMETER_RANGES`."""
+    for key, limits in PARAMETER_RANGES[family].items():
+        if params.get(key) is not None and not _within(params[key], *limits):
+            raise SpecError(source, f"{field}.{key}", f"{params[key]:g} is out of range; allowed: {_describe(*limits)}")
 
 
 def _within(value: float, low: float, high: float, open_low: bool) -> bool:

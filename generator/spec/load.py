@@ -137,11 +137,14 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     roles = raw.get("roles", {})
     if not isinstance(roles, dict):
         raise SpecError(source, "roles", "expected a table of role = colour space")
+    for role in roles:
+        _label(role, source, f"roles.{_toml_key(role)}")
     listed = _listed(raw, source)
     customs = tuple(_custom_space(t, source, f"custom_space[{i}]", base)
                     for i, t in enumerate(_tables(raw, "custom_space", source)))
-    all_names = [n for s in (*listed, *customs) for n in (s.name, *s.aliases)]
-    _unique(all_names, source, "colour_spaces")
+    owners = list(_owners(listed, customs, "colour_spaces" in raw and raw["colour_spaces"] != ["*"]))
+    _distinct(owners, source)
+    all_names = [name for name, _, _ in owners]
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
     if not displays:
         raise SpecError(source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's")
@@ -170,7 +173,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     left_out = tuple(n for d in listed for n in (d.name, *d.aliases) if n.lower() not in present)
     return Spec(
         name=_string(raw.get("name", "ocioforge"), source, "name"),
-        description=_string(raw.get("description", ""), source, "description"),
+        description=_string(raw.get("description", ""), source, "description", text=True),
         ocio_version=version,
         scene_reference=reference,
         chromatic_adaptation=cat,
@@ -209,15 +212,32 @@ def recorded(source: str) -> str:
 
 def _check_keys(table: dict, allowed, source: str, prefix: str) -> None:
     if not isinstance(table, dict):
-        raise SpecError(source, prefix or "-", "expected a table")
+        raise SpecError(source, prefix.rstrip(".") or "-", f"expected a table of {', '.join(allowed)} "
+                        f"(key = value lines under its [[header]]), got {table!r}")
     for key in table:
         if key not in allowed:
             raise SpecError(source, f"{prefix}{key}", f"unknown key; allowed: {', '.join(allowed)}")
 
 
-def _string(value, source: str, field: str) -> str:
+#: Control characters a description may hold (a multi-line TOML string's line breaks).
+TEXT_CONTROLS = "\t\n\r"
+
+
+def _is_control(c: str) -> bool:
+    """Unicode's control characters (category Cc): C0, DEL and C1."""
+    return ord(c) < 0x20 or 0x7F <= ord(c) < 0xA0
+
+
+def _string(value, source: str, field: str, text: bool = False) -> str:
+    """A string without control characters (C0, DEL, C1: OCIO's C strings end at NUL, which merges
+    two names into one); a description (``text``) may hold tabs and line breaks."""
     if not isinstance(value, str):
         raise SpecError(source, field, f"expected a string, got {value!r}")
+    control = next((c for c in value if _is_control(c) and not (text and c in TEXT_CONTROLS)), None)
+    if control is not None:
+        allowed = "tabs and line breaks but no other control characters" if text else "no control characters"
+        raise SpecError(source, field, f"{value!r} holds the control character {control!r} (OCIO ends a string at "
+                        f"NUL and writes the others as they are); allowed: {allowed}")
     return value
 
 
@@ -230,14 +250,13 @@ def _bool(value, source: str, field: str) -> bool:
 def _strings(value, source: str, field: str) -> tuple[str, ...]:
     if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
         raise SpecError(source, field, f"expected a list of strings, got {value!r}")
-    return tuple(value)
+    return tuple(_string(v, source, f"{field}[{i}]") for i, v in enumerate(value))
 
 
 def _aliases(value, source: str, field: str) -> tuple[str, ...]:
     aliases = _strings(value, source, field)
     for i, alias in enumerate(aliases):
-        if not alias.strip():
-            raise SpecError(source, f"{field}[{i}]", "blank; allowed: names with a visible character")
+        _label(alias, source, f"{field}[{i}]")
         _no_comma(alias, source, f"{field}[{i}]")
     return aliases
 
@@ -253,11 +272,28 @@ def _repeated(names) -> tuple[int, int] | None:
     return None
 
 
-def _unique(names, source: str, field: str) -> None:
-    names = list(names)
-    twice = _repeated(names)
-    if twice:
-        raise SpecError(source, field, f"{names[twice[0]]!r} is defined twice")
+def _owners(listed, customs, indexed: bool):
+    """(name, field, owner) for every name and alias of the spec's colour spaces, in order: a library
+    space's field is its entry in colour_spaces (``indexed``: the list names them one by one), a custom
+    space's the name or alias itself."""
+    for i, space in enumerate(listed):
+        field = f"colour_spaces[{i}]" if indexed else "colour_spaces"
+        for name in (space.name, *space.aliases):
+            yield name, field, f"the library colour space {space.name!r} of {field}"
+    for i, space in enumerate(customs):
+        for key, name in (("name", space.name), *((f"aliases[{j}]", a) for j, a in enumerate(space.aliases))):
+            yield name, f"custom_space[{i}].{key}", f"custom_space[{i}] {space.name!r}"
+
+
+def _distinct(owners, source: str) -> None:
+    """Each name or alias names one colour space (OCIO compares names without case): a repeat is
+    the error of the field that brings it second."""
+    first: dict[str, str] = {}
+    for name, field, owner in owners:
+        if name.lower() in first:
+            raise SpecError(source, field, f"{name!r} already names {first[name.lower()]} (OCIO compares names "
+                            "without case); allowed: a name no other colour space has")
+        first[name.lower()] = owner
 
 
 def _tables(raw: dict, key: str, source: str) -> list:
@@ -271,11 +307,40 @@ def _tables(raw: dict, key: str, source: str) -> list:
 
 
 def _name(table: dict, source: str, field: str) -> str:
-    name = _string(table.get("name", ""), source, f"{field}.name")
-    if not name.strip():
-        raise SpecError(source, f"{field}.name", "required: a name with a visible character")
+    name = _label(table.get("name", ""), source, f"{field}.name")
     _no_comma(name, source, f"{field}.name")
     return name
+
+
+#: Characters OCIO reads as the start of a context variable in the names of colour spaces and
+#: roles (and refuses there with an exception).
+CONTEXT_TOKENS = "$%"
+
+
+def _label(value, source: str, field: str, context: bool = True) -> str:
+    """A name the config carries (a colour space's, an alias, a display's, a role's; a file rule's
+    with ``context`` False): a string of a visible character, without control characters, without
+    spaces at either end (OCIO trims them from names it reads, so the config's name would not be the
+    spec's) and, where OCIO resolves context variables, without $ or %."""
+    name = _string(value, source, field)
+    if not name.strip():
+        raise SpecError(source, field, f"{name!r} is blank; required: a name with a visible character")
+    if name != name.strip():
+        raise SpecError(source, field, f"{name!r} has a space at either end, which OCIO trims from names; "
+                        "allowed: the name without them")
+    token = next((c for c in name if context and c in CONTEXT_TOKENS), None)
+    if token is not None:
+        raise SpecError(source, field, f"{name!r} holds {token!r}, which OCIO reads as a context variable in the "
+                        f"names of colour spaces and roles; allowed: a name without {' or '.join(CONTEXT_TOKENS)}")
+    return name
+
+
+def _toml_key(key: str) -> str:
+    """``key`` as TOML writes it in a dotted field name: bare, or quoted when it holds other
+    characters than letters, digits, '-' and '_' (an empty key among them)."""
+    import json
+
+    return key if re.fullmatch(r"[A-Za-z0-9_-]+", key) else json.dumps(key, ensure_ascii=False)
 
 
 def _no_comma(name: str, source: str, field: str) -> None:
@@ -288,8 +353,11 @@ def _no_comma(name: str, source: str, field: str) -> None:
 def parse_version(value, source: str) -> tuple[int, int]:
     """The spec's config version; the oldest supported one is accepted without asking the
     installed PyOpenColorIO (every supported release writes it), which spares its import."""
-    written = re.fullmatch(r"([0-9])\.(0|[1-9][0-9]?)", str(value))
-    if written is None or isinstance(value, bool):
+    if not isinstance(value, str):
+        raise SpecError(source, "ocio_version", f"expected a quoted version like \"2.1\", got {value!r} (a TOML "
+                        f"number loses its digits: 2.10 reads as 2.1); allowed: {_allowed()}")
+    written = re.fullmatch(r"([0-9])\.(0|[1-9][0-9]?)", value)
+    if written is None:
         raise SpecError(source, "ocio_version", f"expected a version like \"2.1\", got {value!r}; "
                         f"allowed: {_allowed()}")
     major, minor = int(written[1]), int(written[2])
@@ -395,7 +463,7 @@ def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpa
         name=name, gamut=_gamut(table, source, field, base, name), curve=curve, curve_name=curve_name,
         aliases=_aliases(table.get("aliases", []), source, f"{field}.aliases"),
         family=_string(table.get("family", "Custom"), source, f"{field}.family"), encoding=encoding,
-        description=_string(table.get("description", ""), source, f"{field}.description"),
+        description=_string(table.get("description", ""), source, f"{field}.description", text=True),
     )
 
 
@@ -444,6 +512,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
         raise SpecError(source, f"{field}.eotf", "required for a custom display: a library curve (sRGB, gamma 2.4, "
                         "ST 2084, HLG, ...) or a transfer family")
     eotf_name, eotf = fields.transfer_function(table["eotf"], base, source, f"{field}.eotf")
+    _check_display_eotf(eotf, source, f"{field}.eotf")
     hdr = eotf_name in ("ST 2084", "HLG")
     absolute = _bool(table.get("absolute_luminance", False), source, f"{field}.absolute_luminance")
     if absolute and hdr:
@@ -459,13 +528,39 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                         f"{ABSOLUTE_PEAK_RANGE[0]:g} to {ABSOLUTE_PEAK_RANGE[1]:g} (code 1 emits the peak)")
     views = views or default_views("hdr-video" if hdr else "sdr-video")
     gamut = _gamut(table, source, field, base, name)
+    _check_display_primaries(gamut, source, f"{field}.{next((k for k in ('primaries', 'primaries_spectra') if k in table), 'gamut')}")
     if eotf_name == "HLG":
         given = next((k for k in ("primaries", "primaries_spectra") if k in table), "gamut")
         _check_bt2020(gamut, source, f"{field}.{given}", f"{field}.{'white' if 'white' in table else given}")
     return Display(name, gamut, eotf, eotf_name, views,
                    _aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
-                   "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description"),
+                   "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description", text=True),
                    absolute)
+
+
+def _check_display_eotf(eotf, source: str, field: str) -> None:
+    """A display's power-law EOTF darkens code values (exponent at least 1, as a piecewise
+    gamma's already is): below 1, its encoding raises light above the peak to ever larger
+    codes, past what a view's tables hold."""
+    from generator.colorimetry.transfer import Power
+
+    if isinstance(eotf, Power) and eotf.exponent < 1.0:
+        raise SpecError(source, field, f"a display's exponent must be at least 1 (code values darker than light), "
+                        f"got {eotf.exponent:g}")
+
+
+def _check_display_primaries(gamut: Gamut, source: str, field: str) -> None:
+    """A display's primaries are lights it emits, each with at least
+    :data:`~generator.tolerances.DISPLAY_MIN_LUMINANCE_SHARE` of white's luminance."""
+    from generator.colorimetry.matrices import normalised_primary_matrix
+    from generator.tolerances import DISPLAY_MIN_LUMINANCE_SHARE
+
+    shares = normalised_primary_matrix(gamut.primaries, gamut.whitepoint)[1]
+    for label, (x, y), share in zip(("red", "green", "blue"), gamut.primaries, shares):
+        if not share >= DISPLAY_MIN_LUMINANCE_SHARE:
+            raise SpecError(source, field, f"the {label} primary (x {x:g}, y {y:g}) gives {share:.3g} of white's "
+                            f"luminance; a display's primaries need at least {DISPLAY_MIN_LUMINANCE_SHARE:g} (an "
+                            "encoding gamut such as ACES AP0 belongs to a colour space, not a display)")
 
 
 def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
@@ -495,7 +590,9 @@ def _roles(table, reference: str, source: str, names: set[str]) -> tuple[tuple[s
     given = {"reference": reference, **{role.lower(): target for role, target in table.items()}}
     roles = {**DEFAULT_ROLES, **given}
     for role, target in roles.items():
-        if not isinstance(target, str) or target.lower() not in names:
+        if not isinstance(target, str):
+            raise SpecError(source, f"roles.{_toml_key(role)}", f"expected a string naming a colour space, got {target!r}")
+        if target.lower() not in names:
             if role in given:
                 raise SpecError(source, f"roles.{role}", f"{target!r} is not among the colour spaces")
             raise SpecError(source, f"roles.{role}", f"the default target {target!r} is not among the colour spaces; "
@@ -530,6 +627,11 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
             if key not in table:
                 raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
         rule = FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()})
+        _label(rule.name, source, f"{field}.name", context=False)
+        empty = next((k for k in ("pattern", "extension") if getattr(rule, k) == ""), None)
+        if empty:
+            raise SpecError(source, f"{field}.{empty}", "empty, which OCIO refuses; allowed: a glob ('*' matches "
+                            "every file), or the key left out")
         _check_glob(rule, source, field)
         if rule.name.lower() == "colorspacenamepathsearch":
             raise SpecError(source, f"{field}.name", "OCIO reserves 'ColorSpaceNamePathSearch' for its rule that "

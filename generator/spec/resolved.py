@@ -10,12 +10,14 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
 from pathlib import Path
 
 import numpy as np
 
 from generator.colorimetry import transfer
 from generator.colorimetry.matrices import Gamut
+from generator.spec import fields
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
 FILENAME = "ocioforge-spec.json"
@@ -27,26 +29,6 @@ def _curve_to_json(curve) -> dict:
     if isinstance(curve, transfer.Function):
         return {"family": "Function", "name": curve.name}
     return {"family": type(curve).__name__, **dataclasses.asdict(curve)}
-
-
-def _curve_from_json(data: dict):
-    from generator.colorimetry.curves import CURVES
-
-    data = dict(data)
-    family = data.pop("family")
-    if family == "Function":
-        return CURVES[data["name"]]
-    if family == "Tabulated":
-        data = {**data, "code": tuple(data["code"]), "linear": tuple(data["linear"])}
-    return _CURVE_TYPES[family](**data)
-
-
-def _gamut_from_json(data):
-    if data is None:
-        return None
-    return Gamut(data["name"], tuple(tuple(p) for p in data["primaries"]), tuple(data["whitepoint"]),
-                 tuple(data["adapting_white"]) if data["adapting_white"] else None, data["citation"],
-                 data.get("adaptation"))
 
 
 def _record(obj) -> dict:
@@ -71,43 +53,215 @@ def dumps(spec: Spec) -> str:
     return json.dumps(data, indent=1, sort_keys=True) + "\n"
 
 
-def loads(text: str) -> Spec:
-    data = json.loads(text)
-    spaces = tuple(ColourSpace(**{**s, "gamut": _gamut_from_json(s["gamut"]), "curve": _curve_from_json(s["curve"]),
-                                  "aliases": tuple(s["aliases"])}) for s in data["colour_spaces"])
-    displays = tuple(Display(**{**d, "gamut": _gamut_from_json(d["gamut"]), "eotf": _curve_from_json(d["eotf"]),
-                                "aliases": tuple(d["aliases"]), "views": tuple(d["views"])}) for d in data["displays"])
-    spec = Spec(**{**data, "ocio_version": tuple(data["ocio_version"]), "colour_spaces": spaces, "displays": displays,
-                   "roles": tuple(tuple(r) for r in data["roles"]), "inactive": tuple(data["inactive"]),
-                   "file_rules": tuple(FileRule(**r) for r in data["file_rules"])})
-    return _checked(spec)
+def loads(text: str, source: str = FILENAME) -> Spec:
+    """The spec stored in ``text``; anything malformed (a shape, a type, a number that is not
+    finite, a name nothing defines) is a SpecError naming its field."""
+    try:
+        data = json.loads(text)
+    except ValueError as error:
+        raise SpecError(source, "-", f"not JSON ({error}); allowed: the file a build writes") from None
+    return _Reader(source).spec(data)
 
 
-def _checked(spec: Spec) -> Spec:
-    """What later commands take for granted, checked as the file is read (an edited file raised
-    deep inside them): a known adaptation, a version of integers, the scene reference among the
-    spaces, and every gamut's matrix (ValueError, KeyError, TypeError or LinAlgError otherwise)."""
-    from generator.colorimetry.matrices import CATS
+class _Reader:
+    """Reads the stored JSON back into records, every value checked as it is read."""
 
-    if spec.chromatic_adaptation not in CATS:
-        raise ValueError(f"unknown chromatic adaptation {spec.chromatic_adaptation!r}")
-    if len(spec.ocio_version) != 2 or not all(isinstance(v, int) for v in spec.ocio_version):
-        raise TypeError(f"ocio_version {spec.ocio_version!r} is not two integers")
-    spec.reference  # noqa: B018 (a KeyError when the reference is not among the spaces)
-    for space in spec.colour_spaces:
-        if space.gamut is None and not (space.is_data or space.special):
-            raise ValueError(f"{space.name!r} has no gamut")
-    for gamut in {s.gamut for s in spec.colour_spaces if s.gamut is not None} | {d.gamut for d in spec.displays}:
-        gamut.rgb_to_xyz  # noqa: B018 (derives the matrix: LinAlgError or ValueError when degenerate)
-    return spec
+    KINDS = {str: "a string", bool: "true or false", int: "an integer", float: "a finite number", list: "a list",
+             dict: "an object"}
+
+    def __init__(self, source: str):
+        self.source = source
+
+    def fail(self, field: str, message: str) -> SpecError:
+        return SpecError(self.source, field, f"{message}; allowed: the value a build writes (build again)")
+
+    def typed(self, value, kind, field: str):
+        """``value`` if it is of ``kind`` (a bool is no number; a float is finite)."""
+        if kind is float:
+            if isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value):
+                return float(value)
+        elif isinstance(value, kind) and not (kind is int and isinstance(value, bool)):
+            return value
+        raise self.fail(field, f"expected {self.KINDS[kind]}, got {value!r}")
+
+    def table(self, data, keys, field: str) -> dict:
+        """``data`` an object holding exactly ``keys``."""
+        self.typed(data, dict, field or "-")
+        odd = next((k for k in (*keys, *data) if (k in keys) != (k in data)), None)
+        if odd is not None:
+            raise self.fail(_join(field, odd), "missing" if odd in keys else "unknown key")
+        return data
+
+    def items(self, value, field: str, read, least: int = 0) -> tuple:
+        """A list of at least ``least`` values, each read by ``read(value, field)``."""
+        values = self.typed(value, list, field)
+        if len(values) < least:
+            raise self.fail(field, f"expected {least} {'entry' if least == 1 else 'entries'} or more, got {len(values)}")
+        return tuple(read(v, f"{field}[{i}]") for i, v in enumerate(values))
+
+    def strings(self, value, field: str) -> tuple[str, ...]:
+        return self.items(value, field, lambda v, f: self.typed(v, str, f))
+
+    def xy(self, value, field: str) -> tuple[float, float]:
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(field, f"expected a chromaticity [x, y], got {value!r}")
+        return tuple(self.typed(v, float, f"{field}[{i}]") for i, v in enumerate(value))
+
+    def gamut(self, data, field: str) -> Gamut:
+        from generator.colorimetry.matrices import CATS
+
+        keys = ("name", "primaries", "whitepoint", "adapting_white", "citation", "adaptation")
+        d = self.table(data, keys, field)
+        primaries = self.items(d["primaries"], f"{field}.primaries", self.xy, 3)
+        if len(primaries) != 3:
+            raise self.fail(f"{field}.primaries", "expected three chromaticities")
+        white = self.white(d["whitepoint"], f"{field}.whitepoint")
+        fields.check_triangle(primaries, white, self.source, f"{field}.primaries", f"{field}.whitepoint")
+        if d["adaptation"] is not None and d["adaptation"] not in CATS:
+            raise self.fail(f"{field}.adaptation", f"unknown {d['adaptation']!r}")
+        adapting = None if d["adapting_white"] is None else self.white(d["adapting_white"], f"{field}.adapting_white")
+        gamut = Gamut(self.typed(d["name"], str, f"{field}.name"), primaries, white, adapting,
+                      self.typed(d["citation"], str, f"{field}.citation"), d["adaptation"])
+        with np.errstate(all="ignore"):
+            if not np.all(np.isfinite(gamut.rgb_to_xyz)):  # a primary at y = 0 is XYZ's alone
+                raise self.fail(f"{field}.primaries", "they give no RGB to XYZ matrix")
+        return gamut
+
+    def white(self, value, field: str) -> tuple[float, float]:
+        return fields.plausible_xy(self.xy(value, field), self.source, field, white=True)
+
+    def curve(self, data, field: str):
+        from generator.colorimetry.curves import CURVES
+
+        family = self.typed(self.typed(data, dict, field).get("family"), str, f"{field}.family")
+        if family == "Function":
+            name = self.table(data, ("family", "name"), field)["name"]
+            if name not in CURVES:
+                raise self.fail(f"{field}.name", f"unknown curve {name!r}")
+            return CURVES[name]
+        if family not in _CURVE_TYPES:
+            raise self.fail(f"{field}.family", f"unknown family {family!r} ({', '.join(['Function', *_CURVE_TYPES])})")
+        cls = _CURVE_TYPES[family]
+        d = self.table(data, ("family", *(f.name for f in dataclasses.fields(cls))), field)
+        values = {f.name: self.field_value(d[f.name], f.type, f"{field}.{f.name}") for f in dataclasses.fields(cls)}
+        if family in _SPEC_FAMILIES:
+            fields.check_ranges(_SPEC_FAMILIES[family], values, self.source, field)
+        column = next((k for k in ("code", "linear") if k in values and not np.all(np.diff(values[k]) > 0.0)), None)
+        if column:
+            raise self.fail(f"{field}.{column}", "not strictly increasing")
+        return cls(**values)
+
+    def field_value(self, value, annotation: str, field: str):
+        """A curve record's field, by its annotation: a number (or None), a flag, a name, a table's column."""
+        if value is None and annotation.endswith("| None"):
+            return None
+        if annotation.startswith("tuple"):
+            return self.items(value, field, lambda v, f: self.typed(v, float, f), 2)
+        return self.typed(value, {"bool": bool, "str": str}.get(annotation, float), field)
+
+    def space(self, data, field: str) -> ColourSpace:
+        d = self.table(data, [f.name for f in dataclasses.fields(ColourSpace)], field)
+        gamut = None if d["gamut"] is None else self.gamut(d["gamut"], f"{field}.gamut")
+        special = self.typed(d["special"], str, f"{field}.special")
+        is_data = self.typed(d["is_data"], bool, f"{field}.is_data")
+        if gamut is None and not (is_data or special):
+            raise self.fail(f"{field}.gamut", "a colour space that is not data has no gamut")
+        return ColourSpace(
+            name=self.typed(d["name"], str, f"{field}.name"), gamut=gamut, curve=self.curve(d["curve"], f"{field}.curve"),
+            curve_name=self.typed(d["curve_name"], str, f"{field}.curve_name"),
+            aliases=self.strings(d["aliases"], f"{field}.aliases"), family=self.typed(d["family"], str, f"{field}.family"),
+            encoding=self.typed(d["encoding"], str, f"{field}.encoding"),
+            description=self.typed(d["description"], str, f"{field}.description"), is_data=is_data, special=special)
+
+    def display(self, data, field: str) -> Display:
+        from generator.spec.load import VIEWS
+
+        d = self.table(data, [f.name for f in dataclasses.fields(Display)], field)
+        views = self.items(d["views"], f"{field}.views", lambda v, f: self.typed(v, str, f), 1)
+        unknown = next((i for i, v in enumerate(views) if v not in VIEWS), None)
+        if unknown is not None:
+            raise self.fail(f"{field}.views[{unknown}]", f"unknown view {views[unknown]!r}")
+        peak = self.typed(d["peak"], float, f"{field}.peak")
+        if peak <= 0.0:
+            raise self.fail(f"{field}.peak", f"{peak:g} is not positive")
+        return Display(
+            self.typed(d["name"], str, f"{field}.name"), self.gamut(d["gamut"], f"{field}.gamut"),
+            self.curve(d["eotf"], f"{field}.eotf"), self.typed(d["eotf_name"], str, f"{field}.eotf_name"), views,
+            self.strings(d["aliases"], f"{field}.aliases"), peak, self.typed(d["encoding"], str, f"{field}.encoding"),
+            self.typed(d["description"], str, f"{field}.description"), self.typed(d["absolute"], bool, f"{field}.absolute"))
+
+    def pair(self, value, field: str) -> tuple[str, str]:
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail(field, f"expected [role, colour space], got {value!r}")
+        return tuple(self.typed(v, str, f"{field}[{i}]") for i, v in enumerate(value))
+
+    def rule(self, value, field: str) -> FileRule:
+        d = self.table(value, [f.name for f in dataclasses.fields(FileRule)], field)
+        return FileRule(**{k: self.typed(v, str, f"{field}.{k}") for k, v in d.items()})
+
+    def version(self, value) -> tuple[int, int]:
+        from generator.spec.load import OCIO_MIN_VERSION, newest_ocio_version
+
+        if not isinstance(value, list) or len(value) != 2:
+            raise self.fail("ocio_version", f"expected [major, minor], got {value!r}")
+        version = tuple(self.typed(v, int, f"ocio_version[{i}]") for i, v in enumerate(value))
+        if not OCIO_MIN_VERSION <= version <= newest_ocio_version():
+            raise self.fail("ocio_version", f"{value!r} is not a version the installed OpenColorIO writes")
+        return version
+
+    def spec(self, data) -> Spec:
+        from generator.colorimetry.matrices import CATS
+
+        keys = [f.name for f in dataclasses.fields(Spec) if f.metadata.get("resolved", True)]
+        d = self.table(data, keys, "")
+        if d["chromatic_adaptation"] not in CATS:
+            raise self.fail("chromatic_adaptation", f"unknown chromatic adaptation {d['chromatic_adaptation']!r}")
+        spec = Spec(
+            name=self.typed(d["name"], str, "name"), description=self.typed(d["description"], str, "description"),
+            ocio_version=self.version(d["ocio_version"]), scene_reference=self.typed(d["scene_reference"], str,
+                                                                                       "scene_reference"),
+            chromatic_adaptation=d["chromatic_adaptation"],
+            colour_spaces=self.items(d["colour_spaces"], "colour_spaces", self.space, 1),
+            displays=self.items(d["displays"], "displays", self.display, 1),
+            roles=self.items(d["roles"], "roles", self.pair), file_rules=self.items(d["file_rules"], "file_rules", self.rule),
+            display_view_spaces=self.typed(d["display_view_spaces"], bool, "display_view_spaces"),
+            inactive=self.strings(d["inactive"], "inactive"), source=self.typed(d["source"], str, "source"))
+        self.check_names(spec)
+        return spec
+
+    def check_names(self, spec: Spec) -> None:
+        """Every name the spec refers to is one it defines: the scene reference and the inactive spaces
+        among its colour spaces, the roles' targets among those, its displays and the display
+        reference, the file rules' among those and the roles."""
+        from generator.spec.namespace import DISPLAY_REFERENCE
+
+        spaces = {n.lower() for n in spec.space_names}
+        targets = spaces | {n.lower() for d in spec.displays for n in (d.name, *d.aliases)} | {DISPLAY_REFERENCE.lower()}
+        refers = [("scene_reference", spec.scene_reference, spaces)]
+        refers += [(f"inactive[{i}]", name, spaces) for i, name in enumerate(spec.inactive)]
+        refers += [(f"roles[{i}][1]", target, targets) for i, (_, target) in enumerate(spec.roles)]
+        refers += [(f"file_rules[{i}].colour_space", r.colour_space, targets | {role for role, _ in spec.roles})
+                   for i, r in enumerate(spec.file_rules)]
+        for field, name, names in refers:
+            if name.lower() not in names:
+                raise self.fail(field, f"{name!r} names nothing the spec defines")
+
+
+def _join(field: str, key: str) -> str:
+    return f"{field}.{key}" if field else key
+
+
+#: The spec's transfer family each stored analytic curve is, whose parameter ranges it keeps.
+_SPEC_FAMILIES = {"Power": "gamma", "PiecewisePower": "piecewise_gamma", "LogCamera": "log_camera"}
 
 
 def read_beside(config_path: str | Path) -> Spec:
     """The resolved spec stored beside a built config."""
     path = Path(config_path).parent / FILENAME
     try:
-        return loads(path.read_text(encoding="utf-8"))
+        text = path.read_text(encoding="utf-8")
     except OSError:
         raise SpecError(str(path), "-", "no resolved spec beside the config; build it with ocioforge build") from None
-    except (ValueError, KeyError, TypeError, IndexError, np.linalg.LinAlgError) as error:
-        raise SpecError(str(path), "-", f"not a resolved ocioforge spec: {type(error).__name__} {error}") from None
+    except UnicodeDecodeError:
+        raise SpecError(str(path), "-", "not UTF-8 text; allowed: the file a build writes (build again)") from None
+    return loads(text, str(path))

@@ -77,12 +77,16 @@ def summary(verification: Verification) -> str:
             lines.append(f"{o.verdict}: {o.check.kind} {o.check.title} [{o.engine}]: {_figure(o.worst)} > "
                          f"{o.check.tolerance:g}{where}{'; ' + o.note if o.note else ''}")
     verdict = "passed" if verification.passed else "FAILED"
-    missing = [e.name for e in verification.engines if e.skipped]
     nothing = "" if verification.compared else "nothing compared (no engine ran a check), "
     lines.append(f"verify {verdict}: {nothing}{len(verification.failures)} failing, "
                  f"{sum(o.verdict == APPROX for o in verification.outcomes)} explained by OCIO's default flags"
-                 + (f", not run: {', '.join(missing)}" if missing else ""))
+                 + (f", {_not_run(verification)}: {', '.join(verification.missing)}" if verification.missing else ""))
     return "\n".join(lines)
+
+
+def _not_run(verification: Verification) -> str:
+    """How the summary names the engines that did not run: asked for, they fail the run."""
+    return "not run (asked for by --engines)" if verification.strict else "not run"
 
 
 def to_json(verification: Verification) -> dict:
@@ -135,10 +139,20 @@ def html_page(verification: Verification, figures: dict[str, bytes]) -> str:
             f"<h2>Every result</h2>{_html_table(COLUMNS, rows(verification))}</body></html>")
 
 
-def write_report(verification: Verification, folder: str | Path, figures: dict[str, bytes]) -> list[Path]:
-    """Write summary.json and report.html into ``folder``, both or neither; returns their paths."""
-    folder = Path(folder)
-    files = {folder / "summary.json": (json.dumps(to_json(verification), indent=1) + "\n").encode(),
-             folder / "report.html": html_page(verification, figures).encode()}
-    write_files(files)
+#: The files a report folder holds.
+REPORT_FILES = ("summary.json", "report.html")
+
+
+def report_paths(folder: str | Path) -> list[Path]:
+    """The paths of a report's files in ``folder``."""
+    return [Path(folder) / name for name in REPORT_FILES]
+
+
+def write_report(verification: Verification, folder: str | Path, figures: dict[str, bytes],
+                 force: bool = False) -> list[Path]:
+    """Write summary.json and report.html into ``folder``, both or neither (existing ones only
+    with ``force``); returns their paths."""
+    data = ((json.dumps(to_json(verification), indent=1) + "\n").encode(), html_page(verification, figures).encode())
+    files = dict(zip(report_paths(folder), data))
+    write_files(files, force)
     return list(files)

@@ -115,13 +115,15 @@ def test_a_build_failing_while_written_leaves_no_folders_it_made(tmp_path, capsy
     assert sorted(p.name for p in tmp_path.iterdir()) == ["rough.csv", "rough.toml"]
 
 
-@pytest.mark.parametrize("name", ["../escape", "", "..", "show\nbuild", "a/b"])
-def test_a_spec_name_that_cannot_name_the_default_folder_is_refused(tmp_path, capsys, monkeypatch, name):
+@pytest.mark.parametrize(("name", "words"), [("../escape", "cannot name a folder"), ("", "cannot name a folder"),
+                                             ("..", "cannot name a folder"), ("show\nbuild", "control character"),
+                                             ("a/b", "cannot name a folder")])
+def test_a_spec_name_that_cannot_name_the_default_folder_is_refused(tmp_path, capsys, monkeypatch, name, words):
     """Without -o a build goes to configs/<name>: a name no folder takes is one line, exit 2."""
     monkeypatch.chdir(tmp_path)
     (tmp_path / "show.toml").write_text(f"name = {name!r}\n".replace("'", '"').replace("\n\"", "\\n\""))
     code, _, err = run(capsys, "build", "show.toml")
-    assert code == 2 and err.count("\n") == 1 and "cannot name a folder" in err, err
+    assert code == 2 and err.count("\n") == 1 and words in err, err
     assert sorted(p.name for p in tmp_path.rglob("*")) == ["show.toml"]
     (tmp_path / "show.toml").write_text('name = "Show: A"\n')
     assert run(capsys, "build", "show.toml", "-o", str(tmp_path / "out"))[0] == 0  # -o names the folder
@@ -200,9 +202,9 @@ def test_init_replaces_only_a_regular_file(tmp_path, capsys):
 
     os.mkfifo(tmp_path / "pipe")
     (tmp_path / "link").symlink_to(tmp_path / "nowhere")
-    for name in ("pipe", "link"):
+    for name, words in (("pipe", "is not a regular file"), ("link", "is a link to nothing")):
         code, _, err = run(capsys, "init", str(tmp_path / name), "--force")
-        assert code == 2 and "is not a regular file" in err and err.count("\n") == 1
+        assert code == 2 and words in err and err.count("\n") == 1
     assert (tmp_path / "link").is_symlink() and not (tmp_path / "nowhere").exists()
     code, _, err = run(capsys, "init", str(tmp_path / ("x" * 300 + ".toml")))
     assert code == 2 and "cannot write" in err and err.count("\n") == 1
@@ -266,16 +268,113 @@ def test_an_unknown_command_lists_the_commands(capsys):
     assert code == 2 and "allowed: build, init, matrix, bake, verify, plot, info, list" in err and err.count("\n") == 1
 
 
+def _interrupted(*args, **kwargs):
+    raise KeyboardInterrupt
+
+
 def test_ctrl_c_exits_130_not_as_bad_input(capsys, monkeypatch):
-    """Interrupted is not bad input (exit 2): the shell's 128 + SIGINT, and one line."""
+    """Interrupted is not bad input (exit 2): the shell's 128 + SIGINT, and one line (click had
+    printed a blank line before it)."""
     from generator.cli import init
 
-    def interrupted(*args, **kwargs):
-        raise KeyboardInterrupt
-
-    monkeypatch.setattr(init, "command", click_command_raising(interrupted))
+    monkeypatch.setattr(init, "command", click_command_raising(_interrupted))
     code, _, err = run(capsys, "init", "x.toml")
-    assert code == 130 and err.strip().endswith("error: interrupted")
+    assert code == 130 and err == "error: interrupted\n"
+
+
+def test_ctrl_c_before_the_command_runs_is_one_line(capsys, monkeypatch):
+    """Ctrl-C during the imports that precede the command (numpy's, 0.2 s in) was a traceback."""
+    import generator.colour_science
+
+    monkeypatch.setattr(generator.colour_science, "skip_plotting", _interrupted)
+    code, _, err = run(capsys, "list")
+    assert code == 130 and err == "error: interrupted\n"
+
+
+def test_a_swallowed_sigterm_still_stops_the_command_before_it_writes(tmp_path, capsys, monkeypatch):
+    """SIGTERM's exception raised inside a weakref callback is only printed: the signal is
+    recorded, so the bake renames nothing into place and exits 128 + SIGTERM (it had exited 0)."""
+    import signal
+
+    import generator.cli
+    from generator.luts import bake
+
+    real_bake = bake.bake
+
+    def terminated_meanwhile(req):
+        try:
+            generator.cli._stop(signal.SIGTERM, None)
+        except SystemExit:
+            pass  # as Python does with an exception raised in a weakref callback
+        return real_bake(req)
+
+    monkeypatch.setattr(bake, "bake", terminated_meanwhile)
+    code, _, _ = run(capsys, "bake", "--from", "ACEScg", "--to", "sRGB - Display", "--size", "9",
+                     "-o", str(tmp_path / "a.clf"))
+    assert code == 128 + signal.SIGTERM and list(tmp_path.iterdir()) == []
+    assert run(capsys, "list")[0] == 0  # the next command in the process is not stopped
+
+
+@pytest.mark.parametrize("argv", [("build", "-o", ""), ("build", "--ocio-version", ""), ("build", ""),
+                                  ("verify", ""), ("init", ""), ("plot", "", "-o", "a.png"),
+                                  ("bake", "--from", " ", "--to", "srgb_display", "-o", "a.clf"),
+                                  ("matrix", "acescg", "")])
+def test_an_empty_value_is_refused(tmp_path, capsys, monkeypatch, argv):
+    """An empty -o had meant configs/<name>, an empty --ocio-version the spec's, an empty path '.'."""
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("\n") == 1 and "is empty" in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("argv, option", [
+    (("bake", "--from", "acescct", "--from", "acescg", "--to", "srgb_display", "-o", "a.clf"), "--from"),
+    (("bake", "--from", "acescg", "--to", "srgb_display", "--size", "5", "--size", "9", "-o", "a.clf"), "--size"),
+    (("build", "-o", "a", "--output", "b"), "--output"),
+])
+def test_an_option_given_twice_is_refused(tmp_path, capsys, monkeypatch, argv, option):
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, *argv)
+    assert code == 2 and err.count("\n") == 1 and f"{option} is given more than once" in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_names_and_keywords_are_read_in_any_case_and_without_surrounding_blanks(tmp_path, capsys):
+    out = tmp_path / "a.clf"
+    code, printed, err = run(capsys, "bake", "--from", " acescg", "--to", "srgb_display ", "--gamut-map", "CLIP",
+                             "--size", "9", "-o", str(out))
+    assert code == 0 and "gamut mapping clip" in printed and out.exists(), err
+    _, plain, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--format", "json")
+    code, padded, err = run(capsys, "matrix", " acescg", "lin_rec709 ", "--format", "JSON")
+    assert code == 0 and padded == plain, err
+
+
+def test_standard_output_closed_is_one_line(capsys, monkeypatch):
+    """``ocioforge list >&-``: Python's sys.stdout is None (an AttributeError on isatty)."""
+    import sys
+
+    monkeypatch.setattr(sys, "stdout", None)
+    with pytest.raises(SystemExit) as exited:
+        main(["list"])
+    err = capsys.readouterr().err
+    assert exited.value.code == 2 and err.count("\n") == 1 and "standard output is closed" in err
+
+
+@pytest.mark.parametrize("value", ("", "abc", "1.5"))
+def test_a_malformed_source_date_epoch_is_one_line(capsys, monkeypatch, value):
+    """numpy's f2py, imported with colour-science, failed on it with a traceback (plot, info,
+    bake --gamut-map perceptual); reproducible-builds.org asks for an error."""
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", value)
+    code, _, err = run(capsys, "info", "acescg")
+    assert code == 2 and err.count("\n") == 1 and "SOURCE_DATE_EPOCH" in err, err
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
+    assert run(capsys, "info", "acescg")[0] == 0
+
+
+def test_counts_are_singular_for_one():
+    from generator.cli.build import counted
+
+    assert (counted(1, "display"), counted(2, "display"), counted(0, "view")) == ("1 display", "2 displays", "0 views")
 
 
 def click_command_raising(fn):

@@ -8,7 +8,7 @@ import pytest
 
 from generator import tolerances
 from generator.colorimetry.curves import CURVES, HALF_MAX
-from generator.colorimetry.transfer import Function, LogCamera
+from generator.colorimetry.transfer import Function, LogCamera, PiecewisePower, probed_values, float32_departure
 
 LOG_CAMERA = {
     "ACEScct", "ARRI LogC3 (EI800)", "ARRI LogC4", "S-Log3", "Log3G10", "V-Log", "BMDFilm Gen5",
@@ -211,9 +211,29 @@ def test_adobe_rgb_decodes_as_the_studio_config(default_spec):
     assert np.abs(ours - pixels).max() <= tolerances.ANALYTIC_RELATIVE
 
 
-def test_the_library_log_curves_survive_float32():
-    """OCIO evaluates LogCamera in float32: every library curve's formula stays within the bound a
-    spec's log_camera is held to, with room (within 1.3e-6)."""
+def test_the_library_log_curves_and_piecewise_powers_survive_float32():
+    """OCIO evaluates LogCamera and ExponentWithLinear in float32: every library curve's formula stays
+    within the bound a spec's log_camera or piecewise_gamma is held to, with room (within 1.6e-6), on
+    the values verify probes."""
     for name, curve in CURVES.items():
-        if isinstance(curve, LogCamera):
-            assert curve.float32_departure(tolerances.RELATIVE_FLOOR) <= tolerances.LOG_CAMERA_FLOAT32_RELATIVE / 5, name
+        if isinstance(curve, (LogCamera, PiecewisePower)):
+            assert float32_departure(curve, tolerances.RELATIVE_FLOOR) <= tolerances.CURVE_FLOAT32_RELATIVE / 5, name
+
+
+@pytest.mark.parametrize("gamma, offset", [(2.4, 0.055), (1.0 / 0.45, 0.099), (2.4, 1e-9), (10.0, 1e-4), (1.0000001, 0.05)])
+def test_the_float32_piecewise_power_is_ocios(gamma, offset):
+    """PiecewisePower.float32 is OCIO's CPU renderer of ExponentWithLinearTransform, bit for bit:
+    its clamps of gamma and offset (OCIO_MONCURVE_EPS) and float32 parameters included."""
+    curve = PiecewisePower(gamma, offset)
+    codes, light = (v.astype(np.float32) for v in probed_values(curve, 257))
+    transform = ocio.ExponentWithLinearTransform(gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0],
+                                                 negativeStyle=ocio.NEGATIVE_LINEAR)
+    config = ocio.Config.CreateRaw()
+    ours = curve.float32(codes, light)
+    for values, direction, emulated in ((codes, ocio.TRANSFORM_DIR_FORWARD, ours[0]),
+                                        (light, ocio.TRANSFORM_DIR_INVERSE, ours[1])):
+        transform.setDirection(direction)
+        pixels = np.ascontiguousarray(np.repeat(values[:, None], 3, axis=1))
+        config.getProcessor(transform).getOptimizedCPUProcessor(
+            ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, ocio.OPTIMIZATION_LOSSLESS).applyRGB(pixels)
+        assert np.array_equal(pixels[:, 0], emulated, equal_nan=True), direction

@@ -116,6 +116,15 @@ def test_a_mistyped_name_is_answered_with_the_names_the_spec_has(tmp_path, run, 
     assert code == 2 and err.count("\n") == 1 and words in err, err
 
 
+def test_a_library_space_the_spec_leaves_out_and_a_space_without_a_curve_say_so(tmp_path, run):
+    spec = tmp_path / "small.toml"
+    spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n')
+    code, err = run(["--spec", str(spec), "--from", "ARRI LogC4", "--to", "sRGB - Display", "-o", str(tmp_path / "a.cube")])
+    assert code == 2 and "'ARRI LogC4' is in the library but not in this spec" in err, err
+    code, err = run(["--from", "ADX10", "--to", "sRGB - Display", "-o", str(tmp_path / "a.cube")])
+    assert code == 2 and "allowed: a space with a curve and primaries" in err, err
+
+
 def test_a_spi3d_rebaked_without_a_shaper_takes_the_old_shaper_with_it(tmp_path, run):
     """An earlier bake's .spi1d beside a .spi3d that no longer needs one would be paired with
     it by whoever reads the two: refused without --force, deleted with it."""

@@ -1,5 +1,7 @@
 """The spec: strict parsing, custom spaces of every family, clear errors, the resolved JSON."""
 
+import json
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -59,7 +61,7 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
      "custom_space[0].transfer", "OCIO evaluates a log_camera curve in float32, which departs inf"),
     ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = { family = 'log_camera', base = 10, "
      "log_side_slope = 0.25, log_side_offset = 0.4, lin_side_slope = 5.0, lin_side_offset = 0.05, "
-     "lin_side_break = 100 }", "custom_space[0].transfer", "which departs 0.00046 relative"),
+     "lin_side_break = 100 }", "custom_space[0].transfer", "which departs 0.00051 relative"),
     ("[[custom_space]]\nname = 'x'\ngamut = 'Rec.709'\ntransfer = { family = 'log_camera', base = 2, "
      "log_side_slope = 0.06, log_side_offset = 0.55, lin_side_slope = 1.0, lin_side_offset = 0.0 }",
      "custom_space[0].transfer.lin_side_offset", "leaves black without a code"),
@@ -85,7 +87,8 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
      "custom_space[0].transfer.offset", "allowed: exponent"),
     ("[[custom_space]]\nname = 'x'\nprimaries = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]]\nwhite = 'D66'",
      "custom_space[0].white", "did you mean"),
-    ("[[custom_space]]\nname = 'ACEScg'\ngamut = 'Rec.709'", "colour_spaces", "defined twice"),
+    ("[[custom_space]]\nname = 'ACEScg'\ngamut = 'Rec.709'", "custom_space[0].name",
+     "'ACEScg' already names the library colour space 'ACEScg' of colour_spaces"),
     ("display = 5", "display", "expected an array of tables ([[display]])"),
     ("[custom_space]\nname = 'x'", "custom_space", "expected an array of tables ([[custom_space]])"),
     ("[[display]]\nname = ''\ngamut = 'Rec.709'\neotf = 'sRGB'", "display[0].name", "required"),
@@ -138,6 +141,12 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[display]]\nname = 'HLG'\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\nwhite = 'D65'\neotf = 'HLG'",
      "display[0].primaries", "allowed: gamut = \"Rec.2020\""),
     ("name = = 1", "-", "not valid TOML"),
+    ("[[display]]\nname = 'Wide'\nprimaries = [[0.73, 0.28], [0.14, 0.86], [0.10, -0.03]]\nwhite = 'D65'\n"
+     "eotf = 'sRGB'", "display[0].primaries", "the blue primary (x 0.1, y -0.03) gives -0."),
+    ("[[display]]\nname = 'Wide'\nprimaries = [[0.73, 0.28], [0.14, 0.86], [0.10, 0.001]]\nwhite = 'D65'\n"
+     "eotf = 'sRGB'", "display[0].primaries", "need at least 0.005"),
+    ("[[display]]\nname = 'Wall'\ngamut = 'Rec.709'\neotf = { family = 'gamma', exponent = 0.3 }",
+     "display[0].eotf", "a display's exponent must be at least 1"),
 ])
 def test_bad_specs_name_the_field_and_what_is_allowed(text, field, words):
     with pytest.raises(SpecError) as error:
@@ -307,3 +316,75 @@ def test_the_reference_role_follows_the_scene_reference_unless_set():
     assert ("reference", "ACEScg") in parse("scene_reference = 'ACEScg'").roles
     assert ("reference", "ACEScg") in parse("[roles]\nreference = 'ACEScg'").roles
     assert ("reference", "ACEScg") in parse("[roles]\nReference = 'ACEScg'").roles  # OCIO keeps roles in lower case
+
+
+SPACES = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+CUSTOM = "[[custom_space]]\nname = {name}\ngamut = 'Rec.709'\n"
+RULES = "[[file_rule]]\nname = {name}\ncolour_space = 'ACEScg'\n{extra}\n[[file_rule]]\nname = 'Default'\ncolour_space = 'ACEScg'\n"
+
+
+#: Where the spec gives a name of the config: the TOML giving the TOML string ``n`` there, and the field.
+NAME_PLACES = [
+    (lambda n: CUSTOM.format(name=n), "custom_space[0].name"),
+    (lambda n: CUSTOM.format(name="'x'") + f"aliases = [{n}]", "custom_space[0].aliases[0]"),
+    (lambda n: f"[[display]]\nname = {n}\ngamut = 'Rec.709'\neotf = 'sRGB'", "display[0].name"),
+    (lambda n: f"[roles]\n{n} = 'ACEScg'", "roles.{quoted}"),
+]
+#: Names OCIO cannot carry as given: control characters (its strings end at NUL, so two spaces would
+#: merge; DEL and C1 are no text either), spaces at either end (it trims them), and $ and % (context
+#: variables, an exception in colour-space and role names).
+BAD_NAMES = [
+    ('"a\\u0000b"', "control character '\\x00'"), ('"a\\u0001b"', "control character '\\x01'"),
+    ('"a\\u007fb"', "control character '\\x7f'"), ('"a\\u0085b"', "control character '\\x85'"),
+    ("' A'", "space at either end, which OCIO trims"), ("'A '", "space at either end"),
+    ("'A$B'", "holds '$', which OCIO reads as a context variable"), ("'a%b'", "holds '%'"),
+]
+
+
+@pytest.mark.parametrize("name, words", BAD_NAMES)
+@pytest.mark.parametrize("place, field", NAME_PLACES)
+def test_a_name_ocio_cannot_carry_is_refused_wherever_the_spec_gives_it(place, field, name, words):
+    quoted = json.dumps(tomllib.loads(f"k = {name}")["k"], ensure_ascii=False)
+    with pytest.raises(SpecError) as error:
+        parse(place(name))
+    assert (error.value.field, "\n" in str(error.value)) == (field.format(quoted=quoted), False)
+    assert words in error.value.message
+
+
+@pytest.mark.parametrize("text, field, words", [
+    (RULES.format(name='"A\\u0000"', extra="extension = 'exr'"), "file_rule[0].name", "control character"),
+    (SPACES + 'inactive = ["ACEScct\\u0000"]', "inactive[0]", "control character"),
+    ('name = "show\\u007f"', "name", "control character"),
+    ('description = "a\\u0000b"', "description", "tabs and line breaks but no other control characters"),
+    (RULES.format(name="'A '", extra="extension = 'exr'"), "file_rule[0].name", "space at either end"),
+    (SPACES + 'inactive = [" ACEScct"]', "inactive[0]", "not among the colour spaces"),
+    # Empty names and globs, which OCIO refuses with an exception.
+    ("[roles]\n'' = 'ACEScg'", 'roles.""', "blank; required: a name with a visible character"),
+    (RULES.format(name="''", extra="extension = 'exr'"), "file_rule[0].name", "blank"),
+    (RULES.format(name="' '", extra="extension = 'exr'"), "file_rule[0].name", "blank"),
+    (RULES.format(name="'A'", extra="pattern = ''"), "file_rule[0].pattern", "empty, which OCIO refuses"),
+    (RULES.format(name="'A'", extra="extension = ''"), "file_rule[0].extension", "empty, which OCIO refuses"),
+    # A TOML number as the version loses its digits (2.10 reads as 2.1); the string "2.10" is 2.10.
+    ("ocio_version = 2.10", "ocio_version", 'expected a quoted version like "2.1", got 2.1'),
+    ("ocio_version = 2", "ocio_version", "expected a quoted version"),
+    ("ocio_version = '2.10'", "ocio_version", "2.10 is not supported; allowed: 2.1 to"),
+    # A name given twice names the field that gives it second, and the first.
+    (CUSTOM.format(name="'A'") + CUSTOM.format(name="'a'"), "custom_space[1].name", "'a' already names custom_space[0] 'A'"),
+    (CUSTOM.format(name="'A'") + "aliases = ['a']", "custom_space[0].aliases[0]", "'a' already names custom_space[0] 'A'"),
+    (SPACES + CUSTOM.format(name="'acescg'"), "custom_space[0].name",
+     "'acescg' already names the library colour space 'ACEScg' of colour_spaces[1]"),
+    ('colour_spaces = ["ACES2065-1", "ACEScg", "lin_ap1", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]',
+     "colour_spaces[2]", "'ACEScg' already names the library colour space 'ACEScg' of colour_spaces[1]"),
+    # Messages that say what is expected.
+    ("custom_space = [1]", "custom_space[0]", "expected a table of name, aliases"),
+    ("[roles]\nscene_linear = 5", "roles.scene_linear", "expected a string naming a colour space, got 5"),
+])
+def test_names_shapes_and_versions_ocio_cannot_take_name_the_field(text, field, words):
+    with pytest.raises(SpecError) as error:
+        parse(text)
+    assert (error.value.field, "\n" in str(error.value)) == (field, False)
+    assert words in error.value.message
+
+
+def test_a_description_may_hold_tabs_and_line_breaks():
+    assert parse('description = """\nline one\n\tline two\n"""').description == "line one\n\tline two\n"
