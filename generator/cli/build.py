@@ -22,12 +22,12 @@ def counted(number: int, noun: str) -> str:
 @click.option("--force", is_flag=True, help="Replace the output folder if it holds a previous build.")
 def command(spec, output, ocio_version, force):
     from generator.ocio.write import build, for_folder, target
-    from generator.spec import load
+    from generator.spec import labels, load
 
     started = time.perf_counter()
     parsed = load.load(spec)
     version = load.parse_version(ocio_version, "--ocio-version") if ocio_version else None
-    out_dir = Path(output) if output else Path("configs") / load.folder_name(parsed.name, parsed.source)
+    out_dir = Path(output) if output else Path("configs") / labels.folder_name(parsed.name, parsed.source)
     result = build(for_folder(parsed, target(out_dir), version), out_dir, force=force)
     click.echo(
         f"{printable(result.path / 'config.ocio')}: OCIO {'.'.join(map(str, version or parsed.ocio_version))}, "

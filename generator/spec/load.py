@@ -18,7 +18,7 @@ from generator import tolerances
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.colorimetry.transfer import Linear
-from generator.spec import fields, namespace
+from generator.spec import fields, labels, namespace
 from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
@@ -128,32 +128,32 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
         raise SpecError(source, "-", f"not valid TOML: {error}") from None
-    _check_keys(raw, TOP_KEYS, source, "")
+    labels.check_keys(raw, TOP_KEYS, source, "")
     version = parse_version(raw.get("ocio_version", "2.1"), source)
     cat = raw.get("chromatic_adaptation", DEFAULT_ADAPTATION)
     if not isinstance(cat, str) or cat not in CATS:
         raise SpecError(source, "chromatic_adaptation", f"unknown {cat!r}; allowed: {', '.join(CATS)}")
-    reference = _string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
+    reference = labels.string(raw.get("scene_reference", "ACES2065-1"), source, "scene_reference")
     roles = raw.get("roles", {})
     if not isinstance(roles, dict):
         raise SpecError(source, "roles", "expected a table of role = colour space")
     for role in roles:
-        _label(role, source, f"roles.{_toml_key(role)}")
+        labels.label(role, source, f"roles.{labels.toml_key(role)}")
     listed = _listed(raw, source)
     customs = tuple(_custom_space(t, source, f"custom_space[{i}]", base)
                     for i, t in enumerate(_tables(raw, "custom_space", source)))
-    owners = list(_owners(listed, customs, "colour_spaces" in raw and raw["colour_spaces"] != ["*"]))
-    _distinct(owners, source)
+    owners = list(labels.owners(listed, customs, "colour_spaces" in raw and raw["colour_spaces"] != ["*"]))
+    labels.distinct(owners, source)
     all_names = [name for name, _, _ in owners]
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
     if not displays:
         raise SpecError(source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's")
-    twice = _repeated([d.name for d in displays])
+    twice = labels.repeated([d.name for d in displays])
     if twice:
         i, earlier = twice
         raise SpecError(source, f"display[{i}].name", f"{displays[i].name!r} is listed twice (display[{earlier}]); "
                         "allowed: each display once")
-    view_spaces = _bool(raw["display_view_spaces"] if "display_view_spaces" in raw
+    view_spaces = labels.boolean(raw["display_view_spaces"] if "display_view_spaces" in raw
                         else embedded_default("display_view_spaces"), source, "display_view_spaces")
     taken = namespace.generated(displays, view_spaces, tuple(DEFAULT_ROLES), source, tuple(roles))
     namespace.check_free(listed, customs, taken, source)
@@ -172,8 +172,8 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     present = {n.lower() for s in spaces for n in s.all_names}
     left_out = tuple(n for d in listed for n in (d.name, *d.aliases) if n.lower() not in present)
     return Spec(
-        name=_string(raw.get("name", "ocioforge"), source, "name"),
-        description=_string(raw.get("description", ""), source, "description", text=True),
+        name=labels.string(raw.get("name", "ocioforge"), source, "name"),
+        description=labels.string(raw.get("description", ""), source, "description", text=True),
         ocio_version=version,
         scene_reference=reference,
         chromatic_adaptation=cat,
@@ -188,112 +188,10 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     )
 
 
-#: Characters a config's name may not hold: it names the default output folder, configs/<name>,
-#: on any system a show's files travel to.
-NAME_FORBIDDEN = '/\\:*?"<>|'
-
-
-def folder_name(name: str, source: str) -> str:
-    """The spec's ``name`` as the default output folder's (``configs/<name>``); SpecError when
-    it cannot name one."""
-    if not name.strip() or name.strip(".") == "" or name != name.strip() or \
-            any(c in NAME_FORBIDDEN or ord(c) < 32 for c in name):
-        raise SpecError(source, "name", f"{name!r} cannot name a folder (a build's default output is "
-                        f"configs/<name>); allowed: a name without {' '.join(NAME_FORBIDDEN)}, control characters "
-                        "or spaces at either end, and not . or ..")
-    return name
-
-
 def recorded(source: str) -> str:
     """How a built config records the spec it came from: the file's name alone, so that the same
     spec gives the same bytes however its path was typed, and no machine's paths are written."""
     return Path(source).name
-
-
-def _check_keys(table: dict, allowed, source: str, prefix: str) -> None:
-    if not isinstance(table, dict):
-        raise SpecError(source, prefix.rstrip(".") or "-", f"expected a table of {', '.join(allowed)} "
-                        f"(key = value lines under its [[header]]), got {table!r}")
-    for key in table:
-        if key not in allowed:
-            raise SpecError(source, f"{prefix}{key}", f"unknown key; allowed: {', '.join(allowed)}")
-
-
-#: Control characters a description may hold (a multi-line TOML string's line breaks).
-TEXT_CONTROLS = "\t\n\r"
-
-
-def _is_control(c: str) -> bool:
-    """Unicode's control characters (category Cc): C0, DEL and C1."""
-    return ord(c) < 0x20 or 0x7F <= ord(c) < 0xA0
-
-
-def _string(value, source: str, field: str, text: bool = False) -> str:
-    """A string without control characters (C0, DEL, C1: OCIO's C strings end at NUL, which merges
-    two names into one); a description (``text``) may hold tabs and line breaks."""
-    if not isinstance(value, str):
-        raise SpecError(source, field, f"expected a string, got {value!r}")
-    control = next((c for c in value if _is_control(c) and not (text and c in TEXT_CONTROLS)), None)
-    if control is not None:
-        allowed = "tabs and line breaks but no other control characters" if text else "no control characters"
-        raise SpecError(source, field, f"{value!r} holds the control character {control!r} (OCIO ends a string at "
-                        f"NUL and writes the others as they are); allowed: {allowed}")
-    return value
-
-
-def _bool(value, source: str, field: str) -> bool:
-    if not isinstance(value, bool):
-        raise SpecError(source, field, f"expected true or false, got {value!r}")
-    return value
-
-
-def _strings(value, source: str, field: str) -> tuple[str, ...]:
-    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-        raise SpecError(source, field, f"expected a list of strings, got {value!r}")
-    return tuple(_string(v, source, f"{field}[{i}]") for i, v in enumerate(value))
-
-
-def _aliases(value, source: str, field: str) -> tuple[str, ...]:
-    aliases = _strings(value, source, field)
-    for i, alias in enumerate(aliases):
-        _label(alias, source, f"{field}[{i}]")
-        _no_comma(alias, source, f"{field}[{i}]")
-    return aliases
-
-
-def _repeated(names) -> tuple[int, int] | None:
-    """The index of the first name that repeats an earlier one (OCIO's names ignore case) and
-    the earlier one's index, or None."""
-    first: dict[str, int] = {}
-    for i, name in enumerate(names):
-        if name.lower() in first:
-            return i, first[name.lower()]
-        first[name.lower()] = i
-    return None
-
-
-def _owners(listed, customs, indexed: bool):
-    """(name, field, owner) for every name and alias of the spec's colour spaces, in order: a library
-    space's field is its entry in colour_spaces (``indexed``: the list names them one by one), a custom
-    space's the name or alias itself."""
-    for i, space in enumerate(listed):
-        field = f"colour_spaces[{i}]" if indexed else "colour_spaces"
-        for name in (space.name, *space.aliases):
-            yield name, field, f"the library colour space {space.name!r} of {field}"
-    for i, space in enumerate(customs):
-        for key, name in (("name", space.name), *((f"aliases[{j}]", a) for j, a in enumerate(space.aliases))):
-            yield name, f"custom_space[{i}].{key}", f"custom_space[{i}] {space.name!r}"
-
-
-def _distinct(owners, source: str) -> None:
-    """Each name or alias names one colour space (OCIO compares names without case): a repeat is
-    the error of the field that brings it second."""
-    first: dict[str, str] = {}
-    for name, field, owner in owners:
-        if name.lower() in first:
-            raise SpecError(source, field, f"{name!r} already names {first[name.lower()]} (OCIO compares names "
-                            "without case); allowed: a name no other colour space has")
-        first[name.lower()] = owner
 
 
 def _tables(raw: dict, key: str, source: str) -> list:
@@ -304,50 +202,6 @@ def _tables(raw: dict, key: str, source: str) -> list:
     if not isinstance(value, list):
         raise SpecError(source, key, f"expected an array of tables ([[{key}]]), got {value!r}")
     return value
-
-
-def _name(table: dict, source: str, field: str) -> str:
-    name = _label(table.get("name", ""), source, f"{field}.name")
-    _no_comma(name, source, f"{field}.name")
-    return name
-
-
-#: Characters OCIO reads as the start of a context variable in the names of colour spaces and
-#: roles (and refuses there with an exception).
-CONTEXT_TOKENS = "$%"
-
-
-def _label(value, source: str, field: str, context: bool = True) -> str:
-    """A name the config carries (a colour space's, an alias, a display's, a role's; a file rule's
-    with ``context`` False): a string of a visible character, without control characters, without
-    spaces at either end (OCIO trims them from names it reads, so the config's name would not be the
-    spec's) and, where OCIO resolves context variables, without $ or %."""
-    name = _string(value, source, field)
-    if not name.strip():
-        raise SpecError(source, field, f"{name!r} is blank; required: a name with a visible character")
-    if name != name.strip():
-        raise SpecError(source, field, f"{name!r} has a space at either end, which OCIO trims from names; "
-                        "allowed: the name without them")
-    token = next((c for c in name if context and c in CONTEXT_TOKENS), None)
-    if token is not None:
-        raise SpecError(source, field, f"{name!r} holds {token!r}, which OCIO reads as a context variable in the "
-                        f"names of colour spaces and roles; allowed: a name without {' or '.join(CONTEXT_TOKENS)}")
-    return name
-
-
-def _toml_key(key: str) -> str:
-    """``key`` as TOML writes it in a dotted field name: bare, or quoted when it holds other
-    characters than letters, digits, '-' and '_' (an empty key among them)."""
-    import json
-
-    return key if re.fullmatch(r"[A-Za-z0-9_-]+", key) else json.dumps(key, ensure_ascii=False)
-
-
-def _no_comma(name: str, source: str, field: str) -> None:
-    """OCIO's lists of names (active displays, inactive spaces) are split at commas."""
-    if "," in name:
-        raise SpecError(source, field, f"{name!r} holds a comma, at which OCIO splits its lists of names (active "
-                        "displays, inactive spaces); allowed: a name without commas")
 
 
 def parse_version(value, source: str) -> tuple[int, int]:
@@ -407,7 +261,7 @@ def _listed(raw: dict, source: str) -> tuple[library.SpaceDef, ...]:
     value = raw.get("colour_spaces", ["*"])
     if value == ["*"]:
         return library.SPACES
-    return tuple(library_def(n, source, f"colour_spaces[{i}]") for i, n in enumerate(_strings(value, source, "colour_spaces")))
+    return tuple(library_def(n, source, f"colour_spaces[{i}]") for i, n in enumerate(labels.strings(value, source, "colour_spaces")))
 
 
 def _kept(listed, keep: tuple[str, ...] | None) -> tuple[ColourSpace, ...]:
@@ -424,7 +278,7 @@ def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut
     if len(given) != 1:
         raise SpecError(source, field, "give exactly one of 'gamut' (a library gamut), 'primaries' or 'primaries_spectra'")
     if "gamut" in table:
-        key = _string(table["gamut"], source, f"{field}.gamut")
+        key = labels.string(table["gamut"], source, f"{field}.gamut")
         if key not in gamuts():
             raise SpecError(source, f"{field}.gamut", f"unknown gamut {key!r}{fields.suggest(key, gamuts())}")
         if "white" in table:
@@ -453,17 +307,17 @@ def _default_encoding(curve) -> str:
 
 
 def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpace:
-    _check_keys(table, CUSTOM_SPACE_KEYS, source, f"{field}.")
-    name = _name(table, source, field)
+    labels.check_keys(table, CUSTOM_SPACE_KEYS, source, f"{field}.")
+    name = labels.table_name(table, source, field)
     curve_name, curve = fields.transfer_function(table.get("transfer", "linear"), base, source, f"{field}.transfer")
     encoding = table.get("encoding", _default_encoding(curve))
     if encoding not in ENCODINGS:
         raise SpecError(source, f"{field}.encoding", f"unknown {encoding!r}; allowed: {', '.join(ENCODINGS)}")
     return ColourSpace(
         name=name, gamut=_gamut(table, source, field, base, name), curve=curve, curve_name=curve_name,
-        aliases=_aliases(table.get("aliases", []), source, f"{field}.aliases"),
-        family=_string(table.get("family", "Custom"), source, f"{field}.family"), encoding=encoding,
-        description=_string(table.get("description", ""), source, f"{field}.description", text=True),
+        aliases=labels.aliases(table.get("aliases", []), source, f"{field}.aliases"),
+        family=labels.string(table.get("family", "Custom"), source, f"{field}.family"), encoding=encoding,
+        description=labels.string(table.get("description", ""), source, f"{field}.description", text=True),
     )
 
 
@@ -475,9 +329,9 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     from generator.colorimetry.curves import CURVES
     from generator.colorimetry.gamuts import gamuts
 
-    _check_keys(table, DISPLAY_KEYS, source, f"{field}.")
-    name = _name(table, source, field)
-    views = _strings(table["views"], source, f"{field}.views") if "views" in table else None
+    labels.check_keys(table, DISPLAY_KEYS, source, f"{field}.")
+    name = labels.table_name(table, source, field)
+    views = labels.strings(table["views"], source, f"{field}.views") if "views" in table else None
     if views == ():
         raise SpecError(source, f"{field}.views", f"empty; allowed: one or more of {', '.join(VIEWS)}, "
                         "or the key left out for the defaults")
@@ -489,7 +343,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     known = {n.lower(): d for d in library.DISPLAYS for n in (d.name, *d.aliases)}
     custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
     if custom:
-        aliases = _aliases(table.get("aliases", []), source, f"{field}.aliases")
+        aliases = labels.aliases(table.get("aliases", []), source, f"{field}.aliases")
         taken = next(((key, n) for key, names in (("name", (name,)), ("aliases", aliases)) for n in names
                       if n.lower() in known), None)
         if taken:
@@ -514,7 +368,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     eotf_name, eotf = fields.transfer_function(table["eotf"], base, source, f"{field}.eotf")
     _check_display_eotf(eotf, source, f"{field}.eotf")
     hdr = eotf_name in ("ST 2084", "HLG")
-    absolute = _bool(table.get("absolute_luminance", False), source, f"{field}.absolute_luminance")
+    absolute = labels.boolean(table.get("absolute_luminance", False), source, f"{field}.absolute_luminance")
     if absolute and hdr:
         raise SpecError(source, f"{field}.absolute_luminance", f"an {eotf_name} signal carries its own luminance; "
                         "allowed: absolute_luminance with an SDR eotf")
@@ -533,8 +387,8 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
         given = next((k for k in ("primaries", "primaries_spectra") if k in table), "gamut")
         _check_bt2020(gamut, source, f"{field}.{given}", f"{field}.{'white' if 'white' in table else given}")
     return Display(name, gamut, eotf, eotf_name, views,
-                   _aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
-                   "hdr-video" if hdr else "sdr-video", _string(table.get("description", ""), source, f"{field}.description", text=True),
+                   labels.aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
+                   "hdr-video" if hdr else "sdr-video", labels.string(table.get("description", ""), source, f"{field}.description", text=True),
                    absolute)
 
 
@@ -577,7 +431,7 @@ def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
 
 def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
     result = []
-    for i, name in enumerate(_strings(value, source, field)):
+    for i, name in enumerate(labels.strings(value, source, field)):
         if name.lower() not in names:
             raise SpecError(source, f"{field}[{i}]", f"{name!r} is not among the colour spaces")
         result.append(name)
@@ -591,7 +445,7 @@ def _roles(table, reference: str, source: str, names: set[str]) -> tuple[tuple[s
     roles = {**DEFAULT_ROLES, **given}
     for role, target in roles.items():
         if not isinstance(target, str):
-            raise SpecError(source, f"roles.{_toml_key(role)}", f"expected a string naming a colour space, got {target!r}")
+            raise SpecError(source, f"roles.{labels.toml_key(role)}", f"expected a string naming a colour space, got {target!r}")
         if target.lower() not in names:
             if role in given:
                 raise SpecError(source, f"roles.{role}", f"{target!r} is not among the colour spaces")
@@ -622,12 +476,12 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
     rules = []
     for i, table in enumerate(_tables(raw, "file_rule", source)):
         field = f"file_rule[{i}]"
-        _check_keys(table, FILE_RULE_KEYS, source, f"{field}.")
+        labels.check_keys(table, FILE_RULE_KEYS, source, f"{field}.")
         for key in ("name", "colour_space"):
             if key not in table:
                 raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
-        rule = FileRule(**{k: _string(v, source, f"{field}.{k}") for k, v in table.items()})
-        _label(rule.name, source, f"{field}.name", context=False)
+        rule = FileRule(**{k: labels.string(v, source, f"{field}.{k}") for k, v in table.items()})
+        labels.label(rule.name, source, f"{field}.name", context=False)
         empty = next((k for k in ("pattern", "extension") if getattr(rule, k) == ""), None)
         if empty:
             raise SpecError(source, f"{field}.{empty}", "empty, which OCIO refuses; allowed: a glob ('*' matches "
