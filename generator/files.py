@@ -114,7 +114,7 @@ def target(path: str | Path, force: bool) -> Path:
             raise Refused(path, f"is a link; pass --force to write the file it points to; {ALLOWED}")
         return _linked_file(path)
     if stat.S_ISDIR(mode):
-        raise CannotWrite(path, IsADirectoryError(errno.EISDIR, os.strerror(errno.EISDIR)))
+        raise Refused(path, f"is a folder; {ALLOWED}")
     if not stat.S_ISREG(mode):
         raise Refused(path, f"exists and is not a regular file (a device, pipe or socket); {ALLOWED}")
     if not force:
@@ -197,26 +197,69 @@ def _replace_folder(staging: Path, folder: Path, check: Callable[[Path], None]) 
     """Rename the complete ``staging`` to ``folder``, after ``check`` allows what is there: in
     one step when nothing (or an empty folder) is there, as the rename itself refuses anything
     else; otherwise what is there is moved aside, checked again there (what it held when
-    moved is what is deleted), and deleted only then; moved back when the check refuses it."""
+    moved is what is deleted), and deleted only then; moved back when the check refuses it.
+    Signals wait until it is done (:func:`_uninterrupted`)."""
     os.chmod(staging, _plain_mode(0o777))
     _unless_stopped()
-    check(folder)
-    try:
-        staging.rename(folder)
-        return
-    except OSError as error:
-        if error.errno not in _OCCUPIED:
+    with _uninterrupted():
+        check(folder)
+        try:
+            staging.rename(folder)
+            return
+        except OSError as error:
+            if error.errno not in _OCCUPIED:
+                raise
+        holder = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent))
+        aside = holder / "previous"
+        try:
+            folder.rename(aside)
+        except BaseException:
+            holder.rmdir()
             raise
-    aside = Path(tempfile.mkdtemp(prefix=f".{folder.name}.old.", dir=folder.parent)) / "previous"
-    folder.rename(aside)
+        try:
+            check(aside)
+            staging.rename(folder)
+        except BaseException:
+            _move_back(aside, folder)
+            raise
+        shutil.rmtree(holder)
+
+
+def _move_back(aside: Path, folder: Path) -> None:
+    """Put what was at ``folder`` back from ``aside``; should that fail, say where it is (it is
+    never deleted)."""
     try:
-        check(aside)
-        staging.rename(folder)
-    except BaseException:
-        aside.rename(folder)  # should this fail, what was there stays in aside: never deleted
+        aside.rename(folder)
         aside.parent.rmdir()
-        raise
-    shutil.rmtree(aside.parent)
+    except OSError as error:
+        raise CannotWrite(folder, OSError(error.errno, f"{error.strerror}; what was there is kept in "
+                                          f"{aside}")) from error
+
+
+@contextmanager
+def _uninterrupted() -> Iterator[None]:
+    """A stop signal arriving while the block runs waits until it is done (:func:`deferring`
+    tells the handler to record it and return), then stops the command: renames into place and
+    the removal of what they replaced are done whole or not begun, never cut between two files
+    or two folders. (Blocking the signals would not do: the kernel hands a signal to any thread
+    that does not block it, and Python then runs the handler at once.)"""
+    global _deferring
+    _deferring += 1
+    try:
+        yield
+    finally:
+        _deferring -= 1
+    if not _deferring:
+        _unless_stopped()
+
+
+#: How many :func:`_uninterrupted` blocks are running.
+_deferring = 0
+
+
+def deferring() -> bool:
+    """Whether a stop signal must wait (recorded by :func:`stop`) until the files are in place."""
+    return _deferring > 0
 
 
 def _plain_mode(full: int = 0o666) -> int:
@@ -227,13 +270,13 @@ def _plain_mode(full: int = 0o666) -> int:
     return full & ~umask
 
 
-def write_files(files: dict[Path, bytes], force: bool = True) -> list[Path]:
+def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
     """Write every file or none: each target is checked (:func:`target`: without ``force`` no
     file may be there) before any is written, each goes to a private temporary sibling first
     and gets a plain write's permissions, and only once all are complete, and every target is
-    checked again, are they renamed into place (the default ``force`` serves a caller that made
-    its own check, as :func:`generator.luts.bake.write` does). Returns the paths written (a
-    link's file where a link was). A file that cannot be written raises :class:`CannotWrite`."""
+    checked again, are they renamed into place, signals held back until all are
+    (:func:`_uninterrupted`). Returns the paths written (a link's file where a link was). A file
+    that cannot be written raises :class:`CannotWrite`."""
     targets = {target(path, force): data for path, data in files.items()}
     staged: list[tuple[str, Path]] = []
     mode = _plain_mode()
@@ -247,11 +290,12 @@ def write_files(files: dict[Path, bytes], force: bool = True) -> list[Path]:
                     stream.write(data)
                 os.chmod(temporary, mode)
         _unless_stopped()
-        for _, path in staged:
-            target(path, force)
-        for temporary, path in staged:
-            with _writing(path):
-                os.replace(temporary, path)
+        with _uninterrupted():
+            for _, path in staged:
+                target(path, force)
+            for temporary, path in staged:
+                with _writing(path):
+                    os.replace(temporary, path)
     finally:
         for temporary, _ in staged:
             if os.path.exists(temporary):
@@ -259,6 +303,6 @@ def write_files(files: dict[Path, bytes], force: bool = True) -> list[Path]:
     return list(targets)
 
 
-def write_atomic(path: Path, data: bytes, force: bool = True) -> Path:
+def write_atomic(path: Path, data: bytes, force: bool) -> Path:
     """One file through :func:`write_files`; returns the path written."""
     return write_files({Path(path): data}, force)[0]

@@ -237,8 +237,8 @@ LUT_CUBE_GREY_CODES = 0.3
 #: the issue's target).
 LUT_CLF_EVERY_SET_CODES = 1.0
 
-#: Least share of white's luminance each of a display's primaries must give (a display's
-#: primaries are lights it emits). The desaturate view's lattice follows ``1 / h_Y``, the
+#: Least share of white's luminance each of a display's primaries must give for a Desaturate
+#: view (the other views take any primaries). The desaturate view's lattice follows ``1 / h_Y``, the
 #: inverse luminance of a hue's saturated colour, which grows steep near a primary of
 #: little luminance (measured through verify, a display with red (0.73, 0.28), green (0.14,
 #: 0.86) and a blue of share 0.0050: 0.43 ten-bit codes against its tolerance of 1; share

@@ -16,7 +16,7 @@ from generator.files import CannotWrite, Refused, Stopped, staged_folder, write_
 def test_a_written_file_is_readable_as_a_plain_write_would_leave_it(tmp_path):
     old = os.umask(0o022)
     try:
-        write_atomic(tmp_path / "sub" / "report.html", b"<html></html>")
+        write_atomic(tmp_path / "sub" / "report.html", b"<html></html>", force=False)
     finally:
         os.umask(old)
     path = tmp_path / "sub" / "report.html"
@@ -31,7 +31,7 @@ def test_files_are_written_all_or_none(tmp_path):
     (tmp_path / "lut.cube").write_bytes(b"old")
     (tmp_path / "blocked").write_bytes(b"")
     with pytest.raises(CannotWrite, match="lut.spi1d: cannot write: Not a directory"):
-        write_files({tmp_path / "lut.cube": b"new", tmp_path / "blocked" / "lut.spi1d": b"shaper"})
+        write_files({tmp_path / "lut.cube": b"new", tmp_path / "blocked" / "lut.spi1d": b"shaper"}, force=True)
     assert (tmp_path / "lut.cube").read_bytes() == b"old"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["blocked", "lut.cube"]
 
@@ -152,7 +152,7 @@ def test_every_target_is_checked_before_any_is_written(tmp_path):
     """A .spi3d and its .spi1d, the .spi1d a folder: the .spi3d is not replaced either."""
     (tmp_path / "pair.spi3d").write_bytes(b"old")
     (tmp_path / "pair.spi1d").mkdir()
-    with pytest.raises(CannotWrite, match="pair.spi1d: cannot write: Is a directory"):
+    with pytest.raises(Refused, match="pair.spi1d: is a folder; allowed: "):
         write_files({tmp_path / "pair.spi3d": b"new", tmp_path / "pair.spi1d": b"shaper"}, force=True)
     assert (tmp_path / "pair.spi3d").read_bytes() == b"old"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pair.spi1d", "pair.spi3d"]
@@ -169,7 +169,7 @@ def test_an_existing_file_is_refused_without_force(tmp_path):
 def test_a_path_naming_no_file_is_refused(path):
     """pathlib had raised ValueError ("has an empty name") on such an output's suffix or name."""
     with pytest.raises(Refused, match="names no file of its own"):
-        write_atomic(path, b"x")
+        write_atomic(path, b"x", force=True)
 
 
 @pytest.fixture
@@ -183,8 +183,53 @@ def stopped():
 
 def test_nothing_is_renamed_into_place_once_a_stop_is_recorded(tmp_path, stopped):
     with pytest.raises(Stopped):
-        write_atomic(tmp_path / "a.clf", b"x")
+        write_atomic(tmp_path / "a.clf", b"x", force=True)
     with pytest.raises(Stopped):
         with staged_folder(tmp_path / "show") as staging:
             (staging / "config.ocio").write_bytes(b"x")
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.fixture
+def cli_sigint():
+    """SIGINT handled as the CLI handles it (the stop recorded, and cleared after)."""
+    from generator.cli import _stop
+
+    previous = signal.signal(signal.SIGINT, _stop)
+    yield
+    signal.signal(signal.SIGINT, previous)
+    files.stop(0)
+
+
+def _signalling(monkeypatch, module, name):
+    """``module.name`` replaced by a function that first sends this process SIGINT, then calls it."""
+    original = getattr(module, name)
+
+    def signalled(*args, **kwargs):
+        os.kill(os.getpid(), signal.SIGINT)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(module, name, signalled)
+
+
+def test_a_signal_during_the_renames_of_a_pair_waits_until_both_are_done(tmp_path, monkeypatch, cli_sigint):
+    """Ctrl-C between the renames of a .spi3d and its .spi1d had left the new lattice paired
+    with the old shaper."""
+    for name in ("pair.spi3d", "pair.spi1d"):
+        (tmp_path / name).write_bytes(b"old")
+    _signalling(monkeypatch, files.os, "replace")
+    with pytest.raises(Stopped):
+        write_files({tmp_path / "pair.spi3d": b"new", tmp_path / "pair.spi1d": b"new"}, force=True)
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == {"pair.spi3d": b"new", "pair.spi1d": b"new"}
+
+
+def test_a_signal_while_a_previous_build_is_removed_leaves_nothing_of_it(tmp_path, monkeypatch, cli_sigint):
+    """Ctrl-C during the removal of the replaced build had left it half-deleted beside the new one."""
+    with staged_folder(tmp_path / "show") as staging:
+        (staging / "config.ocio").write_bytes(b"old")
+    _signalling(monkeypatch, files.shutil, "rmtree")
+    with pytest.raises(Stopped):
+        with staged_folder(tmp_path / "show") as staging:
+            (staging / "config.ocio").write_bytes(b"new")
+    assert [p.name for p in tmp_path.iterdir()] == ["show"]
+    assert (tmp_path / "show" / "config.ocio").read_bytes() == b"new"

@@ -10,7 +10,7 @@ import threading
 
 import click
 
-from generator.files import CannotWrite, Refused, Stopped, stop, stop_signal
+from generator.files import CannotWrite, Refused, Stopped, deferring, stop, stop_signal
 
 # A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy
 # starts it on import, which no module above makes) is not started: numpy's import took
@@ -109,6 +109,8 @@ def _stop(signum, frame) -> None:
     the signal is recorded first, so that nothing is renamed into place even when the exception
     is swallowed (raised inside a weakref callback, it is only printed)."""
     stop(signum)
+    if deferring():  # renaming into place: the rename's end raises Stopped
+        return
     if signum == signal.SIGINT:
         raise KeyboardInterrupt
     raise SystemExit(128 + signum)

@@ -366,7 +366,6 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
         raise SpecError(source, f"{field}.eotf", "required for a custom display: a library curve (sRGB, gamma 2.4, "
                         "ST 2084, HLG, ...) or a transfer family")
     eotf_name, eotf = fields.transfer_function(table["eotf"], base, source, f"{field}.eotf")
-    _check_display_eotf(eotf, source, f"{field}.eotf")
     hdr = eotf_name in ("ST 2084", "HLG")
     absolute = labels.boolean(table.get("absolute_luminance", False), source, f"{field}.absolute_luminance")
     if absolute and hdr:
@@ -382,9 +381,9 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                         f"{ABSOLUTE_PEAK_RANGE[0]:g} to {ABSOLUTE_PEAK_RANGE[1]:g} (code 1 emits the peak)")
     views = views or default_views("hdr-video" if hdr else "sdr-video")
     gamut = _gamut(table, source, field, base, name)
-    _check_display_primaries(gamut, source, f"{field}.{next((k for k in ('primaries', 'primaries_spectra') if k in table), 'gamut')}")
+    given = next((k for k in ("primaries", "primaries_spectra") if k in table), "gamut")
+    _check_views_can_hold(views, eotf, gamut, source, field, given)
     if eotf_name == "HLG":
-        given = next((k for k in ("primaries", "primaries_spectra") if k in table), "gamut")
         _check_bt2020(gamut, source, f"{field}.{given}", f"{field}.{'white' if 'white' in table else given}")
     return Display(name, gamut, eotf, eotf_name, views,
                    labels.aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
@@ -392,29 +391,27 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                    absolute)
 
 
-def _check_display_eotf(eotf, source: str, field: str) -> None:
-    """A display's power-law EOTF darkens code values (exponent at least 1, as a piecewise
-    gamma's already is): below 1, its encoding raises light above the peak to ever larger
-    codes, past what a view's tables hold."""
-    from generator.colorimetry.transfer import Power
-
-    if isinstance(eotf, Power) and eotf.exponent < 1.0:
-        raise SpecError(source, field, f"a display's exponent must be at least 1 (code values darker than light), "
-                        f"got {eotf.exponent:g}")
-
-
-def _check_display_primaries(gamut: Gamut, source: str, field: str) -> None:
-    """A display's primaries are lights it emits, each with at least
-    :data:`~generator.tolerances.DISPLAY_MIN_LUMINANCE_SHARE` of white's luminance."""
+def _check_views_can_hold(views, eotf, gamut: Gamut, source: str, field: str, given: str) -> None:
+    """What two views need of a display (a display's views default to both on SDR): Perceptual an
+    EOTF exponent of at least 1 (below, its encoding raises light above the peak to ever larger
+    codes, past what its shaper table holds: gamma 0.3 asked for petabytes); Desaturate primaries
+    each giving at least :data:`~generator.tolerances.DISPLAY_MIN_LUMINANCE_SHARE` of white's
+    luminance. The other views take any."""
     from generator.colorimetry.matrices import normalised_primary_matrix
+    from generator.colorimetry.transfer import Power
     from generator.tolerances import DISPLAY_MIN_LUMINANCE_SHARE
 
+    if "Perceptual" in views and isinstance(eotf, Power) and eotf.exponent < 1.0:
+        raise SpecError(source, f"{field}.eotf", f"the Perceptual view needs an exponent of at least 1, got "
+                        f"{eotf.exponent:g}; allowed: such an exponent, or views without Perceptual")
+    if "Desaturate" not in views:
+        return
     shares = normalised_primary_matrix(gamut.primaries, gamut.whitepoint)[1]
     for label, (x, y), share in zip(("red", "green", "blue"), gamut.primaries, shares):
         if not share >= DISPLAY_MIN_LUMINANCE_SHARE:
-            raise SpecError(source, field, f"the {label} primary (x {x:g}, y {y:g}) gives {share:.3g} of white's "
-                            f"luminance; a display's primaries need at least {DISPLAY_MIN_LUMINANCE_SHARE:g} (an "
-                            "encoding gamut such as ACES AP0 belongs to a colour space, not a display)")
+            raise SpecError(source, f"{field}.{given}", f"the {label} primary (x {x:g}, y {y:g}) gives {share:.3g} of "
+                            f"white's luminance, and the Desaturate view, which keeps luminance, needs at least "
+                            f"{DISPLAY_MIN_LUMINANCE_SHARE:g}; allowed: such primaries, or views without Desaturate")
 
 
 def _check_bt2020(gamut, source: str, field: str, white: str) -> None:

@@ -220,6 +220,15 @@ def test_the_library_log_curves_and_piecewise_powers_survive_float32():
             assert float32_departure(curve, tolerances.RELATIVE_FLOOR) <= tolerances.CURVE_FLOAT32_RELATIVE / 5, name
 
 
+@pytest.mark.parametrize("offset", [0.0105, 0.0108, 0.011])
+def test_a_log_without_a_toe_is_judged_the_same_however_its_samples_fall_near_the_pole(offset):
+    """Kodak's Cineon curve (black offset 0.0108): near the log's pole the float32 argument's own
+    rounding is unbounded, so it is no departure of the curve's; it had refused 0.0108 alone."""
+    curve = LogCamera(10.0, 300.0 / 1023.0, 685.0 / 1023.0, 1.0 - offset, offset)
+    figures = [float32_departure(curve, tolerances.RELATIVE_FLOOR, n) for n in (4097, 16385)]
+    assert max(figures) <= tolerances.CURVE_FLOAT32_RELATIVE / 5 and abs(figures[0] - figures[1]) < 1e-7
+
+
 @pytest.mark.parametrize("gamma, offset", [(2.4, 0.055), (1.0 / 0.45, 0.099), (2.4, 1e-9), (10.0, 1e-4), (1.0000001, 0.05)])
 def test_the_float32_piecewise_power_is_ocios(gamma, offset):
     """PiecewisePower.float32 is OCIO's CPU renderer of ExponentWithLinearTransform, bit for bit:

@@ -144,9 +144,9 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[display]]\nname = 'Wide'\nprimaries = [[0.73, 0.28], [0.14, 0.86], [0.10, -0.03]]\nwhite = 'D65'\n"
      "eotf = 'sRGB'", "display[0].primaries", "the blue primary (x 0.1, y -0.03) gives -0."),
     ("[[display]]\nname = 'Wide'\nprimaries = [[0.73, 0.28], [0.14, 0.86], [0.10, 0.001]]\nwhite = 'D65'\n"
-     "eotf = 'sRGB'", "display[0].primaries", "need at least 0.005"),
+     "eotf = 'sRGB'", "display[0].primaries", "needs at least 0.005; allowed: such primaries, or views without Desaturate"),
     ("[[display]]\nname = 'Wall'\ngamut = 'Rec.709'\neotf = { family = 'gamma', exponent = 0.3 }",
-     "display[0].eotf", "a display's exponent must be at least 1"),
+     "display[0].eotf", "the Perceptual view needs an exponent of at least 1, got 0.3"),
 ])
 def test_bad_specs_name_the_field_and_what_is_allowed(text, field, words):
     with pytest.raises(SpecError) as error:
@@ -384,6 +384,15 @@ def test_names_shapes_and_versions_ocio_cannot_take_name_the_field(text, field, 
         parse(text)
     assert (error.value.field, "\n" in str(error.value)) == (field, False)
     assert words in error.value.message
+
+
+@pytest.mark.parametrize("display", [
+    "gamut = 'CIE XYZ-E'\neotf = 'gamma 2.6'",  # a DCDM X'Y'Z' display: X and Z carry no luminance
+    "gamut = 'Rec.709'\neotf = { family = 'gamma', exponent = 0.3 }",
+])
+def test_a_display_only_desaturate_or_perceptual_cannot_hold_takes_the_other_views(display):
+    spec = parse(f"[[display]]\nname = 'Cinema'\n{display}\nviews = ['Colorimetric', 'Scale', 'RGC', 'Raw']")
+    assert spec.displays[0].views == ("Colorimetric", "Scale", "RGC", "Raw")
 
 
 def test_a_description_may_hold_tabs_and_line_breaks():
