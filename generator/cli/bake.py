@@ -21,7 +21,7 @@ from generator.cli import NAME, Command, GivenPath, printable
 @click.option("--shaper", type=NAME, default="auto", show_default=True,
               help="auto, none, or a colour space whose curve spaces the nodes.")
 @click.option("--spec", "spec_path", type=GivenPath(dir_okay=False), default=None,
-              help="Spec file (default: the embedded spec).")
+              help="Spec file, or a build's config.ocio (default: the embedded spec).")
 @click.option("-o", "--output", type=GivenPath(), default=None,
               help="File to write (a .spi3d's shaper goes beside it as .spi1d).")
 @click.option("--force", is_flag=True, help="Replace existing files (through a link, the file it points to).")
@@ -43,4 +43,5 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     stale = bake.stale(files, output, fmt)
     bake.write({target(path, force): data for path, data in files.items()}, force, stale)  # every one checked first
     written = ", ".join(printable(path) for path in files)
-    click.echo(f"{written}: {fmt}, {bake.describe(req)} ({time.perf_counter() - started:.2f} s)")
+    order = "; apply the .spi1d, then the .spi3d" if len(files) > 1 else ""
+    click.echo(f"{written}: {fmt}, {bake.describe(req)}{order} ({time.perf_counter() - started:.2f} s)")

@@ -26,6 +26,7 @@ from generator.colorimetry.transfer import Linear, LogCamera, PiecewisePower, Po
 from generator.luts import numbers
 from generator.luts.axes import LogAxis
 from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice
+from generator.luts.names import ascii_text
 from generator.luts.spi1d import format_spi1d
 
 #: The XML namespace of CLF v3 (S-2014-006), which its version attribute "3.0" goes with.
@@ -64,7 +65,7 @@ def resolve_cube(lattice: Lattice, title: str, notes=()) -> bytes:
     else:
         head += [f"LUT_3D_SIZE {lattice.size}\n", f"LUT_3D_INPUT_RANGE {_n(lo)} {_n(hi)}\n"]
     body.append(numbers.table(red_fastest(lattice.cube), lattice.decimals))
-    return "".join(head).encode("ascii") + b"".join(body)
+    return ascii_text("".join(head)).encode("ascii") + b"".join(body)
 
 
 def iridas_cube(lattice: Lattice, title: str, notes=()) -> bytes:
@@ -73,7 +74,7 @@ def iridas_cube(lattice: Lattice, title: str, notes=()) -> bytes:
     lo, hi = lattice.domain
     head = (f'TITLE "{title}"\n{_comments(notes)}LUT_3D_SIZE {lattice.size}\n'
             f"DOMAIN_MIN {_n(lo)} {_n(lo)} {_n(lo)}\nDOMAIN_MAX {_n(hi)} {_n(hi)} {_n(hi)}\n")
-    return head.encode("ascii") + numbers.table(red_fastest(lattice.cube), lattice.decimals)
+    return ascii_text(head).encode("ascii") + numbers.table(red_fastest(lattice.cube), lattice.decimals)
 
 
 def spi3d(lattice: Lattice) -> bytes:

@@ -11,9 +11,23 @@ from collections.abc import Iterable
 DIGEST_DIGITS = 8
 
 
+def _unaccented(text: str) -> str:
+    """``text`` with accents taken off its letters (``Caméra`` as ``Camera``)."""
+    import unicodedata
+
+    return "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
+
+
+def ascii_text(text: str) -> str:
+    """``text`` in ASCII, for files whose formats are: accents taken off, anything else as
+    Python escapes it (``\\u30ab``)."""
+    return _unaccented(text).encode("ascii", "backslashreplace").decode("ascii")
+
+
 def slug(name: str) -> str:
-    """Lower-case ASCII letters and digits of ``name``, runs of anything else as one ``_``."""
-    return re.sub(r"[^a-z0-9]+", "_", name.lower()).strip("_")
+    """Lower-case ASCII letters and digits of ``name`` (accents taken off), runs of anything
+    else as one ``_``."""
+    return re.sub(r"[^a-z0-9]+", "_", _unaccented(name).lower()).strip("_")
 
 
 def _digest(name: str) -> str:

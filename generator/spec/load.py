@@ -70,6 +70,9 @@ DEFAULT_ROLES = {
     "cie_xyz_d65_interchange": "CIE XYZ-D65 - Display-referred", "default_byte": "sRGB Encoded Rec.709 (sRGB)",
     "default_float": "ACEScg", "default_sequencer": "sRGB Encoded Rec.709 (sRGB)",
     "reference": "ACES2065-1",  # the spec's scene_reference unless [roles] says otherwise
+    # scene_linear's target unless [roles] says otherwise: OpenImageIO 2.4 (Debian's oiiotool, OCIO
+    # 2.1) reads an EXR as colour space "Linear", and without this role its --ociodisplay failed.
+    "linear": "ACEScg",
 }
 
 OCIO_MIN_VERSION = (2, 1)
@@ -104,7 +107,8 @@ def _parsed(text: str) -> dict:
 
 
 def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) -> Spec:
-    """Read and validate the spec at ``path``, or the embedded default when None.
+    """Read and validate the spec at ``path`` (a TOML spec, or a build's config.ocio or the
+    resolved spec it stored, ocioforge-spec.json), or the embedded default when None.
 
     With ``keep``, library colour spaces other than those named there, the scene
     reference and the roles' targets are left out: commands that use one space
@@ -114,6 +118,10 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
     if path is None:
         return parse(default_text(), "<default>", Path.cwd(), keep)
     path = Path(path)
+    if path.suffix.lower() in (".ocio", ".json"):  # a build: the resolved spec it stored
+        from generator.spec import resolved
+
+        return resolved.read_beside(path) if path.suffix.lower() == ".ocio" else resolved.read(path)
     try:
         text = path.read_text(encoding="utf-8-sig")  # a BOM some editors write is not TOML
     except OSError as error:
@@ -437,9 +445,11 @@ def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
 
 def _roles(table, reference: str, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
     """Roles by name in lower case, as OCIO keeps them (the namespace check has refused a role
-    given twice in two cases); the reference role follows ``reference`` unless set."""
+    given twice in two cases); the reference role follows ``reference`` and the linear role the
+    scene_linear role unless set."""
     given = {"reference": reference, **{role.lower(): target for role, target in table.items()}}
     roles = {**DEFAULT_ROLES, **given}
+    roles["linear"] = given.get("linear", roles["scene_linear"])
     for role, target in roles.items():
         if not isinstance(target, str):
             raise SpecError(source, f"roles.{labels.toml_key(role)}", f"expected a string naming a colour space, got {target!r}")

@@ -257,11 +257,16 @@ _SPEC_FAMILIES = {"Power": "gamma", "PiecewisePower": "piecewise_gamma", "LogCam
 
 def read_beside(config_path: str | Path) -> Spec:
     """The resolved spec stored beside a built config."""
-    path = Path(config_path).parent / FILENAME
+    return read(Path(config_path).parent / FILENAME)
+
+
+def read(path: Path) -> Spec:
+    """The resolved spec stored at ``path``."""
     try:
         text = path.read_text(encoding="utf-8")
     except OSError:
-        raise SpecError(str(path), "-", "no resolved spec beside the config; build it with ocioforge build") from None
+        raise SpecError(str(path), "-", "no resolved spec here; allowed: a build's config.ocio or the "
+                        f"{FILENAME} beside it (ocioforge build writes both)") from None
     except UnicodeDecodeError:
         raise SpecError(str(path), "-", "not UTF-8 text; allowed: the file a build writes (build again)") from None
     return loads(text, str(path))

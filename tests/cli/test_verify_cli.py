@@ -67,7 +67,7 @@ def test_verify_bad_input_is_one_line_and_exit_2(config, args, message):
 def test_verify_without_the_stored_spec_is_a_clear_error(config):
     (config.parent / "ocioforge-spec.json").unlink()
     result = run("verify", config, "--engines", "ocio", "--quick")
-    assert result.exit_code == 2 and "no resolved spec beside the config" in result.stderr
+    assert result.exit_code == 2 and "no resolved spec here" in result.stderr
 
 
 def test_plot_draws_the_chromaticity_diagram(config, tmp_path):

@@ -43,6 +43,7 @@ def test_spi3d_writes_its_shaper_beside(tmp_path):
     result = CliRunner().invoke(command, ["--from", "ACEScct", "--to", "sRGB - Display", "--size", "9", "-o", str(out)])
     assert result.exit_code == 0, result.output
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.spi1d", "a.spi3d"]
+    assert "apply the .spi1d, then the .spi3d" in result.output  # the .spi3d alone is hundreds of codes off
 
 
 def test_bakes_from_a_spec_whose_inactive_spaces_it_does_not_load(tmp_path):
@@ -213,3 +214,31 @@ def test_shaper_words_in_any_case_and_any_library_space(tmp_path, source, shaper
                                           "-o", str(out)])
     assert result.exit_code == 0, result.output
     assert out.exists()
+
+
+@pytest.mark.parametrize("fmt", ["resolve_cube", "iridas_cube"])
+def test_a_cube_of_spaces_named_in_any_script_writes_an_ascii_header(tmp_path, fmt):
+    """A .cube's header is ASCII (its formats' text): accented names had crashed the writer."""
+    spec = tmp_path / "show.toml"
+    spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+                    '[[custom_space]]\nname = "Caméra A カメラ"\ngamut = "P3-D65"\ntransfer = "ACEScct"\n'
+                    '[[display]]\nname = "Écran LED"\ngamut = "Rec.709"\neotf = "gamma 2.4"\n', encoding="utf-8")
+    out = tmp_path / "a.cube"
+    result = CliRunner().invoke(command, ["--spec", str(spec), "--from", "Caméra A カメラ", "--to", "Écran LED",
+                                          "--format", fmt, "--size", "9", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    head = out.read_bytes().split(b"LUT_3D_SIZE")[0].decode("ascii")
+    assert "Camera A \\u30ab\\u30e1\\u30e9 to Ecran LED" in head
+
+
+def test_a_build_bakes_from_the_spec_it_stored(tmp_path, build_config):
+    """A TD with only the deployed config bakes from it (its config.ocio or ocioforge-spec.json):
+    the same bytes as from the spec that built it."""
+    config = build_config((2, 1))
+    outputs = []
+    for spec in (None, config, config.parent / "ocioforge-spec.json"):
+        outputs.append(tmp_path / f"{len(outputs)}.cube")
+        args = ["--from", "ARRI LogC4", "--to", "sRGB - Display", "--size", "9", "-o", str(outputs[-1])]
+        result = CliRunner().invoke(command, [*args, *(["--spec", str(spec)] if spec else [])])
+        assert result.exit_code == 0, result.output
+    assert outputs[0].read_bytes() == outputs[1].read_bytes() == outputs[2].read_bytes()

@@ -9,7 +9,7 @@ from generator.luts.names import add_file, file_stems, slug
 
 def test_slug_keeps_letters_and_digits():
     assert slug("Rec.2100-PQ - Display") == "rec_2100_pq_display"
-    assert slug('Ünïcode: "quoted"') == "n_code_quoted"
+    assert slug('Ünïcode: "quoted"') == "unicode_quoted"
 
 
 def test_a_name_slugging_apart_keeps_its_slug():
@@ -38,3 +38,8 @@ def test_a_different_file_under_a_name_already_recorded_is_an_error():
     add_file(files, "a.clf", b"1")
     with pytest.raises(ValueError, match="a.clf"):
         add_file(files, "a.clf", b"2")
+
+
+def test_a_slug_takes_accents_off_and_drops_other_scripts():
+    assert slug("Écran LED (Plateau n°2)") == "ecran_led_plateau_n_2"
+    assert slug("カメラ") == ""

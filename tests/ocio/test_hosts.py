@@ -38,3 +38,29 @@ def test_blender_loads_the_config_through_ocio(build_config, default_spec):
     complaints = [l for l in output.splitlines() if "Color management" in l and "Using" not in l
                   and "used by scene not found" not in l and "scene view" not in l]
     assert not complaints, complaints
+
+
+def test_debian_oiiotool_shows_a_float_exr_through_a_view(build_config, default_spec, tmp_path):
+    """OpenImageIO 2.4 (Debian's openimageio-tools, OCIO 2.1) reads an EXR as colour space "Linear":
+    the config's linear role, scene_linear's target, lets its --ociodisplay run (it had failed with
+    "Cannot find source color space named 'Linear'")."""
+    import numpy as np
+    import OpenImageIO as oiio
+
+    from generator import tolerances
+    from generator.colorimetry import reference
+
+    oiiotool = require_program("/usr/bin/oiiotool")
+    colour = (0.18, 0.3, 0.05)
+    pattern = ["--pattern", f"fill:color={','.join(map(str, colour))}", "4x4", "3", "-d", "float"]
+    subprocess.run([oiiotool, *pattern, "-o", str(tmp_path / "in.exr")], check=True, capture_output=True)
+    result = subprocess.run([oiiotool, str(tmp_path / "in.exr"), "--colorconfig", str(build_config((2, 1))),
+                             "--ociodisplay", "sRGB - Display", "Colorimetric", "-d", "float",
+                             "-o", str(tmp_path / "out.exr")], capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stdout + result.stderr
+    shown = oiio.ImageBuf(str(tmp_path / "out.exr")).get_pixels(oiio.FLOAT)[0, 0]
+    display = next(d for d in default_spec.displays if d.name == "sRGB - Display")
+    scene_linear = default_spec.space(dict(default_spec.roles)["scene_linear"])
+    expected = reference.colorimetric_view(default_spec, display,
+                                           reference.to_reference(default_spec, scene_linear, np.array([colour])))[0]
+    assert np.abs(shown - expected).max() <= tolerances.ANALYTIC_RELATIVE * tolerances.RELATIVE_FLOOR, (shown, expected)

@@ -250,5 +250,5 @@ def test_a_wrong_view_transform_fails_every_colorimetric_view(config_copy):
 @pytest.mark.parametrize("missing", ["config.ocio", "ocioforge-spec.json"])
 def test_a_missing_file_is_a_clear_error(config_copy, missing):
     (config_copy.parent / missing).unlink()
-    with pytest.raises(SpecError, match="no such config file|no resolved spec beside the config"):
+    with pytest.raises(SpecError, match="no such config file|no resolved spec here"):
         verify(config_copy, ("ocio",), density="quick")
