@@ -69,7 +69,10 @@ def write_files(spec: Spec, folder: Path) -> BuildResult:
     views = sum(len(cfg.getViews(d)) for d in cfg.getDisplays())
     worst = max((lut.max_relative_error for lut in emitted.luts.values()), default=0.0)
     files = len(emitted.luts) + len(emitted.view_luts) + 2
-    return BuildResult(folder, len(cfg.getColorSpaceNames()), len(cfg.getDisplays()), views, files, worst)
+    import PyOpenColorIO as ocio
+
+    spaces = cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)  # inactive ones too
+    return BuildResult(folder, len(spaces), len(cfg.getDisplays()), views, files, worst)
 
 
 #: What a build writes into its folder: only a folder holding these alone, the resolved spec

@@ -50,6 +50,18 @@ def test_build_writes_a_named_config_and_refuses_to_overwrite(tmp_path, capsys):
     assert run(capsys, "build", "-o", str(out), "--force")[0] == 0
 
 
+def test_build_counts_the_inactive_colour_spaces_it_writes(tmp_path, capsys):
+    (tmp_path / "show.toml").write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "ARRI LogC4", '
+                                        '"sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["ARRI LogC4"]\n')
+    code, stdout, err = run(capsys, "build", str(tmp_path / "show.toml"), "-o", str(tmp_path / "show"))
+    import PyOpenColorIO as ocio
+
+    cfg = ocio.Config.CreateFromFile(str(tmp_path / "show" / "config.ocio"))
+    written = cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)
+    assert code == 0 and f" {len(written)} colour spaces," in stdout, err
+    assert len(written) == len(cfg.getColorSpaceNames()) + 1
+
+
 @pytest.mark.parametrize("foreign", ("footage/shot.exr", "config.ocio"))
 def test_force_replaces_only_a_previous_build(tmp_path, capsys, foreign):
     """A folder holding anything a build does not write (footage), or not holding the resolved
