@@ -81,6 +81,20 @@ class GivenPath(_Given, click.Path):
     """A path: anything but empty."""
 
 
+class ConfigPath(GivenPath):
+    """A built config: its config.ocio, or the build's folder holding one."""
+
+    def convert(self, value, param, ctx):
+        from generator.ocio.write import CONFIG_FILENAME
+
+        if isinstance(value, str) and os.path.isdir(value):
+            if not os.path.isfile(os.path.join(value, CONFIG_FILENAME)):
+                self.fail(f"{value!r} is a folder without {CONFIG_FILENAME}; allowed: a config file, or a "
+                          f"build's folder holding {CONFIG_FILENAME}", param, ctx)
+            value = os.path.join(value, CONFIG_FILENAME)
+        return super().convert(value, param, ctx)
+
+
 class Name(_Given, click.types.StringParamType):
     """A name or keyword: surrounding blanks dropped (as a name is written anywhere else), then
     anything but empty."""

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from generator.cli import Command, GivenPath, printable
+from generator.cli import Command, ConfigPath, GivenPath, printable
 
 FORMATS = ("png", "svg", "pdf")
 
@@ -15,7 +15,7 @@ FORMATS = ("png", "svg", "pdf")
                help="Draw the CIE 1931 xy diagram of CONFIG's colour spaces and displays (from the spec "
                     "stored beside it): the spectral locus and every gamut triangle. With --mapping, the "
                     "verifier's probe colours and where each gamut-mapping method sends them on the first display.")
-@click.argument("config", type=GivenPath(dir_okay=False))
+@click.argument("config", type=ConfigPath(dir_okay=False))
 @click.option("-o", "--output", required=True, type=GivenPath(),
               help="Image to write: .png, .svg or .pdf.")
 @click.option("--mapping", is_flag=True, help="Add the probe colours and each gamut mapping's result.")

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from generator.cli import NAME, Command, GivenPath, fail, printable
+from generator.cli import NAME, Command, ConfigPath, GivenPath, fail, printable
 
 ENGINES = "ocio,oiiotool,ocioconvert,blender"
 
@@ -16,7 +16,7 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
                help="Verify CONFIG (a built config.ocio): probe images through OCIO engines against the "
                     "float64 evaluation of the spec stored beside it. Exit status 1 if any check fails, or if an "
                     "engine --engines names cannot run.")
-@click.argument("config", type=GivenPath(dir_okay=False))
+@click.argument("config", type=ConfigPath(dir_okay=False))
 @click.option("--engines", type=NAME, default=ENGINES, show_default=True,
               help="Comma-separated: ocio (PyOpenColorIO, default and lossless flags), oiiotool, ocioconvert, blender. "
                    "Of the default list, those not installed are reported as not run; named, they must run.")

@@ -176,3 +176,19 @@ def test_an_engine_of_the_default_list_not_installed_is_reported_as_not_run(conf
     named = verify_config(config, ("ocio", "blender"), density="quick", only="ACEScct -> ACES2065-1", strict=True)
     assert default.passed and default.missing == ["blender"]
     assert not named.passed
+
+
+def test_verify_takes_a_builds_folder_for_its_config(config, capsys, tmp_path):
+    from generator.cli import main
+
+    def code(*argv):
+        try:
+            main(list(argv))
+        except SystemExit as exited:
+            return exited.code
+        return 0
+
+    assert code("verify", str(config.parent), "--quick", "--engines", "ocio", "--only", "ACEScct") == 0
+    assert code("verify", str(tmp_path), "--quick", "--engines", "ocio") == 2
+    err = capsys.readouterr().err
+    assert "is a folder without config.ocio; allowed: " in err and err.count("\n") == 1, err
