@@ -157,25 +157,24 @@ def staged_folder(folder: Path, check: Callable[[Path], None] = _no_check) -> It
     :class:`CannotWrite` naming ``folder``."""
     named(folder, "folder")
     missing = [p for p in (folder.parent, *folder.parent.parents) if not p.exists()]
-    done = False
+    done, staging = False, None
     try:
         with _writing(folder):
             _make_folder(folder.parent)
-            staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
+            with _uninterrupted():  # a stop waits until the folder made has its name, to be removed
+                staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
         try:
-            try:
-                yield staging
-            except OSError as error:
-                if _inside(error.filename, staging) or (error.filename is None and error.errno in WRITE_ERRNOS):
-                    raise CannotWrite(folder, error) from error
-                raise
-            with _writing(folder):
-                _replace_folder(staging, folder, check)
-            done = True
-        finally:
-            if staging.exists():
-                shutil.rmtree(staging)
+            yield staging
+        except OSError as error:
+            if _inside(error.filename, staging) or (error.filename is None and error.errno in WRITE_ERRNOS):
+                raise CannotWrite(folder, error) from error
+            raise
+        with _writing(folder):
+            _replace_folder(staging, folder, check)
+        done = True
     finally:
+        if staging is not None and staging.exists():
+            shutil.rmtree(staging)
         if not done:
             _remove_empty(missing)
 
@@ -284,8 +283,9 @@ def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
         for path, data in targets.items():
             with _writing(path):
                 _make_folder(path.parent)
-                handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-                staged.append((temporary, path))
+                with _uninterrupted():  # a stop waits until the file made is listed, to be removed
+                    handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+                    staged.append((temporary, path))
                 with os.fdopen(handle, "wb") as stream:
                     stream.write(data)
                 os.chmod(temporary, mode)

@@ -201,13 +201,18 @@ def cli_sigint():
     files.stop(0)
 
 
-def _signalling(monkeypatch, module, name):
-    """``module.name`` replaced by a function that first sends this process SIGINT, then calls it."""
+def _signalling(monkeypatch, module, name, after=False):
+    """``module.name`` replaced by a function that sends this process SIGINT before calling it
+    (``after``: once it returns)."""
     original = getattr(module, name)
 
     def signalled(*args, **kwargs):
-        os.kill(os.getpid(), signal.SIGINT)
-        return original(*args, **kwargs)
+        if not after:
+            os.kill(os.getpid(), signal.SIGINT)
+        result = original(*args, **kwargs)
+        if after:
+            os.kill(os.getpid(), signal.SIGINT)
+        return result
 
     monkeypatch.setattr(module, name, signalled)
 
@@ -233,3 +238,16 @@ def test_a_signal_while_a_previous_build_is_removed_leaves_nothing_of_it(tmp_pat
             (staging / "config.ocio").write_bytes(b"new")
     assert [p.name for p in tmp_path.iterdir()] == ["show"]
     assert (tmp_path / "show" / "config.ocio").read_bytes() == b"new"
+
+
+@pytest.mark.parametrize("maker", ["mkdtemp", "mkstemp"])
+def test_a_signal_as_a_temporary_is_made_leaves_nothing(tmp_path, monkeypatch, cli_sigint, maker):
+    """SIGTERM just as the staging folder had been made (the moment a test waits for) had left it."""
+    _signalling(monkeypatch, files.tempfile, maker, after=True)
+    with pytest.raises(Stopped):
+        if maker == "mkdtemp":
+            with staged_folder(tmp_path / "show") as staging:
+                (staging / "config.ocio").write_bytes(b"new")
+        else:
+            write_atomic(tmp_path / "a.clf", b"new", force=False)
+    assert list(tmp_path.iterdir()) == []
