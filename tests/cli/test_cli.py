@@ -398,3 +398,13 @@ def click_command_raising(fn):
         fn()
 
     return command
+
+
+def test_plot_maps_onto_the_display_asked_for(build_config, tmp_path, capsys):
+    config = build_config((2, 1))
+    first, chosen = tmp_path / "first.png", tmp_path / "pq.png"
+    assert run(capsys, "plot", str(config), "-o", str(first), "--mapping")[0] == 0
+    assert run(capsys, "plot", str(config), "-o", str(chosen), "--mapping", "--display", "rec.2100-pq - display")[0] == 0
+    assert first.read_bytes() != chosen.read_bytes()
+    code, _, err = run(capsys, "plot", str(config), "-o", str(tmp_path / "x.png"), "--mapping", "--display", "Nope")
+    assert code == 2 and err.count("\n") == 1 and "unknown display 'Nope'; allowed: sRGB - Display" in err, err
