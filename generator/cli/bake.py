@@ -20,8 +20,8 @@ from generator.cli import NAME, Command, GivenPath, printable
               help="resolve_cube, iridas_cube, spi3d or clf (default: from the suffix).")
 @click.option("--shaper", type=NAME, default="auto", show_default=True,
               help="auto, none, or a colour space whose curve spaces the nodes.")
-@click.option("--spec", "spec_path", type=GivenPath(dir_okay=False), default=None,
-              help="Spec file, or a build's config.ocio (default: the embedded spec).")
+@click.option("--spec", "spec_path", type=GivenPath(), default=None,
+              help="Spec file, or a build (its folder or config.ocio; default: the embedded spec).")
 @click.option("-o", "--output", type=GivenPath(), default=None,
               help="File to write (a .spi3d's shaper goes beside it as .spi1d).")
 @click.option("--force", is_flag=True, help="Replace existing files (through a link, the file it points to).")

@@ -107,8 +107,8 @@ def _parsed(text: str) -> dict:
 
 
 def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) -> Spec:
-    """Read and validate the spec at ``path`` (a TOML spec, or a build's config.ocio or the
-    resolved spec it stored, ocioforge-spec.json), or the embedded default when None.
+    """Read and validate the spec at ``path`` (a TOML spec; or a build's folder, its config.ocio
+    or the resolved spec it stored, ocioforge-spec.json), or the embedded default when None.
 
     With ``keep``, library colour spaces other than those named there, the scene
     reference and the roles' targets are left out: commands that use one space
@@ -118,10 +118,11 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
     if path is None:
         return parse(default_text(), "<default>", Path.cwd(), keep)
     path = Path(path)
-    if path.suffix.lower() in (".ocio", ".json"):  # a build: the resolved spec it stored
+    if path.is_dir() or path.suffix.lower() in (".ocio", ".json"):  # a build: the resolved spec it stored
         from generator.spec import resolved
 
-        return resolved.read_beside(path) if path.suffix.lower() == ".ocio" else resolved.read(path)
+        return resolved.read(path / resolved.FILENAME if path.is_dir() else path.parent / resolved.FILENAME
+                             if path.suffix.lower() == ".ocio" else path)
     try:
         text = path.read_text(encoding="utf-8-sig")  # a BOM some editors write is not TOML
     except OSError as error:
@@ -163,7 +164,8 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
                         "allowed: each display once")
     view_spaces = labels.boolean(raw["display_view_spaces"] if "display_view_spaces" in raw
                         else embedded_default("display_view_spaces"), source, "display_view_spaces")
-    taken = namespace.generated(displays, view_spaces, tuple(DEFAULT_ROLES), source, tuple(roles))
+    defaults = _default_roles(all_names, displays, roles)
+    taken = namespace.generated(displays, view_spaces, tuple(defaults), source, tuple(roles))
     namespace.check_free(listed, customs, taken, source)
     every = {n.lower() for n in all_names}
     if reference.lower() not in every:
@@ -187,7 +189,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles(roles, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
+        roles=_roles(roles, defaults, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
         file_rules=_file_rules(raw, source, every | set(taken)),
         inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
         display_view_spaces=view_spaces,
@@ -443,13 +445,24 @@ def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
     return result
 
 
-def _roles(table, reference: str, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
+def _default_roles(names, displays, spec_roles) -> dict[str, str]:
+    """The default roles a spec gets: all of :data:`DEFAULT_ROLES` but the linear role where a
+    colour space or display is called "linear" and the spec sets no such role (OpenImageIO finds
+    that space by its name; the role would take the name from it)."""
+    called = {n.lower() for n in names} | {n.lower() for d in displays for n in (d.name, *d.aliases)}
+    if "linear" in called and "linear" not in {r.lower() for r in spec_roles}:
+        return {role: target for role, target in DEFAULT_ROLES.items() if role != "linear"}
+    return DEFAULT_ROLES
+
+
+def _roles(table, defaults: dict, reference: str, source: str, names: set[str]) -> tuple[tuple[str, str], ...]:
     """Roles by name in lower case, as OCIO keeps them (the namespace check has refused a role
-    given twice in two cases); the reference role follows ``reference`` and the linear role the
-    scene_linear role unless set."""
+    given twice in two cases): ``defaults`` (:func:`_default_roles`), the reference role following
+    ``reference`` and the linear role the scene_linear role unless set."""
     given = {"reference": reference, **{role.lower(): target for role, target in table.items()}}
-    roles = {**DEFAULT_ROLES, **given}
-    roles["linear"] = given.get("linear", roles["scene_linear"])
+    roles = {**defaults, **given}
+    if "linear" in defaults and "linear" not in given:
+        roles["linear"] = roles["scene_linear"]
     for role, target in roles.items():
         if not isinstance(target, str):
             raise SpecError(source, f"roles.{labels.toml_key(role)}", f"expected a string naming a colour space, got {target!r}")

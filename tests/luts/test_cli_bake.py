@@ -236,9 +236,9 @@ def test_a_build_bakes_from_the_spec_it_stored(tmp_path, build_config):
     the same bytes as from the spec that built it."""
     config = build_config((2, 1))
     outputs = []
-    for spec in (None, config, config.parent / "ocioforge-spec.json"):
+    for spec in (None, config, config.parent / "ocioforge-spec.json", config.parent):
         outputs.append(tmp_path / f"{len(outputs)}.cube")
         args = ["--from", "ARRI LogC4", "--to", "sRGB - Display", "--size", "9", "-o", str(outputs[-1])]
         result = CliRunner().invoke(command, [*args, *(["--spec", str(spec)] if spec else [])])
         assert result.exit_code == 0, result.output
-    assert outputs[0].read_bytes() == outputs[1].read_bytes() == outputs[2].read_bytes()
+    assert len({path.read_bytes() for path in outputs}) == 1

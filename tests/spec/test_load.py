@@ -397,3 +397,13 @@ def test_a_display_only_desaturate_or_perceptual_cannot_hold_takes_the_other_vie
 
 def test_a_description_may_hold_tabs_and_line_breaks():
     assert parse('description = """\nline one\n\tline two\n"""').description == "line one\n\tline two\n"
+
+
+@pytest.mark.parametrize("named", ["name = 'Linear'", "name = 'My Lin'\naliases = ['linear']"])
+def test_a_space_called_linear_keeps_its_name_and_takes_the_linear_roles_place(named):
+    """OpenImageIO 2.4 looks for "Linear": the default linear role (scene_linear's target) is
+    left out where a colour space has that name, which built before the role existed."""
+    spec = parse(f"[[custom_space]]\n{named}\ngamut = 'AP1'\n")
+    assert "linear" not in dict(spec.roles) and spec.space("linear")
+    assert dict(parse("").roles)["linear"] == dict(parse("").roles)["scene_linear"]
+    assert dict(parse("[roles]\nscene_linear = 'ACES2065-1'").roles)["linear"] == "ACES2065-1"
