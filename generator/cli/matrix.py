@@ -7,7 +7,7 @@ import json
 import click
 import numpy as np
 
-from generator.cli import NAME, Command
+from generator.cli import NAME, Command, GivenPath
 
 FORMATS = ("plain", "json", "nuke", "ocio")
 
@@ -66,9 +66,11 @@ def render(matrix, fmt: str, label: str) -> str:
                    "behind each camera gamut's published matrices, else Bradford, through ACES2065-1 as a config "
                    "with the default spec converts).")
 @click.option("--format", "fmt", type=click.Choice(FORMATS, case_sensitive=False), default="plain", show_default=True)
-def command(src, dst, cat, fmt):
+@click.option("--spec", "spec_path", type=GivenPath(), default=None,
+              help="Take SRC and DST from a spec or a build (its folder or config.ocio), converted as its config "
+                   "does (default: the library's spaces).")
+def command(src, dst, cat, fmt, spec_path):
     from generator.colorimetry.matrices import CATS, rgb_to_rgb
-    from generator.spec.load import library_space
     from generator.spec.schema import SpecError
 
     if cat is not None:
@@ -76,13 +78,39 @@ def command(src, dst, cat, fmt):
         if chosen is None:
             raise SpecError("ocioforge matrix", "--cat", f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
         cat = chosen
-    spaces = [library_space(name, "ocioforge matrix", which) for name, which in ((src, "SRC"), (dst, "DST"))]
+    spec = None
+    if spec_path is not None:
+        from generator.spec import load
+
+        spec = load.load(spec_path)
+    spaces = [_space(spec, name, which) for name, which in ((src, "SRC"), (dst, "DST"))]
     for space, which in zip(spaces, ("SRC", "DST")):
         if space.gamut is None:
             raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
     if spaces[0].gamut == spaces[1].gamut:  # one gamut: exactly the identity, not a product with its inverse
         matrix = np.eye(3)
+    elif cat:
+        matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat)
+    elif spec is not None:
+        from generator.colorimetry.reference import space_matrix
+
+        matrix = np.linalg.solve(space_matrix(spec, spaces[1]), space_matrix(spec, spaces[0]))
     else:
-        matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat) if cat else published_matrix(*(s.gamut for s in spaces))
+        matrix = published_matrix(*(s.gamut for s in spaces))
     label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
     click.echo(render(matrix, fmt, label))
+
+
+def _space(spec, name: str, which: str):
+    """The colour space ``name`` of ``spec`` (a library space without one)."""
+    from generator.spec.fields import suggest
+    from generator.spec.load import library_space
+    from generator.spec.schema import SpecError
+
+    if spec is None:
+        return library_space(name, "ocioforge matrix", which)
+    try:
+        return spec.space(name)
+    except KeyError:
+        raise SpecError("ocioforge matrix", which, f"no colour space {name!r} in {spec.source}"
+                        f"{suggest(name, spec.space_names)}; allowed: one of its colour spaces") from None

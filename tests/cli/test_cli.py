@@ -408,3 +408,22 @@ def test_plot_maps_onto_the_display_asked_for(build_config, tmp_path, capsys):
     assert first.read_bytes() != chosen.read_bytes()
     code, _, err = run(capsys, "plot", str(config), "-o", str(tmp_path / "x.png"), "--mapping", "--display", "Nope")
     assert code == 2 and err.count("\n") == 1 and "unknown display 'Nope'; allowed: sRGB - Display" in err, err
+
+
+def test_matrix_takes_a_shows_own_spaces_as_its_config_converts(tmp_path, capsys):
+    from generator.colorimetry import reference
+    from generator.spec import load
+
+    (tmp_path / "show.toml").write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "ARRI LogC4", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = "Caméra B"\nprimaries = [[0.70, 0.29], [0.17, 0.80], [0.13, 0.05]]\nwhite = "D65"\n',
+        encoding="utf-8")
+    spec = load.load(tmp_path / "show.toml")
+    code, out, err = run(capsys, "matrix", "Caméra B", "ACEScg", "--spec", str(tmp_path / "show.toml"), "--format", "json")
+    expected = np.linalg.solve(reference.space_matrix(spec, spec.space("ACEScg")),
+                               reference.space_matrix(spec, spec.space("Caméra B")))
+    assert code == 0 and np.allclose(json.loads(out)["matrix"], expected, rtol=0, atol=1e-15), err
+    library = run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "json")[1]
+    assert run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "json", "--spec", str(tmp_path / "show.toml"))[1] == library
+    code, _, err = run(capsys, "matrix", "Nope", "ACEScg", "--spec", str(tmp_path / "show.toml"))
+    assert code == 2 and "no colour space 'Nope' in show.toml" in err and err.count("\n") == 1, err
