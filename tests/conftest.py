@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import os
 import shutil
+import socket
+import stat
 from pathlib import Path
 
 import pytest
@@ -16,10 +18,10 @@ NEWEST = newest_ocio_version()
 VERSIONS = [(2, minor) for minor in range(1, NEWEST[1] + 1)]
 
 
-def host_missing(message: str) -> None:
+def host_missing(message: str, remedy: str = "CI installs it: see .ci/run") -> None:
     """A host the test needs is absent: under CI=true that fails the test, elsewhere it is skipped
     with ``message`` (reported as not run, never as passed)."""
-    message = f"{message} (CI installs it: see .ci/run)"
+    message = f"{message} ({remedy})"
     if ON_CI:
         pytest.fail(message)
     pytest.skip(message)
@@ -80,3 +82,19 @@ def slugging_alike(tmp_path_factory):
     spec = for_folder(load.load(folder / "alike.toml"), folder / "config", (2, 1))
     build(spec, folder / "config")
     return spec, folder / "config"
+
+
+def special_file(path: Path, kind: str) -> Path:
+    """A file at ``path`` that is not a regular one: a FIFO, a socket, or a character device like
+    /dev/null (which needs root, as CI runs: see :func:`host_missing` elsewhere)."""
+    if kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "socket":
+        with socket.socket(socket.AF_UNIX) as listener:
+            listener.bind(str(path))
+    else:
+        try:
+            os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, 3))
+        except PermissionError:
+            host_missing("making a device needs root", "CI runs as root")
+    return path

@@ -11,6 +11,7 @@ import pytest
 
 from generator import files
 from generator.files import CannotWrite, Refused, Stopped, staged_folder, write_atomic, write_files
+from tests.conftest import special_file
 
 
 def test_a_written_file_is_readable_as_a_plain_write_would_leave_it(tmp_path):
@@ -103,23 +104,10 @@ def test_what_is_moved_aside_is_checked_there_and_moved_back_when_refused(tmp_pa
     assert sorted(p.name for p in tmp_path.rglob("*")) == ["config.ocio", "show"]
 
 
-def _special(tmp_path, kind):
-    """A FIFO, or (as root) a character device like /dev/null, in ``tmp_path``."""
-    path = tmp_path / f"{kind}.png"
-    if kind == "fifo":
-        os.mkfifo(path)
-    else:
-        try:
-            os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, 3))
-        except PermissionError:
-            pytest.skip("making a device needs root")
-    return path
-
-
-@pytest.mark.parametrize("kind", ("fifo", "device"))
+@pytest.mark.parametrize("kind", ("fifo", "socket", "device"))
 @pytest.mark.parametrize("force", (False, True))
 def test_only_a_regular_file_is_replaced(tmp_path, kind, force):
-    path = _special(tmp_path, kind)
+    path = special_file(tmp_path / f"{kind}.png", kind)
     with pytest.raises(Refused, match="is not a regular file"):
         write_atomic(path, b"x", force)
     assert not path.is_file() and path.exists()

@@ -271,8 +271,8 @@ def stale(files: dict[Path, bytes], output: str | Path, fmt: str) -> list[Path]:
 
 
 def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | None = None) -> None:
-    """Write every file or none (:func:`generator.files.write_files`), after checking each
-    path's folder exists and, without ``force``, that no file is there; then, with ``force``,
+    """Write every file or none (:func:`generator.files.write_files`, which refuses what is there
+    without ``force``), after checking each path's folder exists; then, with ``force``,
     delete ``remove`` (:func:`stale`: refused without it, as the files it replaces are)."""
     for path in remove or ():
         if not force:
@@ -282,8 +282,6 @@ def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | No
         if not path.parent.is_dir():
             what = "is a file, not a folder" if path.parent.exists() else "does not exist"
             raise SpecError(WHERE, "-o", f"folder {str(path.parent)!r} {what}")
-        if path.exists() and not force:
-            raise SpecError(WHERE, "-o", f"{str(path)!r} exists; pass --force to replace it")
     write_files(files, force)
     for path in remove or ():
         path.unlink(missing_ok=True)

@@ -121,8 +121,8 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
     if path.is_dir() or path.suffix.lower() in (".ocio", ".json"):  # a build: the resolved spec it stored
         from generator.spec import resolved
 
-        return resolved.read(path / resolved.FILENAME if path.is_dir() else path.parent / resolved.FILENAME
-                             if path.suffix.lower() == ".ocio" else path)
+        folder = path if path.is_dir() else path.parent
+        return resolved.read(path if path.suffix.lower() == ".json" else folder / resolved.FILENAME)
     try:
         text = path.read_text(encoding="utf-8-sig")  # a BOM some editors write is not TOML
     except OSError as error:

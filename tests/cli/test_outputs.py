@@ -4,13 +4,13 @@ line and exit status 2 for a path that cannot be used."""
 
 from __future__ import annotations
 
-import os
 import shutil
 import stat
 
 import pytest
 
 from generator.cli import main
+from tests.conftest import special_file
 
 BAKE = ("bake", "--from", "ACEScg", "--to", "sRGB - Display", "--size", "9")
 
@@ -83,24 +83,14 @@ def test_a_folder_of_footage_is_said_not_to_be_a_build_without_force_too(tmp_pat
     assert one_line(code, err, "holds 'shot.exr', which no build writes") and "pass --force" not in err, err
 
 
-def _special(path, kind):
-    if kind == "fifo":
-        os.mkfifo(path)
-        return path
-    try:
-        os.mknod(path, stat.S_IFCHR | 0o666, os.makedev(1, 3))  # as /dev/null
-    except PermissionError:
-        pytest.skip("making a device needs root")
-    return path
-
-
-@pytest.mark.parametrize("kind", ("fifo", "device"))
+@pytest.mark.parametrize("kind", ("fifo", "socket", "device"))
 @pytest.mark.parametrize("argv", (["plot", "{config}", "-o", "{out}.png", "--force"],
                                   [*BAKE, "-o", "{out}.clf", "--force"],
                                   ["init", "{out}.toml", "--force"]))
 def test_a_device_or_pipe_is_never_replaced(config, tmp_path, capsys, kind, argv):
     out = tmp_path / "out"
-    special = _special(tmp_path / f"out{argv[argv.index('-o') + 1][5:] if '-o' in argv else '.toml'}", kind)
+    suffix = next(a for a in argv if a.startswith("{out}")).removeprefix("{out}")
+    special = special_file(tmp_path / f"out{suffix}", kind)
     code, _, err = run(capsys, *(a.format(config=config, out=out) for a in argv))
     assert one_line(code, err, "is not a regular file"), err
     assert not special.is_file() and stat.S_IFMT(special.lstat().st_mode) != stat.S_IFREG
