@@ -1,19 +1,20 @@
-"""ocioforge info: everything about one library colour space."""
+"""ocioforge info: everything about one colour space, of the library or of a spec."""
 
 from __future__ import annotations
 
 import click
 
-from generator.cli import NAME, Command
+from generator.cli import NAME, Command, GivenPath
 
 
-def _lines(space, spec) -> list[str]:
+def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
+    """What ``info`` prints; ``target``, the OCIO version a given spec builds, is marked."""
     import numpy as np
 
     from generator.colorimetry import reference
     from generator.spec.load import newest_ocio_version
 
-    out = [f"name:      {space.name}", f"aliases:   {', '.join(space.aliases)}",
+    out = [f"name:      {space.name}", f"aliases:   {', '.join(space.aliases) or '-'}",
            f"family:    {space.family}", f"encoding:  {space.encoding}"]
     if space.description:
         out.append(f"about:     {space.description}")
@@ -29,7 +30,7 @@ def _lines(space, spec) -> list[str]:
     newest = newest_ocio_version()
     for minor in range(1, newest[1] + 1):
         how = _expression(space, (2, minor))
-        out.append(f"OCIO 2.{minor}: {how}")
+        out.append(f"OCIO 2.{minor}: {how}{'  (the spec builds this version)' if target == (2, minor) else ''}")
     return out
 
 
@@ -48,10 +49,14 @@ def _expression(space, version) -> str:
     return f"analytic ({type(space.curve).__name__})"
 
 
-@click.command(cls=Command, help="Describe a library colour space: gamut, white, curve, matrix, how OCIO expresses it.")
+@click.command(cls=Command, help="Describe a colour space: gamut, white, curve, matrix, how OCIO expresses it.")
 @click.argument("name", type=NAME)
-def command(name):
-    from generator.spec.load import library_space, load
+@click.option("--spec", "spec_path", type=GivenPath(), default=None,
+              help="Take NAME from a spec or a build (its folder or config.ocio), with its scene reference and "
+                   "adaptation (default: the library's spaces, the default spec's).")
+def command(name, spec_path):
+    from generator.spec.load import load, named_space
 
-    space = library_space(name, "ocioforge info", "NAME")
-    click.echo("\n".join(_lines(space, load())))
+    spec = load(spec_path)
+    space = named_space(None if spec_path is None else spec, name, "ocioforge info", "NAME")
+    click.echo("\n".join(_lines(space, spec, None if spec_path is None else spec.ocio_version)))

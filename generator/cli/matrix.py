@@ -78,12 +78,10 @@ def command(src, dst, cat, fmt, spec_path):
         if chosen is None:
             raise SpecError("ocioforge matrix", "--cat", f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
         cat = chosen
-    spec = None
-    if spec_path is not None:
-        from generator.spec import load
+    from generator.spec import load
 
-        spec = load.load(spec_path)
-    spaces = [_space(spec, name, which) for name, which in ((src, "SRC"), (dst, "DST"))]
+    spec = None if spec_path is None else load.load(spec_path)
+    spaces = [load.named_space(spec, name, "ocioforge matrix", which) for name, which in ((src, "SRC"), (dst, "DST"))]
     for space, which in zip(spaces, ("SRC", "DST")):
         if space.gamut is None:
             raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
@@ -100,17 +98,3 @@ def command(src, dst, cat, fmt, spec_path):
     label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
     click.echo(render(matrix, fmt, label))
 
-
-def _space(spec, name: str, which: str):
-    """The colour space ``name`` of ``spec`` (a library space without one)."""
-    from generator.spec.fields import suggest
-    from generator.spec.load import library_space
-    from generator.spec.schema import SpecError
-
-    if spec is None:
-        return library_space(name, "ocioforge matrix", which)
-    try:
-        return spec.space(name)
-    except KeyError:
-        raise SpecError("ocioforge matrix", which, f"no colour space {name!r} in {spec.source}"
-                        f"{suggest(name, spec.space_names)}; allowed: one of its colour spaces") from None

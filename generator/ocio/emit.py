@@ -194,7 +194,10 @@ def _display_view_spaces(spec: Spec, cfg: ocio.Config) -> None:
 def _file_rules(spec: Spec) -> ocio.FileRules:
     rules = ocio.FileRules()
     for index, rule in enumerate(r for r in spec.file_rules if r.name != "Default"):
-        rules.insertRule(index, rule.name, rule.colour_space, rule.pattern, rule.extension)
+        if rule.regex:
+            rules.insertRule(index, rule.name, rule.colour_space, rule.regex)
+        else:
+            rules.insertRule(index, rule.name, rule.colour_space, rule.pattern, rule.extension)
     rules.setDefaultRuleColorSpace(spec.file_rules[-1].colour_space)
     return rules
 

@@ -31,7 +31,7 @@ DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "primaries_spe
 
 #: Peak luminance (cd/m²) an SDR display driven in absolute luminance may have.
 ABSOLUTE_PEAK_RANGE = (1.0, 10000.0)
-FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension")
+FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension", "regex")
 
 #: Keys a library display takes: its gamut, EOTF, luminance, aliases and description are the library's.
 LIBRARY_DISPLAY_KEYS = ("name", "views")
@@ -191,7 +191,8 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         displays=displays,
         roles=_roles(roles, defaults, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
         file_rules=_file_rules(raw, source, every | set(taken)),
-        inactive=tuple(n for n in _name_list(raw.get("inactive", []), source, "inactive", every) if n.lower() in present),
+        inactive=_inactive(raw.get("inactive", []), source, namespace.colour_spaces((*listed, *customs), displays,
+                                                                                   view_spaces), left_out),
         display_view_spaces=view_spaces,
         source=recorded(source),
         left_out=left_out,
@@ -250,6 +251,20 @@ def library_def(name: str, source: str, field: str) -> library.SpaceDef:
 
 def library_space(name: str, source: str, field: str) -> ColourSpace:
     return from_library(library_def(name, source, field))
+
+
+def named_space(spec: Spec | None, name: str, source: str, field: str) -> ColourSpace:
+    """The colour space ``name`` (or an alias) of ``spec``, or of the library without one;
+    a SpecError of ``source``'s ``field`` otherwise."""
+    from generator.spec.fields import suggest
+
+    if spec is None:
+        return library_space(name, source, field)
+    try:
+        return spec.space(name)
+    except KeyError:
+        raise SpecError(source, field, f"no colour space {name!r} in {spec.source}{suggest(name, spec.space_names)}; "
+                        "allowed: one of its colour spaces") from None
 
 
 def from_library(space: library.SpaceDef) -> ColourSpace:
@@ -436,13 +451,22 @@ def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
                             "y 0.3290); allowed: gamut = \"Rec.2020\" (or its primaries and white)")
 
 
-def _name_list(value, source: str, field: str, names: set[str]) -> list[str]:
-    result = []
-    for i, name in enumerate(labels.strings(value, source, field)):
+def _inactive(value, source: str, names: dict[str, str], left_out: tuple[str, ...]) -> tuple[str, ...]:
+    """The colour spaces kept out of menus (``names``: every name and alias of the config's,
+    generated ones too, to the space's own name), each by its own name: OCIO takes no alias
+    there, and a space named by its alias stayed in every menu. Those a load ``left_out``
+    are dropped."""
+    chosen: dict[str, int] = {}
+    for i, name in enumerate(labels.strings(value, source, "inactive")):
         if name.lower() not in names:
-            raise SpecError(source, f"{field}[{i}]", f"{name!r} is not among the colour spaces")
-        result.append(name)
-    return result
+            raise SpecError(source, f"inactive[{i}]", f"{name!r} is not among the colour spaces; allowed: a colour "
+                            "space of the spec, a display's or a '<view> - <display>' space, by name or alias")
+        own = names[name.lower()]
+        if own in chosen:
+            raise SpecError(source, f"inactive[{i}]", f"{name!r} names {own!r}, as inactive[{chosen[own]}] does; "
+                            "allowed: each colour space once")
+        chosen[own] = i
+    return tuple(own for own in chosen if own not in left_out)
 
 
 def _default_roles(names, displays, spec_roles) -> dict[str, str]:
@@ -489,6 +513,18 @@ def _check_glob(rule: FileRule, source: str, field: str) -> None:
                         "allowed: a glob of *, ? and complete [...] sets") from None
 
 
+def _check_regex(rule: FileRule, source: str, field: str) -> None:
+    """A rule's regular expression as OCIO reads it (ECMAScript, matched against the whole
+    path), checked by OCIO itself: Python's dialect differs."""
+    import PyOpenColorIO as ocio
+
+    try:
+        ocio.FileRules().insertRule(0, "check", "check", rule.regex)
+    except Exception as error:  # PyOpenColorIO.Exception
+        raise SpecError(source, f"{field}.regex", f"OpenColorIO cannot read it ({str(error).splitlines()[0]}); "
+                        "allowed: a non-empty ECMAScript regular expression") from None
+
+
 def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]:
     """The file rules; each names a colour space, display or role of the config (``names``)."""
     if "file_rule" not in raw:  # the embedded default's, as for every key left out
@@ -500,22 +536,33 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
         for key in ("name", "colour_space"):
             if key not in table:
                 raise SpecError(source, f"{field}.{key}", "required: a file rule has a name and a colour_space")
-        rule = FileRule(**{k: labels.string(v, source, f"{field}.{k}") for k, v in table.items()})
+        values = {k: labels.string(v, source, f"{field}.{k}") for k, v in table.items()}
+        if "regex" in values:
+            glob = next((k for k in ("pattern", "extension") if k in values), None)
+            if glob:
+                raise SpecError(source, f"{field}.{glob}", "a rule matches by its regex or by pattern and extension, "
+                                "not both; allowed: regex alone, or pattern and extension")
+            values.update(pattern="", extension="")
+        rule = FileRule(**values)
         labels.label(rule.name, source, f"{field}.name", context=False)
-        empty = next((k for k in ("pattern", "extension") if getattr(rule, k) == ""), None)
+        empty = next((k for k in ("pattern", "extension") if k in table and getattr(rule, k) == ""), None)
         if empty:
             raise SpecError(source, f"{field}.{empty}", "empty, which OCIO refuses; allowed: a glob ('*' matches "
                             "every file), or the key left out")
-        _check_glob(rule, source, field)
+        if "regex" in table:
+            _check_regex(rule, source, field)
+        else:
+            _check_glob(rule, source, field)
         if rule.name.lower() == "colorspacenamepathsearch":
             raise SpecError(source, f"{field}.name", "OCIO reserves 'ColorSpaceNamePathSearch' for its rule that "
                             "finds a colour space's name in the file path, which takes no colour_space; allowed: "
                             "another name")
         if rule.name.lower() in (r.name.lower() for r in rules):
             raise SpecError(source, f"{field}.name", f"{rule.name!r} names an earlier rule too; allowed: one rule a name")
-        if rule.name == "Default" and ({"pattern", "extension"} & set(table)):
-            raise SpecError(source, f"{field}.{'pattern' if 'pattern' in table else 'extension'}",
-                            "the Default rule matches every file; allowed: name and colour_space alone")
+        matching = next((k for k in ("pattern", "extension", "regex") if k in table), None)
+        if rule.name == "Default" and matching:
+            raise SpecError(source, f"{field}.{matching}", "the Default rule matches every file; allowed: name and "
+                            "colour_space alone")
         if rule.colour_space.lower() not in names:
             raise SpecError(source, f"{field}.colour_space", f"{rule.colour_space!r} is not among the colour spaces; "
                             "allowed: a colour space, display or role of the config")

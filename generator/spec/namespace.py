@@ -73,6 +73,19 @@ def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, s
     return taken
 
 
+def colour_spaces(spaces, displays: tuple[Display, ...], display_view_spaces: bool) -> dict[str, str]:
+    """Every name and alias of a config's colour spaces (lower case) to the space's own name: the
+    spec's ``spaces``, the display reference, each display's and each '<view> - <display>'."""
+    names = {n.lower(): space.name for space in spaces for n in (space.name, *space.aliases)}
+    names.update((n.lower(), DISPLAY_REFERENCE) for n in (DISPLAY_REFERENCE, *DISPLAY_REFERENCE_ALIASES))
+    for display in displays:
+        names.update((n.lower(), display.name) for n in (display.name, *display.aliases))
+        for view in display.views if display_view_spaces else ():
+            if view != RAW_VIEW:
+                names[display_view_space(view, display.name).lower()] = display_view_space(view, display.name)
+    return names
+
+
 def check_free(library_spaces, custom_spaces, taken: dict[str, Owner], source: str) -> None:
     """No colour space of the spec may have a name or alias in ``taken``: for a custom space the
     error names its field, for a library space the field of the display that took its name."""

@@ -45,11 +45,17 @@ def _record(obj) -> dict:
     return out
 
 
+def _rule_record(rule: FileRule) -> dict:
+    """A file rule as it matches: by ``regex`` alone, or by ``pattern`` and ``extension``."""
+    keys = ("name", "colour_space", "regex") if rule.regex else ("name", "colour_space", "pattern", "extension")
+    return {key: getattr(rule, key) for key in keys}
+
+
 def dumps(spec: Spec) -> str:
     data = {f.name: getattr(spec, f.name) for f in dataclasses.fields(spec) if f.metadata.get("resolved", True)}
     data["colour_spaces"] = [_record(s) for s in spec.colour_spaces]
     data["displays"] = [_record(d) for d in spec.displays]
-    data["file_rules"] = [dataclasses.asdict(r) for r in spec.file_rules]
+    data["file_rules"] = [_rule_record(r) for r in spec.file_rules]
     return json.dumps(data, indent=1, sort_keys=True) + "\n"
 
 
@@ -196,8 +202,12 @@ class _Reader:
         return tuple(self.typed(v, str, f"{field}[{i}]") for i, v in enumerate(value))
 
     def rule(self, value, field: str) -> FileRule:
-        d = self.table(value, [f.name for f in dataclasses.fields(FileRule)], field)
-        return FileRule(**{k: self.typed(v, str, f"{field}.{k}") for k, v in d.items()})
+        keys = ["name", "colour_space", *(["regex"] if isinstance(value, dict) and "regex" in value
+                                          else ["pattern", "extension"])]
+        d = {k: self.typed(v, str, f"{field}.{k}") for k, v in self.table(value, keys, field).items()}
+        if "regex" in d and not d["regex"]:
+            raise self.fail(f"{field}.regex", "empty")
+        return FileRule(**d, **({"pattern": "", "extension": ""} if "regex" in d else {}))
 
     def version(self, value) -> tuple[int, int]:
         from generator.spec.load import OCIO_MIN_VERSION, newest_ocio_version
@@ -230,15 +240,17 @@ class _Reader:
         return spec
 
     def check_names(self, spec: Spec) -> None:
-        """Every name the spec refers to is one it defines: the scene reference and the inactive spaces
-        among its colour spaces, the roles' targets among those, its displays and the display
-        reference, the file rules' among those and the roles."""
-        from generator.spec.namespace import DISPLAY_REFERENCE
+        """Every name the spec refers to is one it defines: the scene reference among its colour
+        spaces, the inactive spaces among the config's (generated ones too, by their own names),
+        the roles' targets among the spec's, its displays and the display reference, the file
+        rules' among those and the roles."""
+        from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces
 
         spaces = {n.lower() for n in spec.space_names}
         targets = spaces | {n.lower() for d in spec.displays for n in (d.name, *d.aliases)} | {DISPLAY_REFERENCE.lower()}
         refers = [("scene_reference", spec.scene_reference, spaces)]
-        refers += [(f"inactive[{i}]", name, spaces) for i, name in enumerate(spec.inactive)]
+        every = {n.lower() for n in colour_spaces(spec.colour_spaces, spec.displays, spec.display_view_spaces).values()}
+        refers += [(f"inactive[{i}]", name, every) for i, name in enumerate(spec.inactive)]
         refers += [(f"roles[{i}][1]", target, targets) for i, (_, target) in enumerate(spec.roles)]
         refers += [(f"file_rules[{i}].colour_space", r.colour_space, targets | {role for role, _ in spec.roles})
                    for i, r in enumerate(spec.file_rules)]

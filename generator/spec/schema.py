@@ -80,10 +80,14 @@ class Display:
 
 @dataclass(frozen=True)
 class FileRule:
+    """A file rule: a glob ``pattern`` and ``extension``, or, when ``regex`` is given, that
+    regular expression (OCIO's, ECMAScript) alone, on the whole path."""
+
     name: str
     colour_space: str
     pattern: str = "*"
     extension: str = "*"
+    regex: str = ""
 
 
 @dataclass(frozen=True)

@@ -36,10 +36,10 @@ def differences(cfg, spec: Spec) -> list[str]:
             out.append(f"role {role} is {held!r}, the spec's {target!r}")
     out += [f"role {role} is not the spec's" for role in sorted(set(roles) - {r for r, _ in spec.roles})]
     rules = cfg.getFileRules()
-    held_rules = [(rules.getName(i), rules.getPattern(i), rules.getExtension(i), _canonical(cfg, rules.getColorSpace(i)))
-                  for i in range(rules.getNumEntries())]
-    built = [(r.name, r.pattern, r.extension, _canonical(cfg, r.colour_space)) for r in spec.file_rules]
-    if held_rules[:-1] != built[:-1] or held_rules[-1][3] != built[-1][3]:
+    held_rules = [(rules.getName(i), rules.getPattern(i), rules.getExtension(i), rules.getRegex(i),
+                   _canonical(cfg, rules.getColorSpace(i))) for i in range(rules.getNumEntries())]
+    built = [(r.name, r.pattern, r.extension, r.regex, _canonical(cfg, r.colour_space)) for r in spec.file_rules]
+    if held_rules[:-1] != built[:-1] or held_rules[-1][-1] != built[-1][-1]:
         index = next((i for i, (a, b) in enumerate(zip(held_rules, built)) if a != b), min(len(held_rules), len(built)))
         out.append(f"file rule {index + 1} is {held_rules[index] if index < len(held_rules) else None}, "
                    f"the spec's {built[index] if index < len(built) else None}")

@@ -427,3 +427,24 @@ def test_matrix_takes_a_shows_own_spaces_as_its_config_converts(tmp_path, capsys
     assert run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "json", "--spec", str(tmp_path / "show.toml"))[1] == library
     code, _, err = run(capsys, "matrix", "Nope", "ACEScg", "--spec", str(tmp_path / "show.toml"))
     assert code == 2 and "no colour space 'Nope' in show.toml" in err and err.count("\n") == 1, err
+
+
+def test_info_takes_a_shows_own_space_with_its_reference_and_version(tmp_path, capsys):
+    from generator.colorimetry import reference
+    from generator.spec import load
+
+    (tmp_path / "show.toml").write_text(
+        'ocio_version = "2.3"\nscene_reference = "ACEScg"\nchromatic_adaptation = "CAT16"\n'
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = "Wall"\naliases = ["led_wall"]\nprimaries = [[0.70, 0.29], [0.17, 0.80], [0.13, 0.05]]\n'
+        'white = 6000\ntransfer = { family = "gamma", exponent = 2.4 }\n', encoding="utf-8")
+    spec = load.load(tmp_path / "show.toml")
+    code, out, err = run(capsys, "info", "LED_wall", "--spec", str(tmp_path / "show.toml"))
+    assert code == 0 and "name:      Wall" in out and "to ACEScg (CAT16):" in out, err
+    rows = out.split("to ACEScg (CAT16):\n")[1].splitlines()[:3]
+    assert np.allclose([[float(v) for v in row.split()] for row in rows],
+                       reference.space_matrix(spec, spec.space("Wall")), rtol=0, atol=5e-11)
+    assert "OCIO 2.3: analytic (Power)  (the spec builds this version)" in out and out.count("the spec builds") == 1
+    assert "(the spec builds" not in run(capsys, "info", "acescct")[1]
+    code, _, err = run(capsys, "info", "arri_logc4", "--spec", str(tmp_path / "show.toml"))
+    assert code == 2 and "no colour space 'arri_logc4' in show.toml" in err and err.count("\n") == 1, err

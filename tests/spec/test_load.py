@@ -138,6 +138,18 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
      "eotf = 'HLG'", "display[0].white", "BT.2020 primaries and D65"),
     ("[[file_rule]]\nname = 'ColorSpaceNamePathSearch'\ncolour_space = 'ACEScg'\n[[file_rule]]\nname = 'Default'\n"
      "colour_space = 'ACEScg'", "file_rule[0].name", "OCIO reserves 'ColorSpaceNamePathSearch'"),
+    ("[[file_rule]]\nname = 'A'\ncolour_space = 'ACEScg'\nregex = '.*(plate'\n[[file_rule]]\nname = 'Default'\n"
+     "colour_space = 'ACEScg'", "file_rule[0].regex", "OpenColorIO cannot read it"),
+    ("[[file_rule]]\nname = 'A'\ncolour_space = 'ACEScg'\nregex = ''\n[[file_rule]]\nname = 'Default'\n"
+     "colour_space = 'ACEScg'", "file_rule[0].regex", "regex is empty"),
+    ("[[file_rule]]\nname = 'A'\ncolour_space = 'ACEScg'\nregex = '.*exr'\nextension = 'exr'\n[[file_rule]]\n"
+     "name = 'Default'\ncolour_space = 'ACEScg'", "file_rule[0].extension", "by its regex or by pattern and extension"),
+    ("[[file_rule]]\nname = 'Default'\ncolour_space = 'ACEScg'\nregex = '.*'", "file_rule[0].regex",
+     "the Default rule matches every file"),
+    ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+     'inactive = ["ACEScg", "lin_ap1"]', "inactive[1]", "'lin_ap1' names 'ACEScg', as inactive[0] does"),
+    ('inactive = ["Scale - Nope"]', "inactive[0]", "a display's or a '<view> - <display>' space"),
+    ('display_view_spaces = false\ninactive = ["Scale - sRGB - Display"]', "inactive[0]", "not among the colour spaces"),
     ("[[display]]\nname = 'HLG'\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\nwhite = 'D65'\neotf = 'HLG'",
      "display[0].primaries", "allowed: gamut = \"Rec.2020\""),
     ("name = = 1", "-", "not valid TOML"),
@@ -275,6 +287,29 @@ def test_file_rules_left_out_are_the_embedded_defaults_and_cover_both_jpeg_suffi
     for path in ("plate.jpg", "plate.jpeg", "plate.JPEG"):
         assert resolved(path) == texture, path
     assert resolved("plate.exr") == config.getColorSpace(ocio.ROLE_SCENE_LINEAR).getName()
+
+
+def test_inactive_spaces_are_written_by_their_own_names_generated_ones_too():
+    """OCIO hides no colour space that its alias names in inactive_colorspaces (it logs and shows it),
+    and a build's display and '<view> - <display>' spaces are colour spaces a TD may hide too."""
+    spec = parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+                 'inactive = ["lin_ap1", "scale - srgb - display", "cie_xyz_d65_display", "Gamma 2.6 DCI-P3 - Display"]')
+    assert spec.inactive == ("ACEScg", "Scale - sRGB - Display", "CIE XYZ-D65 - Display-referred",
+                             "Gamma 2.6 DCI-P3 - Display")
+    assert resolved.loads(resolved.dumps(spec)) == spec
+
+
+def test_a_file_rule_matches_by_a_regex_or_by_a_glob():
+    text = ('[[file_rule]]\nname = "Plates"\nregex = \'.*/plates/.*\\.dpx$\'\ncolour_space = "ACEScct"\n'
+            '[[file_rule]]\nname = "EXR"\nextension = "exr"\ncolour_space = "ACEScg"\n'
+            '[[file_rule]]\nname = "Default"\ncolour_space = "default"\n')
+    spec = parse(text)
+    assert [(r.pattern, r.extension, r.regex) for r in spec.file_rules] == [
+        ("", "", r".*/plates/.*\.dpx$"), ("*", "exr", ""), ("*", "*", "")]
+    stored = json.loads(resolved.dumps(spec))["file_rules"]
+    assert [sorted(r) for r in stored] == [["colour_space", "name", "regex"], *[["colour_space", "extension", "name",
+                                                                               "pattern"]] * 2]
+    assert resolved.loads(resolved.dumps(spec)) == spec
 
 
 def test_a_spec_loaded_for_one_space_is_checked_whole():

@@ -62,6 +62,10 @@ def _set(data: dict, path: tuple, value):
     (("inactive",), KeyError, "inactive", "missing"),
     (("inactive",), ["Nope"], "inactive[0]", "names nothing the spec defines"),
     (("file_rules", 0, "colour_space"), 5, "file_rules[0].colour_space", "expected a string"),
+    (("file_rules", 0, "regex"), ".*", "file_rules[0].extension", "unknown key"),  # a regex rule has no glob
+    (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": ""}, "file_rules[0].regex", "empty"),
+    (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": 5}, "file_rules[0].regex", "expected a string"),
+    (("inactive",), ["lin_ap1"], "inactive[0]", "names nothing the spec defines"),
     (("name",), 5, "name", "expected a string"),
 ])
 def test_a_malformed_stored_spec_is_one_error_naming_the_field(stored, path, value, field, words):

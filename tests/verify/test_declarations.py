@@ -44,7 +44,7 @@ def _raw_first(cfg):
 
 EDITS = {
     "role": (lambda cfg: cfg.setRole("scene_linear", "ACES2065-1"), "role scene_linear is 'ACES2065-1'"),
-    "file rule": (_exr_as_log, "file rule 1 is ('OpenEXR', '*', 'exr', 'ACEScct')"),
+    "file rule": (_exr_as_log, "file rule 1 is ('OpenEXR', '*', 'exr', '', 'ACEScct')"),
     "inactive": (lambda cfg: cfg.setInactiveColorSpaces("ACEScct, Linear Rec.2020"), "inactive spaces are"),
     "active views": (lambda cfg: cfg.setActiveViews("Colorimetric, Raw"), "active views are ['Colorimetric', 'Raw']"),
     "active displays": (lambda cfg: cfg.setActiveDisplays("Rec.2100-PQ - Display, sRGB - Display"),
@@ -71,13 +71,15 @@ def test_an_edited_declaration_is_named(config_copy, edit):
 
 @pytest.mark.parametrize("version", [(2, 1), (2, 6)])
 def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
-    """Custom spaces and displays with aliases, inactive spaces named by alias, roles in any case,
-    file rules of their own, no display-view spaces: nothing a build writes is refused."""
+    """Custom spaces and displays with aliases, inactive spaces named by alias (written by their
+    own names: OCIO hides no space its alias names), roles in any case, file rules of their own
+    (globs and a regex), no display-view spaces: nothing a build writes is refused."""
     from generator.ocio.write import build, for_folder
     from generator.spec import load
 
     text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
-            '"Linear Rec.2020"]\ninactive = ["lin_rec2020", "Cam Log"]\ndisplay_view_spaces = false\n'
+            '"Linear Rec.2020"]\ninactive = ["lin_rec2020", "Cam Log", "wall_display"]\n'
+            'display_view_spaces = false\n'
             '[[custom_space]]\nname = "Cam Log"\naliases = ["cam_log"]\ngamut = "Rec.2020"\n'
             'transfer = { family = "log_camera", base = 10, log_side_slope = 0.25, log_side_offset = 0.6, '
             'lin_side_slope = 5.0, lin_side_offset = 0.05 }\n'
@@ -85,8 +87,21 @@ def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
             'views = ["Raw", "Colorimetric"]\n[[display]]\nname = "sRGB - Display"\n'
             '[roles]\nCompositing_Log = "cam_log"\n'
             '[[file_rule]]\nname = "Plates"\npattern = "*plate*"\nextension = "dpx"\ncolour_space = "Cam Log"\n'
+            '[[file_rule]]\nname = "Renders"\nregex = \'.*_acescg_v\\d{3}\\.\\d{4}\\.exr$\'\ncolour_space = "ACEScg"\n'
             '[[file_rule]]\nname = "Default"\ncolour_space = "default"\n')
     folder = tmp_path / "show"
     build(for_folder(load.parse(text, "show.toml", tmp_path), folder, version), folder)
     config = folder / "config.ocio"
-    assert declarations.differences(ocio.Config.CreateFromFile(str(config)), resolved.read_beside(config)) == []
+    cfg = ocio.Config.CreateFromFile(str(config))
+    assert declarations.differences(cfg, resolved.read_beside(config)) == []
+    active = set(cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ACTIVE))
+    assert not {"Linear Rec.2020", "Cam Log", "Wall"} & active and {"ACEScg", "sRGB - Display"} <= active
+    assert cfg.getColorSpaceFromFilepath("/show/sh010_acescg_v012.1001.exr")[0] == "ACEScg"  # the whole path matches
+    assert cfg.getColorSpaceFromFilepath("/show/sh010_acescg_v12.1001.exr")[0] == "default"
+    rules = cfg.getFileRules()
+    rules.removeRule(rules.getIndexForRule("Renders"))
+    rules.insertRule(1, "Renders", "ACEScg", r".*_acescg_v\d{2}\.\d{4}\.exr$")
+    cfg.setFileRules(rules)
+    assert declarations.differences(cfg, resolved.read_beside(config)) == [
+        "file rule 2 is ('Renders', '', '', '.*_acescg_v\\\\d{2}\\\\.\\\\d{4}\\\\.exr$', 'ACEScg'), the spec's "
+        "('Renders', '', '', '.*_acescg_v\\\\d{3}\\\\.\\\\d{4}\\\\.exr$', 'ACEScg')"]
