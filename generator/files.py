@@ -198,7 +198,7 @@ def _replace_folder(staging: Path, folder: Path, check: Callable[[Path], None]) 
     else; otherwise what is there is moved aside, checked again there (what it held when
     moved is what is deleted), and deleted only then; moved back when the check refuses it.
     Signals wait until it is done (:func:`_uninterrupted`)."""
-    os.chmod(staging, _plain_mode(0o777))
+    os.chmod(staging, _plain_mode(0o777) | (staging.stat().st_mode & stat.S_ISGID))  # a shared folder's group kept
     _unless_stopped()
     with _uninterrupted():
         check(folder)

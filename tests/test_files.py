@@ -239,3 +239,20 @@ def test_a_signal_as_a_temporary_is_made_leaves_nothing(tmp_path, monkeypatch, c
         else:
             write_atomic(tmp_path / "a.clf", b"new", force=False)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_folder_staged_in_a_shared_folder_keeps_its_group_bit(tmp_path):
+    """In a setgid folder (a show's shared storage) a new folder inherits the bit, so files made
+    in it later keep the group; the staged folder's permissions had been set without it."""
+    shared = tmp_path / "shared"
+    shared.mkdir()
+    os.chmod(shared, 0o2775)
+    old = os.umask(0o002)
+    try:
+        with staged_folder(shared / "show") as staging:
+            (staging / "luts").mkdir()
+        (shared / "plain").mkdir()
+    finally:
+        os.umask(old)
+    modes = [stat.S_IMODE((shared / name).stat().st_mode) for name in ("show", "show/luts", "plain")]
+    assert modes == [0o2775] * 3, [oct(m) for m in modes]

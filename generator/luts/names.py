@@ -7,8 +7,13 @@ import re
 from collections import Counter
 from collections.abc import Iterable
 
-#: Hex digits of a name's SHA-256 that tell apart names slugging alike.
-DIGEST_DIGITS = 8
+#: Hex digits of a name's SHA-256 that tell apart names slugging alike; where those still
+#: meet another stem, the next count (the whole digest last).
+DIGEST_DIGITS = (8, 16, 64)
+
+#: Longest slug a file name keeps: a longer one is cut there and the digest added, so a
+#: view's file name stays far below the 255 bytes file systems allow.
+SLUG_MAX = 64
 
 
 def _unaccented(text: str) -> str:
@@ -30,27 +35,35 @@ def slug(name: str) -> str:
     return re.sub(r"[^a-z0-9]+", "_", _unaccented(name).lower()).strip("_")
 
 
-def _digest(name: str) -> str:
-    return hashlib.sha256(name.encode("utf-8")).hexdigest()[:DIGEST_DIGITS]
+def _stem(name: str, level: int) -> str:
+    """``name``'s slug (cut at :data:`SLUG_MAX`) at ``level`` 0, then with the first
+    ``DIGEST_DIGITS[level - 1]`` digits of the SHA-256 of the exact name."""
+    s = slug(name)[:SLUG_MAX].rstrip("_")
+    if level == 0:
+        return s
+    return "_".join(filter(None, (s, hashlib.sha256(name.encode("utf-8")).hexdigest()[:DIGEST_DIGITS[level - 1]])))
 
 
 def file_stems(names: Iterable[str], taken: Iterable[str] = ()) -> dict[str, str]:
-    """A file-name stem for each of ``names``, distinct for distinct names: the name's slug,
-    or, where the slug is empty, another name's too or one of the stems ``taken``, the slug
-    and the first digits of the SHA-256 of the exact name. A stem depends on the names
-    alone, not on their order, so a spec names its files the same way every build."""
+    """A file-name stem for each of ``names``, distinct for distinct names and from the stems
+    ``taken``: the name's slug, or, where the slug is empty, longer than :data:`SLUG_MAX`,
+    another name's too or taken, the slug (cut) and the first digits of the SHA-256 of the
+    exact name; more digits while a stem still meets another (a name may itself end in
+    another's digest). A stem depends on the names alone, not on their order, so a spec
+    names its files the same way every build."""
     names = list(dict.fromkeys(names))
-    shared = Counter(slug(n) for n in names)
     taken = set(taken)
-    stems = {}
-    for name in names:
-        s = slug(name)
-        stems[name] = s if s and shared[s] == 1 and s not in taken else "_".join(filter(None, (s, _digest(name))))
-    clashes = Counter(stems.values())
-    clash = sorted(n for n, s in stems.items() if clashes[s] > 1 or s in taken)
-    if clash:
-        raise ValueError(f"names {clash} give the same file name")
-    return stems
+    level = {n: 0 if slug(n) and len(slug(n)) <= SLUG_MAX else 1 for n in names}
+    while True:
+        stems = {n: _stem(n, level[n]) for n in names}
+        counts = Counter(stems.values())
+        clash = [n for n in names if counts[stems[n]] > 1 or stems[n] in taken]
+        if not clash:
+            return stems
+        if any(level[n] == len(DIGEST_DIGITS) for n in clash):  # the same slug and SHA-256: not met in practice
+            raise ValueError(f"names {sorted(clash)} give the same file name")
+        for n in clash:
+            level[n] += 1
 
 
 def add_file(files: dict, name: str, content) -> None:

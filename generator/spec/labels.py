@@ -11,6 +11,9 @@ from generator.spec.schema import SpecError
 #: on any system a show's files travel to.
 NAME_FORBIDDEN = '/\\:*?"<>|'
 
+#: Names Windows keeps for devices, with any extension ("CON.ocio" too), in any case.
+WINDOWS_DEVICES = ("CON", "PRN", "AUX", "NUL", *(f"{port}{n}" for port in ("COM", "LPT") for n in range(10)))
+
 
 def folder_name(name: str, source: str) -> str:
     """The spec's ``name`` as the default output folder's (``configs/<name>``); SpecError when
@@ -20,6 +23,11 @@ def folder_name(name: str, source: str) -> str:
         raise SpecError(source, "name", f"{name!r} cannot name a folder (a build's default output is "
                         f"configs/<name>); allowed: a name without {' '.join(NAME_FORBIDDEN)}, control characters "
                         "or spaces at either end, and not . or ..")
+    if name.endswith(".") or name.split(".")[0].rstrip().upper() in WINDOWS_DEVICES:
+        raise SpecError(source, "name", f"{name!r} cannot name a folder on Windows (a build's default output is "
+                        f"configs/<name>), which {'drops a final dot' if name.endswith('.') else 'keeps it for a device'}"
+                        f"; allowed: a name not ending in a dot, and none of {', '.join(WINDOWS_DEVICES[:4])}, "
+                        "COM0-9 or LPT0-9 before a dot")
     return name
 
 

@@ -181,6 +181,9 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     spaces = (*_kept(listed, keep), *customs)
     present = {n.lower() for s in spaces for n in s.all_names}
     left_out = tuple(n for d in listed for n in (d.name, *d.aliases) if n.lower() not in present)
+    chosen_roles = _roles(roles, defaults, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()})
+    rules = _file_rules(raw, source, every | set(taken))
+    names = namespace.colour_spaces((*listed, *customs), displays, view_spaces)
     return Spec(
         name=labels.string(raw.get("name", "ocioforge"), source, "name"),
         description=labels.string(raw.get("description", ""), source, "description", text=True),
@@ -189,10 +192,10 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         chromatic_adaptation=cat,
         colour_spaces=spaces,
         displays=displays,
-        roles=_roles(roles, defaults, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()}),
-        file_rules=_file_rules(raw, source, every | set(taken)),
-        inactive=_inactive(raw.get("inactive", []), source, namespace.colour_spaces((*listed, *customs), displays,
-                                                                                   view_spaces), left_out),
+        roles=chosen_roles,
+        file_rules=rules,
+        inactive=_inactive(raw.get("inactive", []), source, names, left_out,
+                           _picked_by_hosts(chosen_roles, rules, names)),
         display_view_spaces=view_spaces,
         source=recorded(source),
         left_out=left_out,
@@ -451,17 +454,43 @@ def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
                             "y 0.3290); allowed: gamut = \"Rec.2020\" (or its primaries and white)")
 
 
-def _inactive(value, source: str, names: dict[str, str], left_out: tuple[str, ...]) -> tuple[str, ...]:
+#: Roles whose colour space hosts take without asking (Blender's images, renders, sequencer
+#: and non-colour data): an inactive one is refused, as is a file rule's.
+HOST_ROLES = ("scene_linear", "default_byte", "default_float", "default_sequencer", "data")
+
+
+def _picked_by_hosts(roles, rules, names: dict[str, str]) -> dict[str, str]:
+    """The colour spaces (own names) hosts pick by themselves: the targets of :data:`HOST_ROLES`
+    and of every file rule (through a role it names), each to what picks it."""
+    targets = {role.lower(): target for role, target in roles}
+    picked = {}
+    for role in HOST_ROLES:
+        if role in targets:
+            picked.setdefault(names.get(targets[role].lower()), f"the {role} role's colour space")
+    for rule in rules:
+        target = targets.get(rule.colour_space.lower(), rule.colour_space)
+        picked.setdefault(names.get(target.lower()), f"the colour space of file rule {rule.name!r}")
+    picked.pop(None, None)
+    return picked
+
+
+def _inactive(value, source: str, names: dict[str, str], left_out: tuple[str, ...],
+              picked: dict[str, str]) -> tuple[str, ...]:
     """The colour spaces kept out of menus (``names``: every name and alias of the config's,
     generated ones too, to the space's own name), each by its own name: OCIO takes no alias
-    there, and a space named by its alias stayed in every menu. Those a load ``left_out``
-    are dropped."""
+    there, and a space named by its alias stayed in every menu. None may be one hosts pick
+    themselves (``picked``): Blender lists no inactive space, and read an EXR whose file rule
+    led to one with no colour space, then crashed. Those a load ``left_out`` are dropped."""
     chosen: dict[str, int] = {}
     for i, name in enumerate(labels.strings(value, source, "inactive")):
         if name.lower() not in names:
             raise SpecError(source, f"inactive[{i}]", f"{name!r} is not among the colour spaces; allowed: a colour "
                             "space of the spec, a display's or a '<view> - <display>' space, by name or alias")
         own = names[name.lower()]
+        if own in picked:
+            raise SpecError(source, f"inactive[{i}]", f"{name!r} is {picked[own]}, which hosts take without asking "
+                            "(Blender lists no inactive space and crashed reading a file that led to one); allowed: "
+                            f"a space no file rule and none of the roles {', '.join(HOST_ROLES)} name")
         if own in chosen:
             raise SpecError(source, f"inactive[{i}]", f"{name!r} names {own!r}, as inactive[{chosen[own]}] does; "
                             "allowed: each colour space once")

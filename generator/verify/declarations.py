@@ -1,15 +1,17 @@
 """What a config declares beside its transforms, against its stored spec.
 
 Roles, file rules, inactive spaces, each display's views in order (the first is its
-default), the active displays and the spec's aliases decide which transform a host
-picks; none of them moves a number the checks compare, so an edit to one (a role
-pointed elsewhere, a file rule sending EXR to a log space, an alias moved onto another
-space) is found here, by name.
+default), the active displays, the spec's aliases, the search path (relative, so the
+config's files travel with it) and what menus sort and filter spaces by (family,
+encoding, data flag, categories) decide which transform a host picks or finds; none of
+them moves a number the checks compare, so an edit to one (a role pointed elsewhere, a
+file rule sending EXR to a log space, an alias moved onto another space, a search path
+made absolute) is found here, by name.
 """
 
 from __future__ import annotations
 
-from generator.spec.schema import Spec
+from generator.spec.schema import Display, Spec
 
 
 def _canonical(cfg, name: str) -> str:
@@ -22,6 +24,16 @@ def _names(listed) -> list[str]:
     """A config's list of names: a comma-separated string or, in later PyOpenColorIO, an iterable."""
     items = listed.split(",") if isinstance(listed, str) else list(listed)
     return [n.strip() for n in items if n.strip()]
+
+
+def _menu(space) -> tuple:
+    """What hosts sort and filter a colour space's menus by, as the build writes it: family,
+    encoding, the data flag and categories."""
+    from generator.ocio.emit import CATEGORIES
+
+    if isinstance(space, Display):
+        return ("Display", space.encoding, False, ["file-io"])
+    return (space.family, space.encoding, space.is_data, CATEGORIES.get(space.encoding, ["file-io"]))
 
 
 def differences(cfg, spec: Spec) -> list[str]:
@@ -55,7 +67,17 @@ def differences(cfg, spec: Spec) -> list[str]:
         views = list(cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, display.name))
         if views != list(display.views):
             out.append(f"{display.name}'s views are {views}, the spec's {list(display.views)} (the first the default)")
+    from generator.ocio.emit import LUT_FOLDER
+
+    if cfg.getSearchPath() != LUT_FOLDER:
+        out.append(f"the search path is {cfg.getSearchPath()!r}, the build's {LUT_FOLDER!r} (the folder beside the "
+                   "config, wherever it is copied)")
     for space in (*spec.colour_spaces, *spec.displays):
+        held = cfg.getColorSpace(space.name)
+        menu = _menu(space)
+        shown = None if held is None else (held.getFamily(), held.getEncoding(), held.isData(), list(held.getCategories()))
+        if held is not None and shown != menu:
+            out.append(f"{space.name}'s family, encoding, data flag and categories are {shown}, the spec's {menu}")
         for alias in space.aliases:
             if _canonical(cfg, alias) != space.name:
                 out.append(f"alias {alias!r} names {_canonical(cfg, alias)!r}, the spec's {space.name!r}")

@@ -129,7 +129,9 @@ def test_a_build_failing_while_written_leaves_no_folders_it_made(tmp_path, capsy
 
 @pytest.mark.parametrize(("name", "words"), [("../escape", "cannot name a folder"), ("", "cannot name a folder"),
                                              ("..", "cannot name a folder"), ("show\nbuild", "control character"),
-                                             ("a/b", "cannot name a folder")])
+                                             ("a/b", "cannot name a folder"), ("CON", "keeps it for a device"),
+                                             ("aux.show", "keeps it for a device"), ("Com1", "keeps it for a device"),
+                                             ("show.", "drops a final dot"), ("show..", "drops a final dot")])
 def test_a_spec_name_that_cannot_name_the_default_folder_is_refused(tmp_path, capsys, monkeypatch, name, words):
     """Without -o a build goes to configs/<name>: a name no folder takes is one line, exit 2."""
     monkeypatch.chdir(tmp_path)

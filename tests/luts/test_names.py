@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from generator.luts.names import add_file, file_stems, slug
+from generator.luts.names import DIGEST_DIGITS, SLUG_MAX, add_file, file_stems, slug
 
 
 def test_slug_keeps_letters_and_digits():
@@ -43,3 +43,38 @@ def test_a_different_file_under_a_name_already_recorded_is_an_error():
 def test_a_slug_takes_accents_off_and_drops_other_scripts():
     assert slug("Écran LED (Plateau n°2)") == "ecran_led_plateau_n_2"
     assert slug("カメラ") == ""
+
+
+def test_a_name_ending_in_another_names_digest_gets_a_longer_one():
+    """"Wall X 155a6b9c" slugs to the stem "Wall X" takes beside "wall-x" (its slug and digest):
+    both move on to longer digests, the same whatever the order."""
+    names = ["Wall X", "wall-x", "Wall X 155a6b9c"]
+    stems = file_stems(names)
+    assert stems["Wall X"].startswith("wall_x_155a6b9c") and len(set(stems.values())) == 3
+    assert file_stems(reversed(names)) == stems
+
+
+def test_a_long_name_is_cut_and_told_apart_by_its_digest():
+    first, second = "Wall " + "x" * 300, "Wall " + "x" * 299 + "y"
+    stems = file_stems([first, second, "Wall"])
+    assert stems["Wall"] == "wall" and stems[first] != stems[second]
+    assert all(len(stems[n]) <= SLUG_MAX + 1 + DIGEST_DIGITS[0] for n in (first, second))
+    assert stems[first].startswith(slug(first)[:SLUG_MAX])
+
+
+def test_a_spec_whose_names_slug_alike_or_run_long_builds_distinct_short_files(tmp_path):
+    """Displays whose names slug alike, one ending in another's digest, and one of 240
+    characters: each view gets a file of its own, its name far below the 255 bytes file
+    systems allow (the build had stopped on a traceback, then on 'File name too long')."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+
+    display = ('[[display]]\nname = "{}"\nprimaries = [[0.70, 0.29], [0.17, 0.78], [0.13, 0.04]]\nwhite = "D65"\n'
+               'eotf = "Gamma 2.4"\nviews = ["Colorimetric", "Scale"]\n')
+    names = ["LED Wall", "led-wall", "LED Wall 507756a0", "Wall " + "x" * 235]
+    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+            + "".join(display.format(n) for n in names))
+    folder = tmp_path / "show"
+    build(for_folder(load.parse(text, "show.toml", tmp_path), folder, (2, 1)), folder)
+    views = sorted(p.name for p in (folder / "luts").iterdir() if p.name.startswith("view_"))
+    assert len(views) == len(names) and max(len(v.encode()) for v in views) < 100, views

@@ -147,9 +147,16 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[[file_rule]]\nname = 'Default'\ncolour_space = 'ACEScg'\nregex = '.*'", "file_rule[0].regex",
      "the Default rule matches every file"),
     ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-     'inactive = ["ACEScg", "lin_ap1"]', "inactive[1]", "'lin_ap1' names 'ACEScg', as inactive[0] does"),
+     'inactive = ["ACEScct", "acescct_ap1"]', "inactive[1]", "'acescct_ap1' names 'ACEScct', as inactive[0] does"),
     ('inactive = ["Scale - Nope"]', "inactive[0]", "a display's or a '<view> - <display>' space"),
     ('display_view_spaces = false\ninactive = ["Scale - sRGB - Display"]', "inactive[0]", "not among the colour spaces"),
+    ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["lin_ap1"]',
+     "inactive[0]", "'lin_ap1' is the scene_linear role's colour space, which hosts take without asking"),
+    ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["Raw"]',
+     "inactive[0]", "'Raw' is the data role's colour space"),
+    ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["ACEScct"]\n'
+     '[[file_rule]]\nname = "Plates"\nextension = "dpx"\ncolour_space = "compositing_log"\n[[file_rule]]\n'
+     'name = "Default"\ncolour_space = "default"', "inactive[0]", "the colour space of file rule 'Plates'"),
     ("[[display]]\nname = 'HLG'\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\nwhite = 'D65'\neotf = 'HLG'",
      "display[0].primaries", "allowed: gamut = \"Rec.2020\""),
     ("name = = 1", "-", "not valid TOML"),
@@ -293,8 +300,8 @@ def test_inactive_spaces_are_written_by_their_own_names_generated_ones_too():
     """OCIO hides no colour space that its alias names in inactive_colorspaces (it logs and shows it),
     and a build's display and '<view> - <display>' spaces are colour spaces a TD may hide too."""
     spec = parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-                 'inactive = ["lin_ap1", "scale - srgb - display", "cie_xyz_d65_display", "Gamma 2.6 DCI-P3 - Display"]')
-    assert spec.inactive == ("ACEScg", "Scale - sRGB - Display", "CIE XYZ-D65 - Display-referred",
+                 'inactive = ["acescct_ap1", "scale - srgb - display", "cie_xyz_d65_display", "Gamma 2.6 DCI-P3 - Display"]')
+    assert spec.inactive == ("ACEScct", "Scale - sRGB - Display", "CIE XYZ-D65 - Display-referred",
                              "Gamma 2.6 DCI-P3 - Display")
     assert resolved.loads(resolved.dumps(spec)) == spec
 

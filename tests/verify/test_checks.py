@@ -38,6 +38,20 @@ def test_every_view_is_checked_from_three_inputs(spec, built):
     assert len(views) == 3 * sum(len(d.views) for d in spec.displays)
 
 
+def test_views_are_checked_from_active_inputs_a_host_can_offer():
+    """Blender offers no inactive space: an inactive compositing_log target or first display
+    gives way to the first active log space and display (verify had failed such a config
+    with "enum 'ACEScct' not found")."""
+    from pathlib import Path
+
+    from generator.spec import load
+
+    spec = load.parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "ACEScc", "sRGB Encoded Rec.709 (sRGB)", '
+                      '"Raw"]\ninactive = ["ACEScct", "sRGB - Display"]\n', "show.toml", Path("."))
+    sources = [e.name for e in checks.view_sources(spec, paths.endpoints(spec))]
+    assert sources == ["ACEScg", "ACEScc", spec.displays[1].name]
+
+
 def test_every_baked_lut_file_is_checked(build_config, built):
     on_disk = {f"luts/{p.name}" for p in (build_config((2, 1)).parent / "luts").iterdir()}
     assert {c.lut for c in built if c.kind == checks.LUT} == on_disk

@@ -42,6 +42,12 @@ def _raw_first(cfg):
             cfg.addDisplayView("sRGB - Display", view, space)
 
 
+def _edit_space(cfg, name, change):
+    space = cfg.getColorSpace(name)
+    change(space)
+    cfg.addColorSpace(space)  # replaces the one of that name
+
+
 EDITS = {
     "role": (lambda cfg: cfg.setRole("scene_linear", "ACES2065-1"), "role scene_linear is 'ACES2065-1'"),
     "file rule": (_exr_as_log, "file rule 1 is ('OpenEXR', '*', 'exr', '', 'ACEScct')"),
@@ -51,6 +57,12 @@ EDITS = {
                         "active displays are ['Rec.2100-PQ - Display', 'sRGB - Display']"),
     "default view": (_raw_first, "sRGB - Display's views are ['Raw', "),
     "alias": (_move_alias, "alias 'lin_rec2020' names 'Linear Rec.709 (sRGB)', the spec's 'Linear Rec.2020'"),
+    "search path": (lambda cfg: cfg.setSearchPath("/mnt/shows/other/luts"),
+                    "the search path is '/mnt/shows/other/luts', the build's 'luts'"),
+    "encoding": (lambda cfg: _edit_space(cfg, "ACEScg", lambda cs: cs.setEncoding("log")),
+                 "ACEScg's family, encoding, data flag and categories are ('ACES', 'log', False, "),
+    "categories": (lambda cfg: _edit_space(cfg, "sRGB - Display", lambda cs: cs.clearCategories()),
+                   "sRGB - Display's family, encoding, data flag and categories are ('Display', 'sdr-video', False, [])"),
 }
 
 
@@ -86,7 +98,7 @@ def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
             '[[display]]\nname = "Wall"\naliases = ["wall_display"]\ngamut = "P3-D65"\neotf = "gamma 2.4"\n'
             'views = ["Raw", "Colorimetric"]\n[[display]]\nname = "sRGB - Display"\n'
             '[roles]\nCompositing_Log = "cam_log"\n'
-            '[[file_rule]]\nname = "Plates"\npattern = "*plate*"\nextension = "dpx"\ncolour_space = "Cam Log"\n'
+            '[[file_rule]]\nname = "Plates"\npattern = "*plate*"\nextension = "dpx"\ncolour_space = "ACEScct"\n'
             '[[file_rule]]\nname = "Renders"\nregex = \'.*_acescg_v\\d{3}\\.\\d{4}\\.exr$\'\ncolour_space = "ACEScg"\n'
             '[[file_rule]]\nname = "Default"\ncolour_space = "default"\n')
     folder = tmp_path / "show"
