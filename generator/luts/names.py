@@ -11,9 +11,10 @@ from collections.abc import Iterable
 #: meet another stem, the next count (the whole digest last).
 DIGEST_DIGITS = (8, 16, 64)
 
-#: Longest slug a file name keeps: a longer one is cut there and the digest added, so a
-#: view's file name stays far below the 255 bytes file systems allow.
-SLUG_MAX = 64
+#: Longest stem: with the longest affixes a build's file takes (``view_`` and
+#: ``_desaturate_hsv19.clf``), a file name of 255 bytes, all file systems allow. A longer
+#: slug is cut, and the digest added, within it.
+STEM_MAX = 229
 
 
 def _unaccented(text: str) -> str:
@@ -36,12 +37,13 @@ def slug(name: str) -> str:
 
 
 def _stem(name: str, level: int) -> str:
-    """``name``'s slug (cut at :data:`SLUG_MAX`) at ``level`` 0, then with the first
+    """``name``'s slug at ``level`` 0, then, cut to fit :data:`STEM_MAX`, with the first
     ``DIGEST_DIGITS[level - 1]`` digits of the SHA-256 of the exact name."""
-    s = slug(name)[:SLUG_MAX].rstrip("_")
     if level == 0:
-        return s
-    return "_".join(filter(None, (s, hashlib.sha256(name.encode("utf-8")).hexdigest()[:DIGEST_DIGITS[level - 1]])))
+        return slug(name)
+    digits = DIGEST_DIGITS[level - 1]
+    cut = slug(name)[:STEM_MAX - 1 - digits].rstrip("_")
+    return "_".join(filter(None, (cut, hashlib.sha256(name.encode("utf-8")).hexdigest()[:digits])))
 
 
 def file_stems(names: Iterable[str], taken: Iterable[str] = ()) -> dict[str, str]:
@@ -53,7 +55,7 @@ def file_stems(names: Iterable[str], taken: Iterable[str] = ()) -> dict[str, str
     names its files the same way every build."""
     names = list(dict.fromkeys(names))
     taken = set(taken)
-    level = {n: 0 if slug(n) and len(slug(n)) <= SLUG_MAX else 1 for n in names}
+    level = {n: 0 if slug(n) and len(slug(n)) <= STEM_MAX else 1 for n in names}
     while True:
         stems = {n: _stem(n, level[n]) for n in names}
         counts = Counter(stems.values())

@@ -195,7 +195,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         roles=chosen_roles,
         file_rules=rules,
         inactive=_inactive(raw.get("inactive", []), source, names, left_out,
-                           _picked_by_hosts(chosen_roles, rules, names)),
+                           _picked_by_hosts(chosen_roles, rules, names, displays)),
         display_view_spaces=view_spaces,
         source=recorded(source),
         left_out=left_out,
@@ -459,11 +459,12 @@ def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
 HOST_ROLES = ("scene_linear", "default_byte", "default_float", "default_sequencer", "data")
 
 
-def _picked_by_hosts(roles, rules, names: dict[str, str]) -> dict[str, str]:
-    """The colour spaces (own names) hosts pick by themselves: the targets of :data:`HOST_ROLES`
-    and of every file rule (through a role it names), each to what picks it."""
+def _picked_by_hosts(roles, rules, names: dict[str, str], displays) -> dict[str, str]:
+    """The colour spaces (own names) hosts pick by themselves: each display's, which its views
+    show through, and the targets of :data:`HOST_ROLES` and of every file rule (through a role
+    it names), each to what picks it."""
     targets = {role.lower(): target for role, target in roles}
-    picked = {}
+    picked = {d.name: "a display's colour space (its views show through it)" for d in displays}
     for role in HOST_ROLES:
         if role in targets:
             picked.setdefault(names.get(targets[role].lower()), f"the {role} role's colour space")
@@ -479,18 +480,20 @@ def _inactive(value, source: str, names: dict[str, str], left_out: tuple[str, ..
     """The colour spaces kept out of menus (``names``: every name and alias of the config's,
     generated ones too, to the space's own name), each by its own name: OCIO takes no alias
     there, and a space named by its alias stayed in every menu. None may be one hosts pick
-    themselves (``picked``): Blender lists no inactive space, and read an EXR whose file rule
-    led to one with no colour space, then crashed. Those a load ``left_out`` are dropped."""
+    themselves (``picked``): Blender lists no inactive space; it read an EXR whose file rule
+    led to one with no colour space, then crashed, and showed the views of a display whose
+    space was inactive wrong. Those a load ``left_out`` are dropped."""
     chosen: dict[str, int] = {}
     for i, name in enumerate(labels.strings(value, source, "inactive")):
         if name.lower() not in names:
             raise SpecError(source, f"inactive[{i}]", f"{name!r} is not among the colour spaces; allowed: a colour "
-                            "space of the spec, a display's or a '<view> - <display>' space, by name or alias")
+                            "space of the spec, the display reference or a '<view> - <display>' space, by name or alias")
         own = names[name.lower()]
         if own in picked:
             raise SpecError(source, f"inactive[{i}]", f"{name!r} is {picked[own]}, which hosts take without asking "
-                            "(Blender lists no inactive space and crashed reading a file that led to one); allowed: "
-                            f"a space no file rule and none of the roles {', '.join(HOST_ROLES)} name")
+                            "(Blender lists no inactive space: it crashed reading a file that led to one, and showed "
+                            "a display whose space was inactive wrong); allowed: a space of the spec no file rule "
+                            f"and none of the roles {', '.join(HOST_ROLES)} name, or a '<view> - <display>' space")
         if own in chosen:
             raise SpecError(source, f"inactive[{i}]", f"{name!r} names {own!r}, as inactive[{chosen[own]}] does; "
                             "allowed: each colour space once")

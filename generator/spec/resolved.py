@@ -241,7 +241,8 @@ class _Reader:
 
     def check_names(self, spec: Spec) -> None:
         """Every name the spec refers to is one it defines: the scene reference among its colour
-        spaces, the inactive spaces among the config's (generated ones too, by their own names),
+        spaces, the inactive spaces among the config's (generated ones too; by name or alias, as
+        builds before names were written as the space's own wrote them),
         the roles' targets among the spec's, its displays and the display reference, the file
         rules' among those and the roles."""
         from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces
@@ -249,7 +250,7 @@ class _Reader:
         spaces = {n.lower() for n in spec.space_names}
         targets = spaces | {n.lower() for d in spec.displays for n in (d.name, *d.aliases)} | {DISPLAY_REFERENCE.lower()}
         refers = [("scene_reference", spec.scene_reference, spaces)]
-        every = {n.lower() for n in colour_spaces(spec.colour_spaces, spec.displays, spec.display_view_spaces).values()}
+        every = set(colour_spaces(spec.colour_spaces, spec.displays, spec.display_view_spaces))  # aliases too (older builds)
         refers += [(f"inactive[{i}]", name, every) for i, name in enumerate(spec.inactive)]
         refers += [(f"roles[{i}][1]", target, targets) for i, (_, target) in enumerate(spec.roles)]
         refers += [(f"file_rules[{i}].colour_space", r.colour_space, targets | {role for role, _ in spec.roles})

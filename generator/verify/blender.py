@@ -27,12 +27,21 @@ SCRIPT = Path(__file__).with_name("blender_job.py")
 class BlenderEngine:
     """Blender converts every image to the scene_linear role when it loads it, so its
     Raw view shows scene_linear values, not the file's: a Raw view is checked only from
-    the scene_linear role's space, where the two agree."""
+    the scene_linear role's space, where the two agree. It lists no inactive space, so
+    views are not checked from one (an inactive compositing_log role's space)."""
 
     name: str = "blender"
     kinds: tuple = (VIEW,)
 
     def supports(self, check: Check, spec) -> bool:
+        inactive = set()
+        for name in spec.inactive:
+            try:
+                inactive.add(spec.space(name).name)
+            except KeyError:  # a generated space: never a view's input
+                continue
+        if check.src in inactive:
+            return False
         if check.view != RAW:
             return True
         scene_linear = dict(spec.roles).get("scene_linear", "")

@@ -260,20 +260,9 @@ def _endpoint(spec: Spec, ends: dict, name: str | None) -> paths.Endpoint | None
 
 def view_sources(spec: Spec, ends: dict) -> list[paths.Endpoint]:
     """The inputs every display/view is checked from: the scene_linear role, the
-    compositing_log role and the first display's (display-referred) space; for either of
-    the last two that is inactive (Blender offers no inactive space), the first active
-    log space or display instead."""
+    compositing_log role and the first display's (display-referred) space."""
     roles = dict(spec.roles)
-    inactive = {n.lower() for n in spec.inactive}
-
-    def active(name):
-        end = _endpoint(spec, ends, name)
-        return end.name if end is not None and end.name.lower() not in inactive else None
-
-    log = active(roles.get("compositing_log")) or next(
-        (s.name for s in spec.colour_spaces if s.encoding == "log" and s.name.lower() not in inactive), None)
-    shown = next((d.name for d in spec.displays if d.name.lower() not in inactive), None)
-    names = [roles.get("scene_linear"), log, shown]
+    names = [roles.get("scene_linear"), roles.get("compositing_log"), spec.displays[0].name if spec.displays else None]
     found = [_endpoint(spec, ends, n) for n in names]
     return list({e.name: e for e in found if e is not None}.values())
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from generator.luts.names import DIGEST_DIGITS, SLUG_MAX, add_file, file_stems, slug
+from generator.luts.names import STEM_MAX, add_file, file_stems, slug
 
 
 def test_slug_keeps_letters_and_digits():
@@ -55,16 +55,21 @@ def test_a_name_ending_in_another_names_digest_gets_a_longer_one():
 
 
 def test_a_long_name_is_cut_and_told_apart_by_its_digest():
-    first, second = "Wall " + "x" * 300, "Wall " + "x" * 299 + "y"
-    stems = file_stems([first, second, "Wall"])
-    assert stems["Wall"] == "wall" and stems[first] != stems[second]
-    assert all(len(stems[n]) <= SLUG_MAX + 1 + DIGEST_DIGITS[0] for n in (first, second))
-    assert stems[first].startswith(slug(first)[:SLUG_MAX])
+    """A slug up to STEM_MAX is kept whole (names earlier builds wrote keep their files); a
+    longer one is cut to fit with its digest, so no file name passes 255 bytes."""
+    kept, first, second = "Stage " + "x" * 220, "Wall " + "x" * 300, "Wall " + "x" * 299 + "y"
+    stems = file_stems([kept, first, second, "Wall"])
+    assert stems["Wall"] == "wall" and stems[kept] == slug(kept) and len(slug(kept)) <= STEM_MAX
+    assert stems[first] != stems[second] and stems[first].startswith(slug(first)[:200])
+    assert all(len(stems[n]) <= STEM_MAX for n in (first, second))
+    assert len(f"view_{stems[first]}_desaturate_hsv19.clf".encode()) <= 255
+    clashing = file_stems([kept, kept.upper() + "!"])
+    assert all(len(stem) <= STEM_MAX for stem in clashing.values()) and len(set(clashing.values())) == 2
 
 
 def test_a_spec_whose_names_slug_alike_or_run_long_builds_distinct_short_files(tmp_path):
     """Displays whose names slug alike, one ending in another's digest, and one of 240
-    characters: each view gets a file of its own, its name far below the 255 bytes file
+    characters: each view gets a file of its own, its name within the 255 bytes file
     systems allow (the build had stopped on a traceback, then on 'File name too long')."""
     from generator.ocio.write import build, for_folder
     from generator.spec import load
@@ -77,4 +82,4 @@ def test_a_spec_whose_names_slug_alike_or_run_long_builds_distinct_short_files(t
     folder = tmp_path / "show"
     build(for_folder(load.parse(text, "show.toml", tmp_path), folder, (2, 1)), folder)
     views = sorted(p.name for p in (folder / "luts").iterdir() if p.name.startswith("view_"))
-    assert len(views) == len(names) and max(len(v.encode()) for v in views) < 100, views
+    assert len(views) == len(names) and max(len(v.encode()) for v in views) <= 255, views

@@ -148,7 +148,7 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
      "the Default rule matches every file"),
     ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
      'inactive = ["ACEScct", "acescct_ap1"]', "inactive[1]", "'acescct_ap1' names 'ACEScct', as inactive[0] does"),
-    ('inactive = ["Scale - Nope"]', "inactive[0]", "a display's or a '<view> - <display>' space"),
+    ('inactive = ["Scale - Nope"]', "inactive[0]", "the display reference or a '<view> - <display>' space"),
     ('display_view_spaces = false\ninactive = ["Scale - sRGB - Display"]', "inactive[0]", "not among the colour spaces"),
     ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["lin_ap1"]',
      "inactive[0]", "'lin_ap1' is the scene_linear role's colour space, which hosts take without asking"),
@@ -157,6 +157,7 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["ACEScct"]\n'
      '[[file_rule]]\nname = "Plates"\nextension = "dpx"\ncolour_space = "compositing_log"\n[[file_rule]]\n'
      'name = "Default"\ncolour_space = "default"', "inactive[0]", "the colour space of file rule 'Plates'"),
+    ('inactive = ["srgb_display"]', "inactive[0]", "'srgb_display' is a display's colour space (its views show through it)"),
     ("[[display]]\nname = 'HLG'\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\nwhite = 'D65'\neotf = 'HLG'",
      "display[0].primaries", "allowed: gamut = \"Rec.2020\""),
     ("name = = 1", "-", "not valid TOML"),
@@ -298,11 +299,13 @@ def test_file_rules_left_out_are_the_embedded_defaults_and_cover_both_jpeg_suffi
 
 def test_inactive_spaces_are_written_by_their_own_names_generated_ones_too():
     """OCIO hides no colour space that its alias names in inactive_colorspaces (it logs and shows it),
-    and a build's display and '<view> - <display>' spaces are colour spaces a TD may hide too."""
+    and a build's display reference and '<view> - <display>' spaces are colour spaces a TD may
+    hide too."""
     spec = parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-                 'inactive = ["acescct_ap1", "scale - srgb - display", "cie_xyz_d65_display", "Gamma 2.6 DCI-P3 - Display"]')
+                 'inactive = ["acescct_ap1", "scale - srgb - display", "cie_xyz_d65_display", '
+                 '"Colorimetric - Gamma 2.6 DCI-P3 - Display"]')
     assert spec.inactive == ("ACEScct", "Scale - sRGB - Display", "CIE XYZ-D65 - Display-referred",
-                             "Gamma 2.6 DCI-P3 - Display")
+                             "Colorimetric - Gamma 2.6 DCI-P3 - Display")
     assert resolved.loads(resolved.dumps(spec)) == spec
 
 

@@ -38,18 +38,20 @@ def test_every_view_is_checked_from_three_inputs(spec, built):
     assert len(views) == 3 * sum(len(d.views) for d in spec.displays)
 
 
-def test_views_are_checked_from_active_inputs_a_host_can_offer():
-    """Blender offers no inactive space: an inactive compositing_log target or first display
-    gives way to the first active log space and display (verify had failed such a config
-    with "enum 'ACEScct' not found")."""
+def test_blender_checks_no_view_from_an_inactive_space():
+    """Blender offers no inactive space: a view is not checked there from an inactive
+    compositing_log role's space (verify had failed such a config with "enum 'ACEScct' not
+    found"), and still is in every other engine."""
     from pathlib import Path
 
     from generator.spec import load
+    from generator.verify.blender import BlenderEngine
 
-    spec = load.parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "ACEScc", "sRGB Encoded Rec.709 (sRGB)", '
-                      '"Raw"]\ninactive = ["ACEScct", "sRGB - Display"]\n', "show.toml", Path("."))
-    sources = [e.name for e in checks.view_sources(spec, paths.endpoints(spec))]
-    assert sources == ["ACEScg", "ACEScc", spec.displays[1].name]
+    spec = load.parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+                      'inactive = ["acescct_ap1"]\n', "show.toml", Path("."))
+    views = [c for c in checks.build_checks(spec, "quick", kinds=(checks.VIEW,)) if c.view != paths.RAW]
+    assert {c.src for c in views} == {"ACEScg", "ACEScct", spec.displays[0].name}
+    assert {c.src for c in views if BlenderEngine().supports(c, spec)} == {"ACEScg", spec.displays[0].name}
 
 
 def test_every_baked_lut_file_is_checked(build_config, built):

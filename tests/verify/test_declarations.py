@@ -90,7 +90,7 @@ def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
     from generator.spec import load
 
     text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
-            '"Linear Rec.2020"]\ninactive = ["lin_rec2020", "Cam Log", "wall_display"]\n'
+            '"Linear Rec.2020"]\ninactive = ["lin_rec2020", "Cam Log", "cie_xyz_d65_display"]\n'
             'display_view_spaces = false\n'
             '[[custom_space]]\nname = "Cam Log"\naliases = ["cam_log"]\ngamut = "Rec.2020"\n'
             'transfer = { family = "log_camera", base = 10, log_side_slope = 0.25, log_side_offset = 0.6, '
@@ -107,7 +107,8 @@ def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
     cfg = ocio.Config.CreateFromFile(str(config))
     assert declarations.differences(cfg, resolved.read_beside(config)) == []
     active = set(cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ACTIVE))
-    assert not {"Linear Rec.2020", "Cam Log", "Wall"} & active and {"ACEScg", "sRGB - Display"} <= active
+    assert not {"Linear Rec.2020", "Cam Log", "CIE XYZ-D65 - Display-referred"} & active
+    assert {"ACEScg", "Wall", "sRGB - Display"} <= active
     assert cfg.getColorSpaceFromFilepath("/show/sh010_acescg_v012.1001.exr")[0] == "ACEScg"  # the whole path matches
     assert cfg.getColorSpaceFromFilepath("/show/sh010_acescg_v12.1001.exr")[0] == "default"
     rules = cfg.getFileRules()
