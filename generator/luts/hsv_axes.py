@@ -24,12 +24,16 @@ tables and float32 arithmetic remain.
 OCIO's HSV is singular on the cone ``M = -m``, where ``V`` is the difference of
 two equal magnitudes and ``S`` reaches 2: the colour's size is ``|V| u``. The
 shared file therefore takes ``t = 2 - S`` first (exact in float32 for ``S`` in
-[1, 2]) and maps it to ``u``'s coordinate in a half-float-domain table, whose
-entries are spaced 2**-11 relative down to ``t = 2**-14`` (``u`` up to
+[1, 2], so a multiple of 2**-23) and maps it to ``u``'s coordinate in a
+half-float-domain table, whose entries are spaced 2**-11 relative down to
+``t = 2**-14`` and 2**-24 apart below, among the subnormal halves: every ``t`` OCIO
+gives there is an entry, read exactly, down to ``t = 2**-23`` (``u`` up to
 :data:`SATURATION_REACH`). What is left is OCIO's own float32 rounding of ``S``
-and ``V`` near the cone, relative ``2**-24`` times about ``u``, and the float32
-resolution of the lattice coordinates (:func:`float32_resolution`), which the verifier
-carries as the view's float32 limit.
+and ``V`` near the cone, relative ``2**-24`` times about ``u`` (``t`` is uncertain by
+about 2**-23 absolute: a colour 1e-5 from the cone keeps its size to about 1%), and
+the float32 resolution of the lattice coordinates (:func:`float32_resolution`), which
+the verifier carries as the view's float32 limit. Only on the cone itself (``S`` = 2
+in float32) is the colour's size lost: it comes out black.
 """
 
 from __future__ import annotations
@@ -43,9 +47,12 @@ from generator import tolerances
 #: float32 precision).
 HSV_SIZE = 19
 
-#: Largest ``u = 1 / (2 - S)`` the lattice reaches: ``t = 2 - S`` down to 2**-14, the
-#: smallest normal half float, below which the shared table's entries thin out.
-SATURATION_REACH = 2.0**14
+#: Largest ``u = 1 / (2 - S)`` the lattice reaches: ``t = 2 - S`` down to 2**-23, the
+#: smallest ``t`` OCIO's float32 ``S`` in [1, 2] leaves short of the cone (a subnormal
+#: half, on an entry of the shared table). Clamped at 2**14 (``t`` 6e-5), colours nearer
+#: the cone came out as if that far from it, too dark: sRGB-linear (-1, 0.5, 1.00002)
+#: 261 ten-bit codes, (-2, 1.5, 2.00001) 674.
+SATURATION_REACH = 2.0**23
 
 #: ``u`` at the saturation nodes above 1, up to :data:`SATURATION_REACH`. Each is ``1 / t``
 #: for a half float ``t``: the shared table is interpolated between half floats, so its
@@ -56,8 +63,10 @@ SATURATION_REACH = 2.0**14
 #: of luminance near 0 turns it into a visible code (its mixed value
 #: ``V ((2u - 1) + (1 - u) / h_Y)`` is a difference of large terms). OCIO's own HSV resolves
 #: ``u`` to about ``6e-8 u**2``, so the cells widen with ``u`` (nodes geometric from 1 put
-#: 1.3e-6 of error, 2.2 ten-bit codes on Rec.1886, into such colours).
-SATURATION_NODES_ABOVE = (8 / 7, 4 / 3, 2.0, 4.0, 8.0, 32.0, 256.0, 2048.0, SATURATION_REACH)
+#: 1.3e-6 of error, 2.2 ten-bit codes on Rec.1886, into such colours): a cell from ``u_k``
+#: keeps its width within ``u_k**2 / 2`` (as 2 to 4 does), and the last two, 256 to 8192
+#: and 8192 to 2**23, within an eighth of it.
+SATURATION_NODES_ABOVE = (8 / 7, 4 / 3, 2.0, 4.0, 8.0, 32.0, 256.0, 8192.0, SATURATION_REACH)
 
 #: The value axis: V at each node in lattice order. A float32 coordinate holds about 7
 #: digits, so V = 0 sits at coordinate 0 (dark colours keep their relative precision) and
@@ -184,7 +193,7 @@ def shared_table() -> np.ndarray:
 def table_inputs() -> np.ndarray:
     """OCIO HSV values (n, 3) reading every entry of the shared table the view can reach, one
     column at a time: hue on every half float from 0 to 1, ``t = 2 - S`` on every half float
-    from 2**-14 (SATURATION_REACH) to 2, V on every finite half float of either sign; the other
+    from 1 / SATURATION_REACH to 2, V on every finite half float of either sign; the other
     two at values of their own columns' nodes."""
     halves = _half_values()
     finite = halves[np.isfinite(halves)]

@@ -35,6 +35,12 @@ def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
     assert table[minus_zero + 1, 2] < 1.0  # the smallest negative half float: a float between reads both
     assert table[at[1.0], 2] == hsv_axes.VALUE_NODES.index(1.0) / (n - 1)
     assert np.array_equal(table[[at[0.25], at[0.5]], 0], np.array([0.25, 0.5]) / hsv_axes.SHARED_SCALE)
-    # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at the smallest normal half.
-    assert table[at[2.0**-14], 1] == 1.0 and table[at[0.5], 1] == pytest.approx(
+    # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at t = 2**-23, a subnormal half.
+    assert table[at[2.0**-23], 1] == 1.0 and table[at[0.5], 1] == pytest.approx(
         np.interp(2.0, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), abs=1e-15)
+    # Every t OCIO gives below 2**-14 (a multiple of 2**-23: 2 - S in float32) is an entry.
+    t = np.arange(1, 2**9 + 1) * 2.0**-23
+    assert np.all(np.isin(t, half))
+    entries = table[[at[v] for v in t], 1]
+    assert np.allclose(entries, np.interp(1.0 / t, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), rtol=0, atol=1e-15)
+    assert np.all(np.diff(entries) < 0.0)  # u's coordinate resolves each of them
