@@ -152,6 +152,14 @@ FLOAT32_HSV_ROUNDINGS = 8
 #: file's table (its index and its interpolation) and the lattice's index.
 FLOAT32_COORDINATE_ROUNDINGS = 4
 
+#: How far OCIO's float32 RGB_TO_HSV leaves a saturation S in [1, 2] from the exact S of
+#: its float32 input, absolute: the rounding of max - min (2**-24 of it, up to 2**-23 of S
+#: near 2) and of the division (half of S's last place, 2**-24); measured 1.49 * 2**-23 on
+#: colours from 1e-7 to 1e-3 of OCIO HSV's cone. There the colour's size is V / (2 - S), so
+#: this is the float32 limit of any view through OCIO's HSV: 1.8e-7 / (2 - S) relative
+#: (2% 1e-5 from the cone, 18% 1e-6 from it).
+FLOAT32_HSV_CONE_SATURATION = 1.5 * 2.0**-23
+
 #: A colour a bounded encoding (ADX, a tabulated curve) represents decodes back to itself
 #: within float64 rounding, relative to its largest component; colours that do not
 #: (non-positive printing-density exposure has no unique density, a table clamps beyond its

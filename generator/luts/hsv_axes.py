@@ -245,6 +245,20 @@ def _cell_width(nodes: np.ndarray, x: np.ndarray) -> np.ndarray:
     return nodes[k + 1] - nodes[k]
 
 
+def saturation_coordinate_resolution(values: np.ndarray) -> np.ndarray:
+    """How far float32 leaves the saturation ``S`` of OCIO HSV ``values`` (n, 3) uncertain
+    through its lattice coordinate, absolute: 6e-8 relative at each of
+    FLOAT32_COORDINATE_ROUNDINGS steps, times the width of its cell of ``u`` per unit of
+    coordinate, turned back into ``S`` (``dS = du / u**2`` above 1)."""
+    values = np.asarray(values, dtype=np.float64)
+    steps = tolerances.FLOAT32_COORDINATE_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF
+    saturation = values[:, 1]
+    with np.errstate(divide="ignore"):
+        u = np.where(saturation <= 1.0, saturation, 1.0 / np.maximum(2.0 - saturation, 1.0 / SATURATION_REACH))
+    du = steps * shared_coordinates(values)[:, 1] * (HSV_SIZE - 1) * _cell_width(saturation_nodes(), u)
+    return np.where(u > 1.0, du / np.maximum(u, 1.0) ** 2, du)
+
+
 def float32_resolution(values: np.ndarray) -> np.ndarray:
     """How far float32 leaves each of OCIO HSV ``values`` (n, 3) uncertain on the way through
     the view, absolute: the hue, a value in [0, 1] rounded by each of the
@@ -257,10 +271,7 @@ def float32_resolution(values: np.ndarray) -> np.ndarray:
     operators, steps = tolerances.FLOAT32_HSV_ROUNDINGS * u32, tolerances.FLOAT32_COORDINATE_ROUNDINGS * u32
     saturation, value = values[:, 1], values[:, 2]
     coordinates = shared_coordinates(values)
-    with np.errstate(divide="ignore"):
-        u = np.where(saturation <= 1.0, saturation, 1.0 / np.maximum(2.0 - saturation, 1.0 / SATURATION_REACH))
-    du = steps * coordinates[:, 1] * n * _cell_width(saturation_nodes(), u)
-    ds = operators * np.maximum(saturation, 1.0) + np.where(u > 1.0, du / np.maximum(u, 1.0) ** 2, du)
+    ds = operators * np.maximum(saturation, 1.0) + saturation_coordinate_resolution(values)
     nodes = np.array(VALUE_NODES)
     positive, negative = nodes[:POSITIVE_VALUE_NODES], -nodes[POSITIVE_VALUE_NODES:][::-1]
     cell = np.where(value >= 0.0, _cell_width(positive, np.abs(value)), _cell_width(negative, np.abs(value)))

@@ -118,6 +118,43 @@ def test_bright_colours_of_little_luminance_are_mapped_beyond_a_thousand_times_t
     assert np.all(codes >= low - tolerance) and np.all(codes <= high + tolerance)
 
 
+def _cone_colours(rng, t, count):
+    """Display-linear colours ``t`` from OCIO HSV's cone (largest channel M, smallest
+    -M (1 - t), so ``2 - S = t``), of every hue and size, either sign, in float32."""
+    size = 10.0 ** rng.uniform(-2.0, 1.0, count)
+    colours = np.stack([size, -size * (1.0 - t), rng.uniform(-1.0, 1.0, count) * size], axis=-1)
+    colours = np.take_along_axis(colours, np.argsort(rng.random((count, 3)), axis=-1), axis=-1)
+    colours[count // 2:] *= -1.0
+    return colours.astype(np.float32).astype(np.float64)
+
+
+@pytest.mark.parametrize("name", SDR)
+def test_colours_a_hair_from_the_cone_keep_their_size(default_spec, tmp_path, name):
+    """1e-5 and 1e-6 from OCIO HSV's cone (``t = 2 - S``) a colour's size is ``V / t``, and
+    OCIO's float32 S leaves ``t`` uncertain by FLOAT32_HSV_CONE_SATURATION (2% and 18% of the
+    size); the view lands between the method at ``t`` moved that far, and by its lattice
+    coordinate's resolution, either way (within the exact views' tolerance in code values).
+    With ``u = 1 / t`` clamped at 2**14 (t 6e-5) such colours came out up to 600 codes dark."""
+    display = _display(default_spec, name)
+    gamut, peak = reference.display_gamut(display), display.clip_high
+    rng = np.random.default_rng(23)
+    linear = np.concatenate([_cone_colours(rng, t, 300) for t in (1e-5, 1e-6)])
+    values = hsv_axes.ocio_rgb_to_hsv(linear)
+    assert np.all(np.abs(2.0 - values[:, 1] - np.repeat([1e-5, 1e-6], 300)) < 2e-7)
+    out = _view_apply(default_spec, display, tmp_path, np.eye(3))(linear) * peak
+    shift = tolerances.FLOAT32_HSV_CONE_SATURATION + hsv_axes.saturation_coordinate_resolution(values)
+    bounds = []
+    for sign in (1.0, -1.0):
+        moved = values.copy()
+        moved[:, 1] += sign * shift
+        bounds.append(desaturate(hsv_axes.ocio_hsv_to_rgb(moved, max_saturation=2.0), gamut) * peak)
+    codes, low, high = (reference.display_encode(display, light)
+                        for light in (out, np.minimum(*bounds), np.maximum(*bounds)))
+    tolerance = tolerances.LUT_CLF_EXACT_CODES / 1023.0
+    assert np.all(codes >= low - tolerance) and np.all(codes <= high + tolerance)
+    assert codes.max() > 0.5  # not all black
+
+
 def test_near_the_cone_the_view_keeps_ocio_hsv_precision(default_spec, tmp_path):
     """An ACEScct green ramp near black crosses OCIO HSV's cone: V is the small difference
     of two equal magnitudes, and a small negative V's coordinate sits near 1 in float32. The
