@@ -152,10 +152,11 @@ def test_a_perceptual_shaper_entry_nudged_is_named(config_copy, entry):
     assert "luts/view_srgb_display_perceptual_33.clf" in _newly_failing(config_copy, nudge, (LUT,))
 
 
-@pytest.mark.parametrize("half, column", [(0x0CBA, 0), (0x0B5B, 2)])
+@pytest.mark.parametrize("half, column", [(0x0CBA, 0), (0x0B5B, 2), (0x0010, 1)])
 def test_an_entry_of_the_shared_hsv_table_is_named(config_copy, half, column):
-    """Every entry of the shared HSV table is read (a hue near 3e-4, a value near 2e-4: a
-    narrow band no scene colour of the quick probes reaches), and one moved is named."""
+    """Every entry of the shared HSV table is read (a hue near 3e-4, a value near 2e-4, a
+    saturation 2**-20 from OCIO HSV's cone, a subnormal half: narrow bands no scene colour of
+    the quick probes reaches), and one moved is named."""
     def nudge(path):
         clf = path.parent / "luts" / "hsv_coordinates.clf"
         lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
