@@ -44,3 +44,16 @@ def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
     entries = table[[at[v] for v in t], 1]
     assert np.allclose(entries, np.interp(1.0 / t, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), rtol=0, atol=1e-15)
     assert np.all(np.diff(entries) < 0.0)  # u's coordinate resolves each of them
+
+
+def test_the_far_saturation_cells_resolve_u_within_ocio_hsv_float32():
+    """From u = 256 to the reach (t from 2**-8 to 2**-23, the cells widening fastest), the
+    float32 resolution of u's lattice coordinate, back in S, stays within OCIO's own float32
+    resolution of S through the view (FLOAT32_HSV_ROUNDINGS): nodes 256, 8192 and 2**23 keep
+    it to about half (one cell from 256 to 2**23 would be 500 times it)."""
+    from generator import tolerances
+
+    u = np.geomspace(256.0, hsv_axes.SATURATION_REACH, 20001)
+    values = np.stack([np.zeros_like(u), 2.0 - 1.0 / u, np.full_like(u, 0.5)], axis=-1)
+    own = tolerances.FLOAT32_HSV_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF * values[:, 1]
+    assert np.all(hsv_axes.saturation_coordinate_resolution(values) <= own)
