@@ -42,7 +42,8 @@ HSV_ENTRIES = 6 * 2048 + 1
 #: Name of the shared file in a config's LUT folder.
 SHARED_FILE = "hsv_coordinates.clf"
 
-#: Significant digits of the 3D table's values: 9 write any float32 back exactly, whatever its size (values over range reach about 7e12).
+#: Significant digits of the 3D table's values: 9 write any float32 back exactly, whatever
+#: its size (values over range reach about 7e12).
 HSV_DIGITS = 9
 
 #: Decimals of the 1D tables' values (lattice coordinates and hue, within [0, 1]).
