@@ -169,6 +169,23 @@ def test_an_entry_of_the_shared_hsv_table_is_named(config_copy, half, column):
     assert _newly_failing(config_copy, nudge, (LUT,)) == {"luts/hsv_coordinates.clf"}
 
 
+def test_a_scale_file_dimmed_by_half_a_code_is_named(config_copy):
+    """The exact lattices (Scale, Desaturate) are held to the in-gamut target on every set, as
+    Perceptual is to its lattice: the sRGB Scale file's output table scaled by 0.9995 (half a
+    ten-bit code at white) fails its view and file; under the issue's every-set bound of a
+    code, a file scaled by 0.9991 had passed."""
+    def dim(path):
+        clf = path.parent / "luts" / "view_srgb_display_scale_17.clf"
+        lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
+        start = next(i for i, line in enumerate(lines) if line.startswith("<LUT1D")) + 2
+        end = next(i for i in range(start, len(lines)) if lines[i].startswith("</Array>"))
+        lines[start:end] = [f"{float(line) * 0.9995!r}\n" for line in lines[start:end]]
+        clf.write_text("".join(lines), encoding="utf-8")
+
+    failing = _newly_failing(config_copy, dim, (VIEW, LUT))
+    assert failing == {"luts/view_srgb_display_scale_17.clf", "sRGB - Display / Scale"}
+
+
 def test_a_perceptual_file_off_by_codes_fails_its_view(config_copy):
     """Node values a few codes off inside the cube fail the sRGB Perceptual view too, no other
     display's."""
