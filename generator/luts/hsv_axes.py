@@ -65,7 +65,7 @@ SATURATION_REACH = 2.0**23
 #: ``u`` to about ``6e-8 u**2``, so the cells widen with ``u`` (nodes geometric from 1 put
 #: 1.3e-6 of error, 2.2 ten-bit codes on Rec.1886, into such colours): a cell from ``u_k``
 #: keeps its width within ``u_k**2 / 2`` (as 2 to 4 does), and the last two, 256 to 8192
-#: and 8192 to 2**23, within an eighth of it.
+#: and 8192 to 2**23, within an eighth of u_k**2.
 SATURATION_NODES_ABOVE = (8 / 7, 4 / 3, 2.0, 4.0, 8.0, 32.0, 256.0, 8192.0, SATURATION_REACH)
 
 #: The value axis: V at each node in lattice order. A float32 coordinate holds about 7
