@@ -48,8 +48,8 @@ def _stem(name: str, level: int) -> str:
 
 def file_stems(names: Iterable[str], taken: Iterable[str] = ()) -> dict[str, str]:
     """A file-name stem for each of ``names``, distinct for distinct names and from the stems
-    ``taken``: the name's slug, or, where the slug is empty, longer than :data:`SLUG_MAX`,
-    another name's too or taken, the slug (cut) and the first digits of the SHA-256 of the
+    ``taken``: the name's slug, or, where the slug is empty, longer than :data:`STEM_MAX`,
+    another name's too or taken, the slug (cut to fit) and the first digits of the SHA-256 of the
     exact name; more digits while a stem still meets another (a name may itself end in
     another's digest). A stem depends on the names alone, not on their order, so a spec
     names its files the same way every build."""

@@ -183,7 +183,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     left_out = tuple(n for d in listed for n in (d.name, *d.aliases) if n.lower() not in present)
     chosen_roles = _roles(roles, defaults, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()})
     rules = _file_rules(raw, source, every | set(taken))
-    names = namespace.colour_spaces((*listed, *customs), displays, view_spaces)
+    names = namespace.colour_spaces((*listed, *customs), taken)
     return Spec(
         name=labels.string(raw.get("name", "ocioforge"), source, "name"),
         description=labels.string(raw.get("description", ""), source, "description", text=True),

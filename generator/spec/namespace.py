@@ -31,10 +31,12 @@ def display_view_space(view: str, display: str) -> str:
 @dataclass(frozen=True)
 class Owner:
     """What a generated name belongs to: the spec field that brings it ("" for one every config
-    has) and its description in errors."""
+    has), its description in errors, and the colour space it names (``space``, its own name;
+    "" for a role)."""
 
     field: str
     what: str
+    space: str = ""
 
 
 def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, source: str,
@@ -54,35 +56,31 @@ def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, s
         taken[name.lower()] = owner
 
     for name in (DISPLAY_REFERENCE, *DISPLAY_REFERENCE_ALIASES):
-        add(name, Owner("", f"the generated display-referred reference space {DISPLAY_REFERENCE!r}"))
+        add(name, Owner("", f"the generated display-referred reference space {DISPLAY_REFERENCE!r}", DISPLAY_REFERENCE))
     chosen = {r.lower() for r in spec_roles}
     for role in dict.fromkeys(r for r in roles if r.lower() not in chosen):
         add(role, Owner(f"roles.{role}", f"the role {role!r}"))
     for i, display in enumerate(displays):
         what = f"the generated display colour space of display[{i}] {display.name!r}"
-        add(display.name, Owner(f"display[{i}].name", what))
+        add(display.name, Owner(f"display[{i}].name", what, display.name))
         for j, alias in enumerate(display.aliases):
-            add(alias, Owner(f"display[{i}].aliases[{j}]", f"an alias of {what}"))
+            add(alias, Owner(f"display[{i}].aliases[{j}]", f"an alias of {what}", display.name))
     for i, display in enumerate(displays if display_view_spaces else ()):
         for j, view in enumerate(display.views):
             if view != RAW_VIEW:
-                add(display_view_space(view, display.name), Owner(f"display[{i}].views[{j}]",
-                    f"the generated display-view colour space of view {view!r} on display[{i}] (display_view_spaces = true)"))
+                space = display_view_space(view, display.name)
+                add(space, Owner(f"display[{i}].views[{j}]", f"the generated display-view colour space of view "
+                                 f"{view!r} on display[{i}] (display_view_spaces = true)", space))
     for role in dict.fromkeys(spec_roles):
         add(role, Owner(f"roles.{role}", f"the role {role!r}"))
     return taken
 
 
-def colour_spaces(spaces, displays: tuple[Display, ...], display_view_spaces: bool) -> dict[str, str]:
+def colour_spaces(spaces, taken: dict[str, Owner]) -> dict[str, str]:
     """Every name and alias of a config's colour spaces (lower case) to the space's own name: the
-    spec's ``spaces``, the display reference, each display's and each '<view> - <display>'."""
+    spec's ``spaces`` and the generated ones among the names :func:`generated` has ``taken``."""
     names = {n.lower(): space.name for space in spaces for n in (space.name, *space.aliases)}
-    names.update((n.lower(), DISPLAY_REFERENCE) for n in (DISPLAY_REFERENCE, *DISPLAY_REFERENCE_ALIASES))
-    for display in displays:
-        names.update((n.lower(), display.name) for n in (display.name, *display.aliases))
-        for view in display.views if display_view_spaces else ():
-            if view != RAW_VIEW:
-                names[display_view_space(view, display.name).lower()] = display_view_space(view, display.name)
+    names.update((name, owner.space) for name, owner in taken.items() if owner.space)
     return names
 
 

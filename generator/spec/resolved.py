@@ -245,12 +245,13 @@ class _Reader:
         builds before names were written as the space's own wrote them),
         the roles' targets among the spec's, its displays and the display reference, the file
         rules' among those and the roles."""
-        from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces
+        from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces, generated
 
         spaces = {n.lower() for n in spec.space_names}
         targets = spaces | {n.lower() for d in spec.displays for n in (d.name, *d.aliases)} | {DISPLAY_REFERENCE.lower()}
         refers = [("scene_reference", spec.scene_reference, spaces)]
-        every = set(colour_spaces(spec.colour_spaces, spec.displays, spec.display_view_spaces))  # aliases too (older builds)
+        taken = generated(spec.displays, spec.display_view_spaces, (), self.source)
+        every = set(colour_spaces(spec.colour_spaces, taken))  # aliases too (older builds)
         refers += [(f"inactive[{i}]", name, every) for i, name in enumerate(spec.inactive)]
         refers += [(f"roles[{i}][1]", target, targets) for i, (_, target) in enumerate(spec.roles)]
         refers += [(f"file_rules[{i}].colour_space", r.colour_space, targets | {role for role, _ in spec.roles})
