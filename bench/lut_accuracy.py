@@ -23,6 +23,13 @@ gamut mappings are measured for ocioforge alone (CLF), then every display's
 config views as the config runs them, and the Desaturate views' lattices with
 trilinear weights rounded as a GPU's texture filtering rounds them (simulated).
 
+Every file is read with OCIO's default optimisation flags, as most hosts run it,
+and ocioforge's CLFs also losslessly (each operator as written): the default flags'
+fast pow, log and exp move a CLF's decoding curve and Log operator, which the
+lossless rows leave out. ocioforge's .cube is also read with its node values
+clamped to [0, 1] first, as a reader that clamps a table's entries (a camera's or
+monitor's LUT slot, a LUT box) does: fitted nodes lie outside that range.
+
 Run: .venv/bin/python bench/lut_accuracy.py [--size 33]
 """
 
@@ -94,13 +101,24 @@ def ocio_bakes(spec, source, display: str, size: int, folder: Path):
             yield shaper or "none", out
 
 
-def _measure(spec, req, path: Path, method: str, interpolation) -> dict:
+def _measure(spec, req, path: Path, method: str, interpolation, optimization: str = "OPTIMIZATION_DEFAULT") -> dict:
     import PyOpenColorIO as ocio
 
     from generator.luts import probes
 
-    apply = probes.ocio_apply(ocio.FileTransform(str(path), interpolation=interpolation))
+    apply = probes.ocio_apply(ocio.FileTransform(str(path), interpolation=interpolation), optimization=optimization)
     return _figures(probes.set_errors(spec, req.source, req.display, method, apply)[0])
+
+
+def clamped_cube(path: Path, out: Path) -> Path:
+    """A copy of a Resolve .cube with its 3D table's values clamped to [0, 1] (its shaper kept)."""
+    lines = path.read_text(encoding="ascii").splitlines(keepends=True)
+    shaper = next((int(line.split()[1]) for line in lines if line.startswith("LUT_1D_SIZE")), 0)
+    first = next(i for i, line in enumerate(lines) if line[:1] in "-0123456789.")
+    table = np.loadtxt(lines[first + shaper:], ndmin=2)
+    body = "".join(f"{r:.5f} {g:.5f} {b:.5f}\n" for r, g, b in np.clip(table, 0.0, 1.0))
+    out.write_text("".join(lines[:first + shaper]) + body, encoding="ascii")
+    return out
 
 
 def _ratios(ours: dict, theirs: dict[str, dict]) -> tuple[str, str]:
@@ -128,15 +146,23 @@ def compare(spec, source: str, display: str, size: int, folder: Path) -> None:
         for label, interpolation in interpolations:
             ours[(fmt, label)] = _measure(spec, req, path, "clip", interpolation)
             print(f"  ocioforge {fmt:12s} {label:11s} {_fmt(ours[(fmt, label)])}")
+        if fmt == "clf":
+            lossless = _measure(spec, req, path, "clip", ocio.INTERP_TETRAHEDRAL, "OPTIMIZATION_LOSSLESS")
+            print(f"  ocioforge clf lossless   tetrahedral {_fmt(lossless)}")
+        else:
+            clamped = _measure(spec, req, clamped_cube(path, folder / "clamped.cube"), "clip", ocio.INTERP_TETRAHEDRAL)
+            print(f"  ocioforge .cube clamped  tetrahedral {_fmt(clamped)}")
+            ours[("clamped", "tetrahedral")] = clamped
     theirs = {label: {} for label, _ in interpolations}
     for shaper, path in ocio_bakes(spec, req.source, display, size, folder):
         for label, interpolation in interpolations:
             theirs[label][shaper] = _measure(spec, req, path, "clip", interpolation)
             print(f"  ociobakelut {shaper[:22]:22s} {label:11s} {_fmt(theirs[label][shaper])}")
     for label, _ in interpolations:
-        for fmt in ("resolve_cube", "clf"):
-            for line in _ratios(ours[(fmt, label)], theirs[label]):
-                print(f"  ratio {fmt:12s} {label:11s} {line}")
+        for fmt in ("resolve_cube", "clf", "clamped"):
+            if (fmt, label) in ours:
+                for line in _ratios(ours[(fmt, label)], theirs[label]):
+                    print(f"  ratio {fmt:12s} {label:11s} {line}")
 
 
 def methods(spec, source: str, display: str, size: int, folder: Path) -> None:
@@ -150,6 +176,8 @@ def methods(spec, source: str, display: str, size: int, folder: Path) -> None:
         path.write_bytes(bake.bake(req)[""])
         figures = _measure(spec, req, path, method, ocio.INTERP_TETRAHEDRAL)
         print(f"  ocioforge clf {method:11s} {_fmt(figures)}")
+        lossless = _measure(spec, req, path, method, ocio.INTERP_TETRAHEDRAL, "OPTIMIZATION_LOSSLESS")
+        print(f"      lossless  {method:11s} {_fmt(lossless)}")
 
 
 def config_views(spec) -> None:

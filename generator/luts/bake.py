@@ -244,10 +244,13 @@ def bake(req: Request) -> dict[str, bytes]:
     if req.fmt == "iridas_cube":
         return {"": formats.iridas_cube(lat, title, notes(req, lat))}
     if req.fmt == "spi3d":
-        files = {"": formats.spi3d(lat)}
-        if formats.needs_spi1d(lat):
-            files[SHAPER_SUFFIX] = formats.spi1d_shaper(lat)
-        return files
+        if not formats.needs_spi1d(lat):
+            return {"": formats.spi3d(lat, [f"ocioforge: {title}.", *notes(req, lat)[1:]])}
+        chain = (f"Apply the {SHAPER_SUFFIX} of the same name first (its 1D shaper, linear), then the .spi3d "
+                 "(tetrahedral): in OCIO a GroupTransform of the two FileTransforms, in Nuke two OCIOFileTransform "
+                 "nodes in that order.")
+        return {"": formats.spi3d(lat, [f"ocioforge: {title}.", *notes(req, lat)[1:], chain]),
+                SHAPER_SUFFIX: formats.spi1d_shaper(lat, [f"ocioforge: the shaper of {title}.", chain])}
     return {"": formats.clf(lat, identifier(req), " ".join(notes(req, lat)), descriptors=(req.source.name, req.display.name))}
 
 

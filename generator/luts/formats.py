@@ -46,8 +46,25 @@ def blue_fastest(cube: np.ndarray) -> np.ndarray:
     return cube.reshape(-1, 3)
 
 
+#: Longest line a .cube may hold (Adobe's Cube specification 1.0: 250 bytes, its end
+#: included); comment lines are wrapped, a title cut, to fit.
+LINE_MAX = 250
+
+
 def _comments(lines) -> str:
-    return "".join(f"# {line}\n" for line in lines)
+    """``# `` comment lines, ASCII, each wrapped to fit :data:`LINE_MAX`."""
+    import textwrap
+
+    wrapped = (part for line in lines for part in textwrap.wrap(ascii_text(line), LINE_MAX - 3) or [""])
+    return "".join(f"# {part}\n" for part in wrapped)
+
+
+def _title(title: str) -> str:
+    """An Iridas ``TITLE`` line: ASCII, in double quotes, which the format cannot escape (one
+    in the text becomes a single quote), cut to fit :data:`LINE_MAX`."""
+    text = ascii_text(title).replace('"', "'")
+    room = LINE_MAX - len('TITLE ""\n')
+    return f'TITLE "{text if len(text) <= room else text[:room - 3] + "..."}"\n'
 
 
 def _n(value) -> str:
@@ -72,23 +89,28 @@ def iridas_cube(lattice: Lattice, title: str, notes=()) -> bytes:
     if lattice.shaper is not None:
         raise ValueError("an Iridas .cube holds no shaper")
     lo, hi = lattice.domain
-    head = (f'TITLE "{title}"\n{_comments(notes)}LUT_3D_SIZE {lattice.size}\n'
+    head = (f"{_title(title)}{_comments(notes)}LUT_3D_SIZE {lattice.size}\n"
             f"DOMAIN_MIN {_n(lo)} {_n(lo)} {_n(lo)}\nDOMAIN_MAX {_n(hi)} {_n(hi)} {_n(hi)}\n")
     return ascii_text(head).encode("ascii") + numbers.table(red_fastest(lattice.cube), lattice.decimals)
 
 
-def spi3d(lattice: Lattice) -> bytes:
+def spi3d(lattice: Lattice, notes=()) -> bytes:
+    """The .spi3d; ``notes`` go as ``#`` lines after the header's three lines, where OCIO's
+    reader (which takes only lines of six numbers there) and colour-science's skip them."""
     n = lattice.size
     index = np.indices((n, n, n)).reshape(3, -1).T
     values = numbers.table(blue_fastest(lattice.cube), lattice.decimals).decode("ascii").splitlines()
     rows = "".join(f"{i} {j} {k} {v}\n" for (i, j, k), v in zip(index.tolist(), values))
-    return f"SPILUT 1.0\n3 3\n{n} {n} {n}\n{rows}".encode("ascii")
+    return f"SPILUT 1.0\n3 3\n{n} {n} {n}\n{_comments(notes)}{rows}".encode("ascii")
 
 
-def spi1d_shaper(lattice: Lattice) -> bytes:
-    """The .spi1d taking the lattice's input to [0, 1] (a straight line without a shaper table)."""
+def spi1d_shaper(lattice: Lattice, notes=()) -> bytes:
+    """The .spi1d taking the lattice's input to [0, 1] (a straight line without a shaper table);
+    ``notes`` go as ``#`` lines after its first line, among the header's tags, where OCIO's
+    reader skips lines it does not know."""
     values = lattice.shaper if lattice.shaper is not None else np.array([0.0, 1.0])
-    return format_spi1d(values, lattice.domain).encode("ascii")
+    version, rest = format_spi1d(values, lattice.domain).split("\n", 1)
+    return f"{version}\n{_comments(notes)}{rest}".encode("ascii")
 
 
 def needs_spi1d(lattice: Lattice) -> bool:

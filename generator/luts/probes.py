@@ -183,9 +183,11 @@ def measure(spec: Spec, source: ColourSpace | None, display: Display, method: st
     return {name: Figures(float(e.max()), float(np.percentile(e, 99)), unit) for name, e in sets.items()}
 
 
-def ocio_apply(transform, interpolation=None, search_path: str = ""):
-    """A function applying an OCIO transform (e.g. a FileTransform) in float32 on the CPU;
-    files named by a relative path are looked up on ``search_path``.
+def ocio_apply(transform, interpolation=None, search_path: str = "", optimization: str = "OPTIMIZATION_DEFAULT"):
+    """A function applying an OCIO transform (e.g. a FileTransform) in float32 on the CPU,
+    optimised with the flags named by ``optimization`` (OCIO's default, what hosts run, takes
+    fast approximations of pow, log and exp; ``"OPTIMIZATION_LOSSLESS"`` evaluates the file as
+    written); files named by a relative path are looked up on ``search_path``.
 
     OCIO caches files by path; the cache is cleared first so a file rewritten at
     the same path is read anew."""
@@ -196,7 +198,7 @@ def ocio_apply(transform, interpolation=None, search_path: str = ""):
         transform.setInterpolation(interpolation)
     config = ocio.Config.CreateRaw()
     config.setSearchPath(search_path)
-    processor = config.getProcessor(transform).getDefaultCPUProcessor()
+    processor = config.getProcessor(transform).getOptimizedCPUProcessor(getattr(ocio, optimization))
 
     def apply(code):
         pixels = np.ascontiguousarray(np.asarray(code, dtype=np.float32))

@@ -103,7 +103,46 @@ def _replace_problem(out_dir: Path) -> str:
         if stray is not None:
             return (f"holds {LUT_FOLDER}/{stray.name}, which no build writes; --force replaces only a previous build "
                     f"(its {LUT_FOLDER} holds {' and '.join(LUT_SUFFIXES)} files alone)")
+        read = files_read(out_dir / CONFIG_FILENAME) if entries else set()
+        if read is None:
+            return (f"has a {CONFIG_FILENAME} OpenColorIO cannot load, so which files of {LUT_FOLDER} the build wrote "
+                    "cannot be told; --force replaces only a previous build")
+        own = next((e for e in entries if e.name not in read), None)
+        if own is not None:
+            return (f"holds {LUT_FOLDER}/{own.name}, which its {CONFIG_FILENAME} does not read, so no build wrote it; "
+                    "--force replaces only a previous build (move the file out first)")
     return ""
+
+
+def files_read(config: Path) -> set[str] | None:
+    """The file names the config at ``config`` reads: every FileTransform's, in every colour
+    space (inactive ones too, both directions), view transform, named transform and look;
+    None when OpenColorIO cannot load it."""
+    import PyOpenColorIO as ocio
+
+    try:
+        cfg = ocio.Config.CreateFromFile(str(config))
+    except (ocio.Exception, OSError):
+        return None
+    transforms = []
+    for space in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL):
+        transforms += [space.getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE),
+                       space.getTransform(ocio.COLORSPACE_DIR_FROM_REFERENCE)]
+    for view in cfg.getViewTransforms():
+        transforms += [view.getTransform(ocio.VIEWTRANSFORM_DIR_TO_REFERENCE),
+                       view.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)]
+    for named in cfg.getNamedTransforms(ocio.NAMEDTRANSFORM_ALL):
+        transforms += [named.getTransform(ocio.TRANSFORM_DIR_FORWARD), named.getTransform(ocio.TRANSFORM_DIR_INVERSE)]
+    for look in cfg.getLooks():
+        transforms += [look.getTransform(), look.getInverseTransform()]
+    names = set()
+    while transforms:
+        transform = transforms.pop()
+        if isinstance(transform, ocio.GroupTransform):
+            transforms += list(transform)
+        elif isinstance(transform, ocio.FileTransform):
+            names.add(Path(transform.getSrc()).name)
+    return names
 
 
 def target(out_dir: str | Path) -> Path:

@@ -85,14 +85,38 @@ def test_force_keeps_what_is_not_a_build_inside_its_lut_folder(tmp_path, capsys)
     assert (out / "luts" / "shot.exr").read_bytes() == b"keep"
 
 
+@pytest.mark.parametrize("name", ("grade.clf", "show_curve.spi1d"))
+def test_force_keeps_a_lut_of_its_own_in_the_lut_folder(tmp_path, capsys, name):
+    """A file of a build's suffixes that its config does not read is not the build's: --force
+    had deleted a TD's own CLF or .spi1d put in luts/, judging by suffix alone."""
+    out = tmp_path / "show"
+    assert run(capsys, "build", "-o", str(out))[0] == 0
+    (out / "luts" / name).write_bytes(b"keep")
+    code, _, err = run(capsys, "build", "-o", str(out), "--force")
+    assert code == 2 and err.count("\n") == 1 and f"luts/{name}, which its config.ocio does not read" in err, err
+    assert (out / "luts" / name).read_bytes() == b"keep"
+
+
+def test_force_refuses_a_build_whose_config_does_not_load(tmp_path, capsys):
+    """Which of luts/ a build wrote is told by the config that reads them: without one that
+    loads, nothing is replaced."""
+    out = tmp_path / "show"
+    assert run(capsys, "build", "-o", str(out))[0] == 0
+    (out / "config.ocio").write_text("not a config")
+    code, _, err = run(capsys, "build", "-o", str(out), "--force")
+    assert code == 2 and err.count("\n") == 1 and "config.ocio OpenColorIO cannot load" in err, err
+    assert (out / "config.ocio").read_text() == "not a config"
+
+
 def test_force_through_a_link_replaces_the_build_it_points_to(tmp_path, capsys):
     """A show's ``current`` link to a versioned build stays a link; the build is replaced."""
     build = tmp_path / "v001"
     assert run(capsys, "build", "-o", str(build))[0] == 0
     (tmp_path / "current").symlink_to("v001")
-    (build / "config.ocio").write_text("stale")
+    with (build / "config.ocio").open("a") as config:
+        config.write("# stale\n")
     assert run(capsys, "build", "-o", str(tmp_path / "current"), "--force")[0] == 0
-    assert (tmp_path / "current").is_symlink() and (build / "config.ocio").read_text().startswith("ocio_profile_version")
+    assert (tmp_path / "current").is_symlink() and not (build / "config.ocio").read_text().endswith("# stale\n")
     import PyOpenColorIO as ocio
 
     assert ocio.Config.CreateFromFile(str(build / "config.ocio")).getName() == "v001"

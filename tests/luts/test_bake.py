@@ -163,6 +163,27 @@ def test_clf_loads_in_ocio_2_1(default_spec, tmp_path):
     np.testing.assert_allclose([float(v) for v in done.stdout.split()[-3:]], expected, atol=1e-5)
 
 
+def test_an_spi3d_and_its_shaper_say_how_they_chain_and_load_in_ocio_2_1(default_spec, tmp_path):
+    """Nothing in either file had said the .spi3d alone is hundreds of codes off: each now
+    says to apply the .spi1d first, in comments OCIO 2.1, 2.6 and colour-science all skip."""
+    import subprocess
+
+    import colour
+
+    from tests.conftest import require_program
+
+    program = require_program("ociochecklut")
+    paths = _write(tmp_path, _request(default_spec, "spi3d", source="ACEScg"))
+    assert [p.suffix for p in paths] == [".spi3d", ".spi1d"]
+    for path in paths:
+        lut = colour.read_LUT(str(path))
+        assert any("Apply the .spi1d of the same name first" in line for line in lut.comments), lut.comments
+        value = {".spi1d": [0.4] * 3, ".spi3d": [0.5] * 3}[path.suffix]
+        done = subprocess.run([program, str(path), *map(str, value)], capture_output=True, text=True, check=True)
+        expected = probes.ocio_apply(_transform([path]))(np.array([value]))[0]
+        np.testing.assert_allclose([float(v) for v in done.stdout.split()[-3:]], expected, atol=1e-5)
+
+
 def test_writers_refuse_what_a_format_cannot_hold(default_spec):
     lat = bake.build_lattice(_request(default_spec, "resolve_cube"))
     with pytest.raises(ValueError):

@@ -7,6 +7,7 @@ from click.testing import CliRunner
 
 import generator.cli as cli
 from generator.cli.bake import command
+from generator.luts import formats
 
 
 def test_bakes_a_resolve_cube(tmp_path):
@@ -229,6 +230,28 @@ def test_a_cube_of_spaces_named_in_any_script_writes_an_ascii_header(tmp_path, f
     assert result.exit_code == 0, result.output
     head = out.read_bytes().split(b"LUT_3D_SIZE")[0].decode("ascii")
     assert "Camera A \\u30ab\\u30e1\\u30e9 to Ecran LED" in head
+
+
+@pytest.mark.parametrize("fmt", ["resolve_cube", "iridas_cube"])
+def test_a_cube_header_holds_quotes_and_long_names_within_the_line_limit(tmp_path, fmt):
+    """Adobe's Cube specification quotes TITLE with no escape and caps lines at 250 bytes: a
+    name with double quotes had closed the title early, and a long one passed the cap."""
+    name = 'Cam "Q" Log ' + "wide " * 40
+    spec = tmp_path / "show.toml"
+    spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+                    f'[[custom_space]]\nname = {name.strip()!r}\ngamut = "P3-D65"\ntransfer = "ACEScct"\n',
+                    encoding="utf-8")
+    out = tmp_path / "a.cube"
+    result = CliRunner().invoke(command, ["--spec", str(spec), "--from", name.strip(), "--to", "sRGB - Display",
+                                          "--format", fmt, "--size", "9", "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    head = out.read_bytes().split(b"LUT_3D_SIZE")[0].decode("ascii").splitlines(keepends=True)
+    assert max(len(line) for line in head) <= formats.LINE_MAX
+    titles = [line for line in head if line.startswith("TITLE")]
+    assert len(titles) == (fmt == "iridas_cube")
+    for line in titles:
+        assert line.startswith("TITLE \"Cam 'Q' Log wide") and line.rstrip("\n").endswith('..."')
+        assert line.count('"') == 2
 
 
 def test_a_build_bakes_from_the_spec_it_stored(tmp_path, build_config):
