@@ -12,8 +12,8 @@ import pytest
 
 from generator.spec import load
 from generator.spec.load import newest_ocio_version
+from generator.verify.run import ON_CI
 
-ON_CI = os.environ.get("CI") == "true"
 NEWEST = newest_ocio_version()
 VERSIONS = [(2, minor) for minor in range(1, NEWEST[1] + 1)]
 

@@ -15,7 +15,8 @@ from generator.cli import NAME, Command, GivenPath, printable
 @click.option("--to", "display", type=NAME, required=True, help="Destination display (name or alias).")
 @click.option("--gamut-map", "method", type=NAME, default=None,
               help="clip, desaturate, scale, rgc or perceptual (default: scale).")
-@click.option("--size", type=int, default=None, help="Lattice nodes a side (default: 33).")
+@click.option("--size", type=int, default=None,
+              help="Lattice nodes a side (default: 33; up to 129, at least the few its shaper needs: 2 to 4 for library spaces).")
 @click.option("--format", "fmt", type=NAME, default=None,
               help="resolve_cube, iridas_cube, spi3d or clf (default: from the suffix).")
 @click.option("--shaper", type=NAME, default="auto", show_default=True,
@@ -23,7 +24,7 @@ from generator.cli import NAME, Command, GivenPath, printable
 @click.option("--spec", "spec_path", type=GivenPath(), default=None,
               help="Spec file, or a build (its folder or config.ocio; default: the embedded spec).")
 @click.option("-o", "--output", type=GivenPath(), default=None,
-              help="File to write (a .spi3d's shaper goes beside it as .spi1d).")
+              help="File to write, required (a .spi3d's shaper goes beside it as .spi1d).")
 @click.option("--force", is_flag=True, help="Replace existing files (through a link, the file it points to).")
 def command(source, display, method, size, fmt, shaper, spec_path, output, force):
     from generator.files import target

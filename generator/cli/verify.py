@@ -13,7 +13,7 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
 
 
 @click.command(cls=Command,
-               help="Verify CONFIG (a built config.ocio): probe images through OCIO engines against the "
+               help="Verify CONFIG (a build's folder, or its config.ocio): probe images through OCIO engines against the "
                     "float64 evaluation of the spec stored beside it. Exit status 1 if any check fails, or if an "
                     "engine --engines names cannot run.")
 @click.argument("config", type=ConfigPath(dir_okay=False))
@@ -24,7 +24,8 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
               help="Folder to write report.html (self-contained) and summary.json into.")
 @click.option("--force", is_flag=True, help="Replace the report's files in --report's folder.")
 @click.option("--quick", is_flag=True, help="Small probe sets: every check, far fewer samples.")
-@click.option("--only", default="", help="Run only the checks whose title contains this text (e.g. HLG); an error if none does.")
+@click.option("--only", type=NAME, default=None,
+              help="Run only the checks whose title contains this text (e.g. HLG); an error if none does.")
 @click.option("--summary", "summary_only", is_flag=True, help="Print the summary, not every row.")
 @click.pass_context
 def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
@@ -37,7 +38,7 @@ def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
     if not names:
         fail(f"--engines names none; allowed: a comma-separated list of {ENGINES}")
     named = ctx.get_parameter_source("engines") is not click.core.ParameterSource.DEFAULT
-    result = verify(config, names, density="quick" if quick else "full", only=only, strict=named)
+    result = verify(config, names, density="quick" if quick else "full", only=only or "", strict=named)
     if not summary_only:
         click.echo(report.table(result))
     click.echo(report.summary(result))

@@ -178,7 +178,9 @@ def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict) -> None:
     # listing Raw first would default to another display's first view.
 
 
-def _display_view_spaces(spec: Spec, cfg: ocio.Config) -> None:
+def _display_view_spaces(spec: Spec) -> list[ocio.ColorSpace]:
+    """A colour space per display view but Raw, for writing display-ready files."""
+    out = []
     for display in spec.displays:
         for view in display.views:
             if view == "Raw":
@@ -188,7 +190,14 @@ def _display_view_spaces(spec: Spec, cfg: ocio.Config) -> None:
                                  description=f"The {view} view of {display.name}, for writing display-ready files")
             dvt = ocio.DisplayViewTransform(src=spec.scene_reference, display=display.name, view=view)
             cs.setTransform(dvt, ocio.COLORSPACE_DIR_FROM_REFERENCE)
-            cfg.addColorSpace(cs)
+            out.append(cs)
+    return out
+
+
+def generated_spaces(spec: Spec) -> list[ocio.ColorSpace]:
+    """The colour spaces a build writes beside the spec's and its displays': the display
+    reference and, where the spec asks for them, the display views'."""
+    return [_display_reference_space(), *(_display_view_spaces(spec) if spec.display_view_spaces else ())]
 
 
 def _file_rules(spec: Spec) -> ocio.FileRules:
@@ -219,7 +228,8 @@ def emit(spec: Spec) -> Emitted:
     view_luts: dict[str, bytes] = {}
     _views(spec, cfg, bakes, view_luts)
     if spec.display_view_spaces:
-        _display_view_spaces(spec, cfg)
+        for space in _display_view_spaces(spec):
+            cfg.addColorSpace(space)
     for role, target in spec.roles:
         cfg.setRole(role, target)
     cfg.setFileRules(_file_rules(spec))

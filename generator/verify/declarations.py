@@ -81,4 +81,18 @@ def differences(cfg, spec: Spec) -> list[str]:
         for alias in space.aliases:
             if _canonical(cfg, alias) != space.name:
                 out.append(f"alias {alias!r} names {_canonical(cfg, alias)!r}, the spec's {space.name!r}")
+    from generator.ocio.emit import generated_spaces
+
+    for built in generated_spaces(spec):
+        held = cfg.getColorSpace(built.getName())
+        if held is None:
+            out.append(f"{built.getName()!r}, which the build writes, is missing")
+        elif _declared(held) != _declared(built):
+            out.append(f"{built.getName()}'s family, encoding, data flag, categories and aliases are {_declared(held)}, "
+                       f"the build's {_declared(built)}")
     return out
+
+
+def _declared(space) -> tuple:
+    """A config's colour space as menus see it: family, encoding, data flag, categories, aliases."""
+    return space.getFamily(), space.getEncoding(), space.isData(), list(space.getCategories()), list(space.getAliases())

@@ -23,7 +23,8 @@ from generator.verify.checks import Check
 from generator.verify.engines import IN_PROCESS, apply, explain_default_flags, load_config, processor
 from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, Outcome, judge, judged_output, sample_errors
 
-ON_CI = os.environ.get("CI") == "true"
+#: Whether this runs on CI: ``CI`` set as CI services set it (true, 1 or yes, in any case).
+ON_CI = os.environ.get("CI", "").strip().lower() in ("true", "1", "yes")
 
 
 @dataclass(frozen=True)

@@ -365,6 +365,13 @@ def test_an_empty_value_is_refused(tmp_path, capsys, monkeypatch, argv):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("only", ("", "  "))
+def test_verify_refuses_an_empty_only(capsys, build_config, only):
+    """An empty --only had run every check, as if not given."""
+    code, out, err = run(capsys, "verify", str(build_config((2, 1))), "--quick", "--only", only)
+    assert code == 2 and err.count("\n") == 1 and "--only" in err and "is empty" in err and out == "", err
+
+
 @pytest.mark.parametrize("argv, option", [
     (("bake", "--from", "acescct", "--from", "acescg", "--to", "srgb_display", "-o", "a.clf"), "--from"),
     (("bake", "--from", "acescg", "--to", "srgb_display", "--size", "5", "--size", "9", "-o", "a.clf"), "--size"),

@@ -63,6 +63,17 @@ EDITS = {
                  "ACEScg's family, encoding, data flag and categories are ('ACES', 'log', False, "),
     "categories": (lambda cfg: _edit_space(cfg, "sRGB - Display", lambda cs: cs.clearCategories()),
                    "sRGB - Display's family, encoding, data flag and categories are ('Display', 'sdr-video', False, [])"),
+    # the spaces the build writes beside the spec's (a host's Write node lists them): they had gone unchecked
+    "view space family": (lambda cfg: _edit_space(cfg, "Scale - sRGB - Display", lambda cs: cs.setFamily("Hacked")),
+                          "Scale - sRGB - Display's family, encoding, data flag, categories and aliases are ('Hacked', "),
+    "view space categories": (lambda cfg: _edit_space(cfg, "Perceptual - sRGB - Display",
+                                                      lambda cs: (cs.clearCategories(), cs.addCategory("working-space"))),
+                              "Perceptual - sRGB - Display's family, encoding, data flag, categories and aliases are "
+                              "('Display-View', 'sdr-video', False, ['working-space'], [])"),
+    "display reference aliases": (lambda cfg: _edit_space(cfg, "CIE XYZ-D65 - Display-referred",
+                                                          lambda cs: cs.clearAliases()),
+                                  "CIE XYZ-D65 - Display-referred's family, encoding, data flag, categories and aliases "
+                                  "are ('', 'display-linear', False, ['file-io'], [])"),
 }
 
 

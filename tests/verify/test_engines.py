@@ -8,6 +8,7 @@ verify`` runs it on every check.
 
 from __future__ import annotations
 
+import os
 from dataclasses import replace
 
 import pytest
@@ -192,3 +193,16 @@ def test_a_flag_whose_operator_cannot_be_isolated_names_none(tmp_path):
     result = verify(folder / "config.ocio", ("ocio",), only="Dim 48 - Display / Desaturate from Odd Wide")
     explained = [o.note for o in result.outcomes if o.verdict == APPROX]
     assert explained and all("operator not isolated" in note and " in " not in note.split(";")[0] for note in explained)
+
+
+@pytest.mark.parametrize("value, expected", [("true", True), ("1", True), ("YES", True), ("false", False),
+                                             ("0", False), ("", False)])
+def test_ci_is_told_as_ci_services_set_it(value, expected):
+    """CI=1 had counted as not CI, so engines a CI run lacks passed as not run."""
+    import subprocess
+    import sys
+
+    env = {**os.environ, "CI": value}
+    done = subprocess.run([sys.executable, "-c", "import generator.verify.run as r; print(r.ON_CI)"],
+                          capture_output=True, text=True, check=True, env=env)
+    assert done.stdout.strip() == str(expected)
