@@ -8,7 +8,7 @@ flags, together) take at most 30 s on the 2-core machine. For scale, it times
 ``ociocheck``, what a user would run instead: it loads the config and resolves
 every transform but compares no number.
 
-Run: .venv/bin/python bench/verify.py [--engines ocio,oiiotool,ocioconvert,blender] [--quick]
+Run: .venv/bin/python bench/verify.py [--engines ocio,oiiotool,ocioconvert,blender,gpu] [--quick]
 """
 
 from __future__ import annotations
@@ -50,7 +50,7 @@ def main() -> int:
     from generator.verify.run import verify
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--engines", default="ocio,oiiotool,ocioconvert,blender")
+    parser.add_argument("--engines", default="ocio,oiiotool,ocioconvert,blender,gpu")
     parser.add_argument("--quick", action="store_true", help="small probe sets")
     args = parser.parse_args()
     warnings.simplefilter("ignore")

@@ -18,8 +18,9 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
                     "engine --engines names cannot run.")
 @click.argument("config", type=ConfigPath(dir_okay=False))
 @click.option("--engines", type=NAME, default=ENGINES, show_default=True,
-              help="Comma-separated: ocio (PyOpenColorIO, default and lossless flags), oiiotool, ocioconvert, blender. "
-                   "Of the default list, those not installed are reported as not run; named, they must run.")
+              help="Comma-separated: ocio (PyOpenColorIO, default and lossless flags), oiiotool, ocioconvert, blender, "
+                   "gpu (OCIO's GLSL shaders drawn on an OpenGL device, as hosts' viewers draw; named only). Of the "
+                   "default list, those not installed are reported as not run; named, they must run.")
 @click.option("--report", "report_dir", type=GivenPath(file_okay=False),
               help="Folder to write report.html (self-contained) and summary.json into.")
 @click.option("--force", is_flag=True, help="Replace the report's files in --report's folder.")

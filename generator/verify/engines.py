@@ -18,7 +18,7 @@ import numpy as np
 from generator.verify.checks import KINDS, LUT, VIEW, Check
 from generator.verify.judge import Output
 
-ENGINE_NAMES = ("ocio", "oiiotool", "ocioconvert", "blender")
+ENGINE_NAMES = ("ocio", "oiiotool", "ocioconvert", "blender", "gpu")
 
 
 def load_config(config_path: str | Path):

@@ -71,10 +71,11 @@ class Verification:
 def engine_registry() -> dict:
     """Engine family name -> engines, in table order."""
     from generator.verify.blender import BlenderEngine
+    from generator.verify.gpu import GpuEngine
     from generator.verify.hosts import OcioconvertEngine, OiiotoolEngine
 
     return {"ocio": IN_PROCESS, "oiiotool": (OiiotoolEngine(),), "ocioconvert": (OcioconvertEngine(),),
-            "blender": (BlenderEngine(),)}
+            "blender": (BlenderEngine(),), "gpu": (GpuEngine(),)}
 
 
 def load(config_path: str | Path) -> tuple[Path, Spec]:

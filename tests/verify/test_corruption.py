@@ -13,6 +13,7 @@ from generator.spec.schema import SpecError
 from generator.verify.checks import FROM_REFERENCE, LUT, TO_REFERENCE, VIEW
 from generator.verify.judge import FAIL
 from generator.verify.run import verify
+from tests.verify.conftest import dim_output_table
 
 
 KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
@@ -175,12 +176,7 @@ def test_a_scale_file_dimmed_by_half_a_code_is_named(config_copy):
     ten-bit code at white) fails its view and file; under the issue's every-set bound of a
     code, a file scaled by 0.9991 had passed."""
     def dim(path):
-        clf = path.parent / "luts" / "view_srgb_display_scale_17.clf"
-        lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
-        start = next(i for i, line in enumerate(lines) if line.startswith("<LUT1D")) + 2
-        end = next(i for i in range(start, len(lines)) if lines[i].startswith("</Array>"))
-        lines[start:end] = [f"{float(line) * 0.9995!r}\n" for line in lines[start:end]]
-        clf.write_text("".join(lines), encoding="utf-8")
+        dim_output_table(path.parent / "luts" / "view_srgb_display_scale_17.clf", 0.9995)
 
     failing = _newly_failing(config_copy, dim, (VIEW, LUT))
     assert failing == {"luts/view_srgb_display_scale_17.clf", "sRGB - Display / Scale"}
