@@ -166,6 +166,17 @@ def _inherit(config: Path, outcome: Outcome, explained: dict) -> Outcome:
     return _approx(outcome, f"as in-process default flags (within {gap:.2g}): {default.note.split(': ', 1)[-1]}")
 
 
+def _gpu_explained(config: Path, outcome: Outcome) -> Outcome:
+    """A GPU failure, still a failure, with the operator of OCIO's GPU path responsible named
+    (:func:`generator.verify.gpu.culprit`); a non-finite policy violation is named already."""
+    if outcome.verdict != FAIL or not outcome.engine.startswith("gpu") or outcome.violations or outcome.values is None:
+        return outcome
+    from generator.verify.gpu import culprit
+
+    why = culprit(config, outcome.check, lambda values: _worst(outcome.check, judged_output(outcome.check, values)))
+    return replace(outcome, note=why)
+
+
 def run_engine(engine, config: Path, spec: Spec, checks: list[Check], workdir: Path) -> tuple[EngineRun, list[Outcome]]:
     """Run ``engine`` on the checks it supports and judge every output."""
     from generator.verify.hosts import NotRunnable
@@ -252,6 +263,6 @@ def verify(config_path: str | Path, engines=("ocio",), density: str = "full", ki
         extra = _in_process_for_hosts(config, spec, outcomes, Path(tmp))
     finally:
         _remove(Path(tmp))
-    outcomes = _explained(config, outcomes, extra)
+    outcomes = [_gpu_explained(config, o) for o in _explained(config, outcomes, extra)]
     return Verification(config, spec, tuple(checks), tuple(outcomes), tuple(runs),
                         time.perf_counter() - started, timings, strict)

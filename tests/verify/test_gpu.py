@@ -67,3 +67,16 @@ def test_the_gpu_names_a_scale_file_dimmed_by_half_a_code(config_copy, device):
     dim_output_table(config_copy.parent / "luts" / "view_srgb_display_scale_17.clf", 0.9995)
     result = verify(config_copy, ("gpu",), density="quick", kinds=(VIEW, LUT), only="srgb_display_scale", strict=True)
     assert [o.verdict for o in result.outcomes if o.engine.startswith("gpu")] == [FAIL]
+
+
+def test_a_failure_of_the_gpu_path_names_its_operator(build_config, device):
+    """OCIO's shader inverts a 1D LUT by a table of its inverse whatever the flags, 3% off on
+    N-Log's inverse near black: the failure stays a failure, and names that operator."""
+    from generator.verify.checks import FROM_REFERENCE
+
+    config = build_config((2, 1))
+    result = verify(config, ("gpu",), kinds=(FROM_REFERENCE,), only="-> N-Log N-Gamut", strict=True)
+    failing = [o for o in result.outcomes if o.engine.startswith("gpu") and o.verdict == FAIL]
+    assert failing, "N-Log's inverse passed on the GPU: update README's list of the GPU path's departures"
+    assert all("OCIO's GPU path: Lut1DTransform inverse drawn alone" in o.note for o in failing), \
+        [o.note for o in failing]
