@@ -92,8 +92,9 @@ def _replace_problem(out_dir: Path) -> str:
     if foreign:
         return (f"holds {foreign[0]!r}, which no build writes; --force replaces only a previous build "
                 f"(a folder of {', '.join(BUILD_ENTRIES)})")
-    if resolved.FILENAME not in names:
-        return f"has no {resolved.FILENAME}, so it is not a previous build; --force replaces only those"
+    for written in (resolved.FILENAME, CONFIG_FILENAME):
+        if written not in names:
+            return f"has no {written}, so it is not a previous build; --force replaces only those"
     luts = out_dir / LUT_FOLDER
     if luts.exists():
         if not luts.is_dir():
@@ -115,15 +116,20 @@ def _replace_problem(out_dir: Path) -> str:
 
 
 def files_read(config: Path) -> set[str] | None:
-    """The file names the config at ``config`` reads: every FileTransform's, in every colour
-    space (inactive ones too, both directions), view transform, named transform and look;
-    None when OpenColorIO cannot load it."""
+    """The files of the LUT folder the config at ``config`` reads as a build writes it: the
+    FileTransforms of its colour spaces (inactive ones too, both directions) and view
+    transforms whose source is a bare file name, found on a search path that is the LUT folder
+    alone. A build writes no look or named transform, so a file only they read (a TD's grade)
+    is not the build's, nor is one named by a path. Empty when the search path is another
+    (every file there is then someone's own); None when OpenColorIO cannot load the config."""
     import PyOpenColorIO as ocio
 
     try:
         cfg = ocio.Config.CreateFromFile(str(config))
-    except (ocio.Exception, OSError):
+    except Exception:  # ocio.Exception, and ExceptionMissingFile, which does not derive from it
         return None
+    if cfg.getSearchPath() != LUT_FOLDER:
+        return set()
     transforms = []
     for space in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL):
         transforms += [space.getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE),
@@ -131,17 +137,13 @@ def files_read(config: Path) -> set[str] | None:
     for view in cfg.getViewTransforms():
         transforms += [view.getTransform(ocio.VIEWTRANSFORM_DIR_TO_REFERENCE),
                        view.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)]
-    for named in cfg.getNamedTransforms(ocio.NAMEDTRANSFORM_ALL):
-        transforms += [named.getTransform(ocio.TRANSFORM_DIR_FORWARD), named.getTransform(ocio.TRANSFORM_DIR_INVERSE)]
-    for look in cfg.getLooks():
-        transforms += [look.getTransform(), look.getInverseTransform()]
     names = set()
     while transforms:
         transform = transforms.pop()
         if isinstance(transform, ocio.GroupTransform):
             transforms += list(transform)
-        elif isinstance(transform, ocio.FileTransform):
-            names.add(Path(transform.getSrc()).name)
+        elif isinstance(transform, ocio.FileTransform) and Path(transform.getSrc()).name == transform.getSrc():
+            names.add(transform.getSrc())
     return names
 
 

@@ -29,7 +29,7 @@ GLSL_VERSION = 400
 ROW = 1024
 
 #: What to install when no device can be opened (Debian's packages of Mesa's EGL and drivers).
-REMEDY = "install Mesa's EGL and drivers (Debian: libegl1 libegl-mesa0 libgl1-mesa-dri) or a GPU's driver"
+REMEDY = "install Mesa's EGL and drivers (Debian: libegl1 libegl-mesa0 libgl1-mesa-dri libgl1) or a GPU's driver"
 
 _VERTEX = f"""#version {GLSL_VERSION} core
 in vec2 position;
@@ -50,11 +50,12 @@ def open_device():
     return moderngl.create_standalone_context(backend="egl", require=GLSL_VERSION)
 
 
-def _texture(ctx, make, interpolation, resources: list, unit: int, program, sampler: str):
+def _texture(texture, interpolation, resources: list, unit: int, program, sampler: str):
+    """Bind a LUT's ``texture`` (kept in ``resources``, to be released) to ``unit`` as ``sampler``."""
     import moderngl
     import PyOpenColorIO as ocio
 
-    texture = make()
+    resources.append(texture)
     filtering = moderngl.NEAREST if interpolation == ocio.INTERP_NEAREST else moderngl.LINEAR
     texture.filter = (filtering, filtering)
     texture.repeat_x = texture.repeat_y = False
@@ -62,7 +63,6 @@ def _texture(ctx, make, interpolation, resources: list, unit: int, program, samp
         texture.repeat_z = False
     texture.use(unit)
     program[sampler].value = unit
-    resources.append(texture)
 
 
 def gpu_apply(ctx, proc, values: np.ndarray) -> np.ndarray:
@@ -70,6 +70,8 @@ def gpu_apply(ctx, proc, values: np.ndarray) -> np.ndarray:
     import moderngl
     import PyOpenColorIO as ocio
 
+    if not len(values):
+        return np.zeros((0, 3))
     desc = ocio.GpuShaderDesc.CreateShaderDesc(language=ocio.GPU_LANGUAGE_GLSL_4_0)
     desc.setAllowTexture1D(False)  # 1D tables as 2D textures, as every GLSL host can bind them
     desc.setFunctionName("ocioforge_view")
@@ -77,21 +79,20 @@ def gpu_apply(ctx, proc, values: np.ndarray) -> np.ndarray:
     if len(list(desc.getUniforms())):
         raise RuntimeError("the shader has uniforms (dynamic properties), which no config of ocioforge writes")
     resources: list = []
-    program = ctx.program(vertex_shader=_VERTEX, fragment_shader=f"#version {GLSL_VERSION} core\n"
-                          f"{desc.getShaderText()}{_MAIN}")
-    resources.append(program)
     try:
+        resources.append(program := ctx.program(vertex_shader=_VERTEX, fragment_shader=f"#version {GLSL_VERSION} core\n"
+                                                f"{desc.getShaderText()}{_MAIN}"))
         unit = 1
         for table in desc.getTextures():
             data = np.ascontiguousarray(table.getValues(), dtype=np.float32).tobytes()
             components = 1 if table.channel == ocio.GpuShaderDesc.TEXTURE_RED_CHANNEL else 3
-            _texture(ctx, lambda: ctx.texture((table.width, table.height), components, data, dtype="f4"),
+            _texture(ctx.texture((table.width, table.height), components, data, dtype="f4"),
                      table.interpolation, resources, unit, program, table.samplerName)
             unit += 1
         for table in desc.get3DTextures():
             data = np.ascontiguousarray(table.getValues(), dtype=np.float32).tobytes()
             edge = table.edgeLen
-            _texture(ctx, lambda: ctx.texture3d((edge, edge, edge), 3, data, dtype="f4"),
+            _texture(ctx.texture3d((edge, edge, edge), 3, data, dtype="f4"),
                      table.interpolation, resources, unit, program, table.samplerName)
             unit += 1
         count = len(values)
@@ -99,16 +100,14 @@ def gpu_apply(ctx, proc, values: np.ndarray) -> np.ndarray:
         pixels = np.zeros((width * height, 4), dtype=np.float32)
         pixels[:count, :3] = values
         pixels[:, 3] = 1.0
-        source = ctx.texture((width, height), 4, pixels.tobytes(), dtype="f4")
+        resources.append(source := ctx.texture((width, height), 4, pixels.tobytes(), dtype="f4"))
         source.filter = (moderngl.NEAREST, moderngl.NEAREST)
-        resources.append(source)
         source.use(0)
         program["ocioforge_input"].value = 0
-        target = ctx.texture((width, height), 4, dtype="f4")
-        frame = ctx.framebuffer(color_attachments=[target])
-        corners = ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype=np.float32).tobytes())
-        array = ctx.vertex_array(program, [(corners, "2f", "position")])
-        resources += [target, frame, corners, array]
+        resources.append(target := ctx.texture((width, height), 4, dtype="f4"))
+        resources.append(frame := ctx.framebuffer(color_attachments=[target]))
+        resources.append(corners := ctx.buffer(np.array([-1, -1, 3, -1, -1, 3], dtype=np.float32).tobytes()))
+        resources.append(array := ctx.vertex_array(program, [(corners, "2f", "position")]))
         frame.use()
         ctx.viewport = (0, 0, width, height)
         array.render(moderngl.TRIANGLES)
@@ -127,6 +126,10 @@ class GpuEngine:
     kinds: tuple = KINDS
 
     def missing(self, config: Path) -> str:
+        try:
+            import moderngl  # noqa: F401
+        except ImportError as error:
+            return f"moderngl is not installed ({error}); install the project's dependencies (pip install -e .)"
         try:
             open_device().release()
         except Exception as error:  # ImportError, or moderngl/glcontext's own errors naming the device

@@ -97,6 +97,34 @@ def test_force_keeps_a_lut_of_its_own_in_the_lut_folder(tmp_path, capsys, name):
     assert (out / "luts" / name).read_bytes() == b"keep"
 
 
+@pytest.mark.parametrize("src", ("/mnt/show/grades/grade.clf", "grade.clf"))
+def test_force_keeps_a_lut_only_a_look_of_its_own_reads(tmp_path, capsys, src):
+    """A TD's look reading their grade (from luts/, or another file of the same name) does not
+    make it the build's: files_read had gone by file name over every transform, looks too."""
+    import PyOpenColorIO as ocio
+
+    out = tmp_path / "show"
+    assert run(capsys, "build", "-o", str(out))[0] == 0
+    cfg = ocio.Config.CreateFromFile(str(out / "config.ocio"))
+    cfg.addLook(ocio.Look(name="Grade", processSpace="ACEScct", transform=ocio.FileTransform(src=src)))
+    (out / "config.ocio").write_text(cfg.serialize(), encoding="utf-8")
+    (out / "luts" / "grade.clf").write_bytes(b"keep")
+    code, _, err = run(capsys, "build", "-o", str(out), "--force")
+    assert code == 2 and err.count("\n") == 1 and "luts/grade.clf, which its config.ocio does not read" in err, err
+    assert (out / "luts" / "grade.clf").read_bytes() == b"keep"
+
+
+@pytest.mark.parametrize("force", (True, False))
+def test_a_previous_build_without_its_config_is_refused_in_one_line(tmp_path, capsys, force):
+    """A build whose config.ocio is gone had ended the next build in a traceback, --force or not."""
+    out = tmp_path / "show"
+    assert run(capsys, "build", "-o", str(out))[0] == 0
+    (out / "config.ocio").unlink()
+    code, _, err = run(capsys, "build", "-o", str(out), *(["--force"] if force else []))
+    assert code == 2 and err.count("\n") == 1 and "has no config.ocio" in err, err
+    assert (out / "luts").is_dir()
+
+
 def test_force_refuses_a_build_whose_config_does_not_load(tmp_path, capsys):
     """Which of luts/ a build wrote is told by the config that reads them: without one that
     loads, nothing is replaced."""

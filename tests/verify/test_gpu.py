@@ -80,3 +80,11 @@ def test_a_failure_of_the_gpu_path_names_its_operator(build_config, device):
     assert failing, "N-Log's inverse passed on the GPU: update README's list of the GPU path's departures"
     assert all("OCIO's GPU path: Lut1DTransform inverse drawn alone" in o.note for o in failing), \
         [o.note for o in failing]
+
+
+def test_no_probes_draw_nothing(device):
+    """A check with no probes had made the device refuse its empty target, failing on the GPU alone."""
+    import PyOpenColorIO as ocio
+
+    proc = ocio.Config.CreateRaw().getProcessor(ocio.MatrixTransform([2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1]))
+    assert gpu_apply(device, proc, np.zeros((0, 3))).shape == (0, 3)
