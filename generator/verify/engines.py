@@ -27,6 +27,17 @@ def load_config(config_path: str | Path):
     return ocio.Config.CreateFromFile(str(config_path))
 
 
+def uncached_config(config_path: str | Path):
+    """The config with OCIO's processor cache off, for processors of single operators: OCIO
+    caches a Lut1DTransform's processor by a key its values are not in, so the second of two
+    tables of one length (a view's hue table and its inverse) got the first's processor."""
+    import PyOpenColorIO as ocio
+
+    cfg = load_config(config_path)
+    cfg.setProcessorCacheFlags(ocio.PROCESSOR_CACHE_OFF)
+    return cfg
+
+
 def processor(cfg, check: Check, config_dir: Path):
     """The OCIO processor ``check`` exercises."""
     import PyOpenColorIO as ocio
@@ -116,7 +127,7 @@ def explain_default_flags(config_path: Path, check: Check, error_of) -> str:
     output. "" when no single flag explains it (the failure is then the config's)."""
     import PyOpenColorIO as ocio
 
-    cfg = load_config(config_path)
+    cfg = uncached_config(config_path)
     proc = processor(cfg, check, config_path.parent)
     default = ocio.OPTIMIZATION_DEFAULT
     for name in DEFAULT_EXTRAS:

@@ -170,9 +170,9 @@ def culprit(config_path: Path, check: Check, error_of) -> str:
     operators there)."""
     import PyOpenColorIO as ocio
 
-    from generator.verify.engines import apply
+    from generator.verify.engines import apply, uncached_config
 
-    cfg = load_config(config_path)
+    cfg = uncached_config(config_path)
     transforms = list(processor(cfg, check, config_path.parent).createGroupTransform())
     processors = [cfg.getProcessor(t) for t in transforms]
     ctx = open_device()

@@ -65,14 +65,15 @@ def test_a_build_finished_meanwhile_is_not_replaced_without_force(tmp_path, caps
     fill = write.write_files
 
     def other_build_meanwhile(spec, staging):
-        (out / write.resolved.FILENAME).parent.mkdir()
+        out.mkdir()
         (out / write.resolved.FILENAME).write_text("{}")
+        (out / write.CONFIG_FILENAME).write_text("ocio_profile_version: 2.1\n")
         return fill(spec, staging)
 
     monkeypatch.setattr(write, "write_files", other_build_meanwhile)
     code, _, err = run(capsys, "build", "-o", out)
     assert one_line(code, err, "holds a previous build; pass --force"), err
-    assert sorted(p.name for p in out.iterdir()) == [write.resolved.FILENAME]
+    assert sorted(p.name for p in out.iterdir()) == sorted([write.CONFIG_FILENAME, write.resolved.FILENAME])
 
 
 def test_a_folder_of_footage_is_said_not_to_be_a_build_without_force_too(tmp_path, capsys):
