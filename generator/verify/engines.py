@@ -98,11 +98,12 @@ DEFAULT_EXTRAS = ("OPTIMIZATION_FAST_LOG_EXP_POW", "OPTIMIZATION_LUT_INV_FAST", 
                   "OPTIMIZATION_COMP_SEPARABLE_PREFIX")
 
 
-def _culprit(cfg, transforms: list, values: np.ndarray, fast, exact, error_of) -> tuple[float, str, float]:
-    """The transform of a chain that alone, run with the ``fast`` flags while every other
-    runs with the ``exact`` ones, gives the check's largest error; that error; and the chain's
-    own error run op by op with the ``exact`` flags (a chain OCIO evaluates differently whole,
-    merging its operators, departs by itself, and then names no operator)."""
+def isolate(cfg, transforms: list, values: np.ndarray, exact, odd, error_of) -> tuple[float, str, float]:
+    """The transform of a chain that alone, evaluated by ``odd`` while every other is evaluated
+    by ``exact`` (each ``(processor, values) -> values``), gives the check's largest error; that
+    error; and the chain's own error run operator by operator with ``exact`` alone (a chain OCIO
+    evaluates differently whole, merging its operators, departs by itself, and then names no
+    operator). ``cfg`` should be :func:`uncached_config`'s."""
     import PyOpenColorIO as ocio
 
     processors = [cfg.getProcessor(t) for t in transforms]
@@ -110,7 +111,7 @@ def _culprit(cfg, transforms: list, values: np.ndarray, fast, exact, error_of) -
     def run(index: int) -> np.ndarray:
         current = values
         for position, proc in enumerate(processors):
-            current = apply(proc.getOptimizedCPUProcessor(fast if position == index else exact), current)
+            current = (odd if position == index else exact)(proc, current)
         return current
 
     worst = (-1.0, "")
@@ -118,6 +119,11 @@ def _culprit(cfg, transforms: list, values: np.ndarray, fast, exact, error_of) -
         direction = "inverse" if getattr(transform, "getDirection", lambda: None)() == ocio.TRANSFORM_DIR_INVERSE else ""
         worst = max(worst, (error_of(run(index)), f"{type(transform).__name__} {direction}".strip()))
     return (*worst, error_of(run(-1)))
+
+
+def cpu_with(flags):
+    """An evaluator for :func:`isolate`: a processor's CPU processor with ``flags``."""
+    return lambda proc, values: apply(proc.getOptimizedCPUProcessor(flags), values)
 
 
 def explain_default_flags(config_path: Path, check: Check, error_of) -> str:
@@ -135,7 +141,8 @@ def explain_default_flags(config_path: Path, check: Check, error_of) -> str:
         error = error_of(apply(proc.getOptimizedCPUProcessor(without), check.probes.values))
         if error <= check.tolerance:
             transforms = list(proc.createGroupTransform())
-            alone, op, split = _culprit(cfg, transforms, check.probes.values, default, without, error_of)
+            alone, op, split = isolate(cfg, transforms, check.probes.values, cpu_with(without), cpu_with(default),
+                                       error_of)
             if split > check.tolerance:
                 return (f"OCIO default flags: {name} (its operator not isolated: the chain run operator by operator "
                         f"departs {split:.2g} by itself); without the flag: {error:.2g}")

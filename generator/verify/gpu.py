@@ -161,39 +161,32 @@ class GpuEngine:
             ctx.release()
         return out
 
+    def explain(self, config_path: Path, check: Check, error_of) -> str:
+        """Why ``check`` fails here: :func:`culprit`."""
+        return culprit(config_path, check, error_of)
+
 
 def culprit(config_path: Path, check: Check, error_of) -> str:
     """Why a check fails on the GPU where the CPU passes: the operator of its chain that, drawn
     alone on the GPU while every other runs on the CPU losslessly, gives the largest error
-    (``error_of(values)``, the check's worst error for an output), or, when no operator alone
-    does, that OCIO's GPU processor of the whole chain departs (its optimiser merges or drops
-    operators there)."""
+    (``error_of(values)``, the check's worst error for an output; :func:`~generator.verify.
+    engines.isolate`), or, when no operator alone does, that OCIO's GPU processor of the whole
+    chain departs (its optimiser merges or drops operators there)."""
     import PyOpenColorIO as ocio
 
-    from generator.verify.engines import apply, uncached_config
+    from generator.verify.engines import cpu_with, isolate, uncached_config
 
     cfg = uncached_config(config_path)
     transforms = list(processor(cfg, check, config_path.parent).createGroupTransform())
-    processors = [cfg.getProcessor(t) for t in transforms]
     ctx = open_device()
     try:
-        worst = (-1.0, "")
-        for index, transform in enumerate([None, *transforms], start=-1):  # -1: every operator on the CPU
-            current = check.probes.values
-            for position, proc in enumerate(processors):
-                current = (gpu_apply(ctx, proc, current) if position == index
-                           else apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS), current))
-            if index < 0:
-                split = error_of(current)
-                continue
-            direction = " inverse" if getattr(transform, "getDirection", lambda: None)() == ocio.TRANSFORM_DIR_INVERSE else ""
-            worst = max(worst, (error_of(current), f"{type(transform).__name__}{direction}"))
+        alone, name, split = isolate(cfg, transforms, check.probes.values, cpu_with(ocio.OPTIMIZATION_LOSSLESS),
+                                     lambda proc, values: gpu_apply(ctx, proc, values), error_of)
     finally:
         ctx.release()
     if split > check.tolerance:
         return (f"OCIO's GPU path (its operator not isolated: the chain run operator by operator on the CPU departs "
                 f"{split:.2g} by itself)")
-    alone, name = worst
     if alone > check.tolerance:
         return f"OCIO's GPU path: {name} drawn alone, the rest on the CPU, gives {alone:.2g}"
     return (f"OCIO's GPU path: its shader of the whole chain (no operator drawn alone departs beyond {alone:.2g}: "

@@ -166,14 +166,15 @@ def _inherit(config: Path, outcome: Outcome, explained: dict) -> Outcome:
     return _approx(outcome, f"as in-process default flags (within {gap:.2g}): {default.note.split(': ', 1)[-1]}")
 
 
-def _gpu_explained(config: Path, outcome: Outcome) -> Outcome:
-    """A GPU failure, still a failure, with the operator of OCIO's GPU path responsible named
-    (:func:`generator.verify.gpu.culprit`); a non-finite policy violation is named already."""
-    if outcome.verdict != FAIL or not outcome.engine.startswith("gpu") or outcome.violations or outcome.values is None:
+def _engine_explained(config: Path, outcome: Outcome, explainers: dict) -> Outcome:
+    """A failure of an engine that explains its own departures (``explainers``: engine name to
+    its ``explain(config, check, error_of)``, e.g. the GPU's, naming the operator of OCIO's GPU
+    path), still a failure, with that explanation as its note; a non-finite policy violation is
+    named already."""
+    explain = explainers.get(outcome.engine.split(" (")[0])
+    if explain is None or outcome.verdict != FAIL or outcome.violations or outcome.values is None:
         return outcome
-    from generator.verify.gpu import culprit
-
-    why = culprit(config, outcome.check, lambda values: _worst(outcome.check, judged_output(outcome.check, values)))
+    why = explain(config, outcome.check, lambda values: _worst(outcome.check, judged_output(outcome.check, values)))
     return replace(outcome, note=why)
 
 
@@ -263,6 +264,7 @@ def verify(config_path: str | Path, engines=("ocio",), density: str = "full", ki
         extra = _in_process_for_hosts(config, spec, outcomes, Path(tmp))
     finally:
         _remove(Path(tmp))
-    outcomes = [_gpu_explained(config, o) for o in _explained(config, outcomes, extra)]
+    explainers = {e.name: e.explain for family in engines for e in registry[family] if hasattr(e, "explain")}
+    outcomes = [_engine_explained(config, o, explainers) for o in _explained(config, outcomes, extra)]
     return Verification(config, spec, tuple(checks), tuple(outcomes), tuple(runs),
                         time.perf_counter() - started, timings, strict)
