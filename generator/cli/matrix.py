@@ -47,6 +47,9 @@ def published_matrix(source, target):
 
 
 def render(matrix, fmt: str, label: str) -> str:
+    from generator.colorimetry.matrices import settled
+
+    matrix = settled(matrix)
     rows = [[float(v) for v in row] for row in matrix]
     if fmt == "json":
         return json.dumps({"matrix": rows})

@@ -112,6 +112,23 @@ def rgb_to_xyz_adapted(source: Gamut, xyz_white, cat: str = "Bradford") -> np.nd
     return adaptation_matrix(source.white, xyz_white, cat) @ source.rgb_to_xyz
 
 
+#: Float64 residue, relative to a matrix's largest entry (at least 1), of a derivation whose
+#: exact value is an integer: gamuts sharing a primary or white (Rec.709 and P3-D65 share
+#: blue; P3's and Rec.2020's red lie on x + y = 1, z = 0) give exact 0s and 1s, which the
+#: inversions and products leave 1e-17 to 1e-15 off. An entry nearer an integer than this
+#: without being it would take chromaticities given to 14 digits.
+EXACT_RESIDUE = 1e-14
+
+
+def settled(matrix) -> np.ndarray:
+    """``matrix`` as written: entries within :data:`EXACT_RESIDUE` (relative) of an integer
+    are that integer, and no zero is negative."""
+    m = np.asarray(matrix, dtype=np.float64)
+    whole = np.rint(m)
+    residue = EXACT_RESIDUE * max(1.0, float(np.abs(m).max(initial=0.0)))
+    return np.where(np.abs(m - whole) < residue, whole, m) + 0.0
+
+
 def apply_matrix(matrix, rgb) -> np.ndarray:
     """Apply a 3x3 matrix to colours along the last axis of ``rgb``."""
     return np.einsum("ij,...j->...i", np.asarray(matrix, dtype=np.float64), np.asarray(rgb, dtype=np.float64))

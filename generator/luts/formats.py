@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from generator.colorimetry.matrices import settled
 from generator.colorimetry.transfer import Linear, LogCamera, PiecewisePower, Power
 from generator.luts import numbers
 from generator.luts.axes import LogAxis
@@ -197,7 +198,7 @@ def decode_ops(name: str, curve) -> str:
 
 
 def _matrix(matrix: np.ndarray) -> str:
-    rows = "".join(" ".join(_n(v) for v in row) + "\n" for row in np.asarray(matrix, dtype=np.float64))
+    rows = "".join(" ".join(_n(v) for v in row) + "\n" for row in settled(matrix))
     return op("Matrix", f'<Array dim="3 3">\n{rows}</Array>\n')
 
 

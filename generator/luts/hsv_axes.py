@@ -74,14 +74,21 @@ SATURATION_NODES_ABOVE = (8 / 7, 4 / 3, 2.0, 4.0, 8.0, 32.0, 256.0, 8192.0, SATU
 #: OCIO HSV's cone, come after the positive ones, with -0 at coordinate 1, where float32
 #: resolves 6e-8: the cells there shrink geometrically (by 16), so a small negative V keeps
 #: about 1e-6 of its relative precision (with one cell from -1/16 to -0 it kept 5e-3, 0.6
-#: ten-bit codes on an ACEScct ramp near black). The shared half-domain table takes V to
-#: its node's coordinate, linearly between nodes (all half floats); the cell between the
-#: largest half float and -256 is never entered. Values beyond are clamped (V from -256 to
-#: 65504 times the display's peak): the mapped value is linear in V across a cell, so a wide
-#: top cell costs only float32 resolution, while a clamp at 1024 left colours far outside
-#: the gamut whose luminance is below a thousandth of V dimmer than the mapping (scene 20
-#: on a 1 cd/m² display, 216 ten-bit codes).
-VALUE_NODES = (0.0, 1 / 64, 1 / 16, 0.25, 1.0, 4.0, 16.0, 64.0, 256.0, 65504.0,
+#: ten-bit codes on an ACEScct ramp near black). Toward +0 the first cell is 2**-16 wide
+#: for OCIO's GPU path: its shader forms a 3D table's coordinate as ``(x (N - 1) + 0.5) / N``
+#: in float32, which resolves about 3e-8 of a cell wherever x is, so a first cell from 0 to
+#: 1/64 drew colours a billionth of the peak black (0.36 ten-bit codes on Gamma 2.6; 2**-16
+#: leaves 5e-13 of light, 0.02 codes). The cells above grow by 256, then 16, then 4 up to 16,
+#: then 16: a GPU's 8-bit texture weights (bench/lut_accuracy.py) err by the node values' spread
+#: across a cell, and these cells keep every figure of the earlier 1/64, 1/16, ... 64 ladder
+#: but the dark set's p99, which falls from 2.3 to 1.1 codes. The shared half-domain table
+#: takes V to its node's coordinate, linearly between nodes (all half floats); the cell
+#: between the largest half float and -256 is never entered. Values beyond are clamped (V
+#: from -256 to 65504 times the display's peak): the mapped value is linear in V across a
+#: cell, so a wide top cell costs only float32 resolution, while a clamp at 1024 left
+#: colours far outside the gamut whose luminance is below a thousandth of V dimmer than the
+#: mapping (scene 20 on a 1 cd/m² display, 216 ten-bit codes).
+VALUE_NODES = (0.0, 2.0**-16, 2.0**-8, 1 / 16, 0.25, 1.0, 4.0, 16.0, 256.0, 65504.0,
                -256.0, -16.0, -1.0, -2.0**-4, -2.0**-8, -2.0**-12, -2.0**-16, -2.0**-20, -0.0)
 
 #: Nodes of :data:`VALUE_NODES` at or above 0.

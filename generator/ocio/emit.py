@@ -12,6 +12,7 @@ import numpy as np
 import PyOpenColorIO as ocio
 
 from generator.colorimetry import reference
+from generator.colorimetry.matrices import settled
 from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
 from generator.ocio import curves
@@ -43,7 +44,7 @@ class Emitted:
 
 def matrix_transform(matrix: np.ndarray, direction=ocio.TRANSFORM_DIR_FORWARD) -> ocio.MatrixTransform:
     m44 = np.eye(4)
-    m44[:3, :3] = matrix
+    m44[:3, :3] = settled(matrix)
     return ocio.MatrixTransform(matrix=[float(v) for v in m44.ravel()], direction=direction)
 
 

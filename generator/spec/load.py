@@ -182,6 +182,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     present = {n.lower() for s in spaces for n in s.all_names}
     left_out = tuple(n for d in listed for n in (d.name, *d.aliases) if n.lower() not in present)
     chosen_roles = _roles(roles, defaults, reference, source, every | {namespace.DISPLAY_REFERENCE.lower()})
+    _check_data(spaces, displays, chosen_roles, source)
     rules = _file_rules(raw, source, every | set(taken))
     names = namespace.colour_spaces((*listed, *customs), taken)
     return Spec(
@@ -499,6 +500,20 @@ def _inactive(value, source: str, names: dict[str, str], left_out: tuple[str, ..
                             "allowed: each colour space once")
         chosen[own] = i
     return tuple(own for own in chosen if own not in left_out)
+
+
+def _check_data(spaces, displays, roles, source: str) -> None:
+    """A Raw view shows a data colour space, and the data role names one."""
+    data = {n.lower() for s in spaces if s.is_data for n in (s.name, *s.aliases)}
+    allowed = "allowed: list 'Raw' (the library's data space) in colour_spaces"
+    for i, display in enumerate(displays):
+        if "Raw" in display.views and not data:
+            raise SpecError(source, f"display[{i}].views", f"{display.name!r} offers the Raw view, which shows a data "
+                            f"colour space, and the spec has none; {allowed}, or leave Raw out of its views")
+    target = dict(roles).get("data")
+    if target is not None and target.lower() not in data:
+        raise SpecError(source, "roles.data", f"{target!r} is not a data colour space (hosts read files of the data "
+                        f"role unconverted, and this space converts); {allowed}, and name it or its alias")
 
 
 def _default_roles(names, displays, spec_roles) -> dict[str, str]:

@@ -101,3 +101,43 @@ def test_cone_matrices_are_colour_sciences_and_adaptation_agrees(cat):
                 theirs = matrix_chromatic_adaptation_VonKries(xy_to_XYZ(source), xy_to_XYZ(target),
                                                               transform=CATS[cat])
                 assert np.array_equal(adaptation_matrix(source, target, cat), theirs)
+
+
+def test_shared_primaries_give_exact_zeros_and_ones_as_written():
+    """Rec.709 and P3-D65 share blue, so blue's column of the conversion is (0, 0, s) exactly,
+    and P3's red lies on x + y = 1, so its Z is 0: float64 leaves those 1e-17 to 1e-15 off, and
+    what is written (config, CLF, ``ocioforge matrix``) holds the exact values."""
+    from generator.colorimetry.matrices import settled
+
+    g = gamuts()
+    to_p3 = settled(rgb_to_rgb(g["Rec.709"], g["P3-D65"]))
+    assert to_p3[0, 2] == 0.0 and to_p3[1, 2] == 0.0 and not np.signbit(to_p3[0, 2])
+    assert np.array_equal(settled(rgb_to_rgb(g["Rec.2020"], g["Rec.2020"])), np.eye(3))
+    assert settled(normalised_primary_matrix(g["P3-D65"].primaries, g["P3-D65"].whitepoint))[2, 0] == 0.0
+    raw = rgb_to_rgb(g["AP0"], g["P3-D65"])
+    np.testing.assert_array_equal(settled(raw), raw)  # nothing else moves
+
+
+def test_written_matrices_hold_no_float_residue(build_config):
+    """Every MatrixTransform of the default config is exact where its derivation is: no entry
+    is a residue below 1e-12 (a reader sees 0, not -3.96e-17)."""
+    import PyOpenColorIO as ocio
+
+    config = ocio.Config.CreateFromFile(str(build_config((2, 1))))
+    entries, stack = [], []
+    for space in config.getColorSpaces():
+        stack += [space.getTransform(d) for d in (ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)]
+    for view_transform in config.getViewTransforms():
+        stack += [view_transform.getTransform(d) for d in (ocio.VIEWTRANSFORM_DIR_TO_REFERENCE,
+                                                           ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)]
+    stack = [t for t in stack if t is not None]
+    while stack:
+        t = stack.pop()
+        if isinstance(t, ocio.GroupTransform):
+            stack.extend(t)
+        elif isinstance(t, ocio.MatrixTransform):
+            entries.extend(t.getMatrix())
+    entries = np.array(entries)
+    assert entries.size > 100
+    residue = entries[(entries != 0.0) & (np.abs(entries) < 1e-12)]
+    assert residue.size == 0, residue

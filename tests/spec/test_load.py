@@ -363,6 +363,32 @@ def test_the_reference_role_follows_the_scene_reference_unless_set():
     assert ("reference", "ACEScg") in parse("[roles]\nReference = 'ACEScg'").roles  # OCIO keeps roles in lower case
 
 
+
+#: A spec without a data space (its data role on a space that converts).
+NO_RAW = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)"]\n'
+          '[roles]\ndata = "ACEScg"\n')
+
+
+@pytest.mark.parametrize("text, field", [
+    # a display's default views hold Raw, and no colour space is data: the build raised OCIO's
+    # "a non-empty color space name is needed" as a traceback
+    (f"{NO_RAW}[[display]]\nname = 'sRGB - Display'", "display[0].views"),
+    (f"{NO_RAW}[[display]]\nname = 'sRGB - Display'\nviews = ['Colorimetric', 'Raw']", "display[0].views"),
+    # hosts read a file of the data role unconverted: a space that converts cannot be it
+    ("[roles]\ndata = 'ACEScg'", "roles.data"),
+    # nor can a custom space labelled data, which still converts by its gamut and transfer
+    ("[[custom_space]]\nname = 'Mattes'\ngamut = 'Rec.709'\nencoding = 'data'\n[roles]\ndata = 'Mattes'",
+     "roles.data"),
+])
+def test_raw_and_the_data_role_need_a_data_colour_space(text, field):
+    with pytest.raises(SpecError) as error:
+        parse(text)
+    assert error.value.field == field and "allowed:" in str(error.value) and "'Raw'" in str(error.value)
+    with_raw = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+    assert ("data", "Raw") in parse(f"{with_raw}[[display]]\nname = 'sRGB - Display'").roles
+
+
+
 SPACES = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
 CUSTOM = "[[custom_space]]\nname = {name}\ngamut = 'Rec.709'\n"
 RULES = "[[file_rule]]\nname = {name}\ncolour_space = 'ACEScg'\n{extra}\n[[file_rule]]\nname = 'Default'\ncolour_space = 'ACEScg'\n"

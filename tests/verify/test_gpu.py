@@ -88,3 +88,16 @@ def test_no_probes_draw_nothing(device):
 
     proc = ocio.Config.CreateRaw().getProcessor(ocio.MatrixTransform([2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 1]))
     assert gpu_apply(device, proc, np.zeros((0, 3))).shape == (0, 3)
+
+
+def test_the_gpu_keeps_desaturate_near_black(build_config, device):
+    """OCIO's shader forms a 3D table's coordinate as ``(x (N - 1) + 0.5) / N`` in float32, which
+    resolves about 3e-8 of a cell: the desaturate lattice's value axis has a first cell of 2**-16
+    so that colours a billionth of the peak keep their value (a first cell of 1/64 drew them black,
+    0.26 ten-bit codes off on Gamma 2.6). From an encoded display space every channel is
+    positive, so OCIO HSV's value is too (negative values are README's known departure)."""
+    config = build_config((2, 1))
+    result = verify(config, ("gpu",), kinds=(VIEW,), only="Desaturate from sRGB - Display", strict=True)
+    outcomes = [o for o in result.outcomes if o.engine.startswith("gpu")]
+    assert len(outcomes) >= 6 and all(o.verdict == PASS for o in outcomes), \
+        [(o.check.title, o.verdict, o.worst) for o in outcomes if o.verdict != PASS]
