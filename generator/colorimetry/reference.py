@@ -172,12 +172,21 @@ def gamut_map(display: Display, method: str, linear, params=None) -> np.ndarray:
     return METHODS[method](np.asarray(linear, dtype=np.float64) / display.clip_high, gamut, params)
 
 
+def method_params(spec: Spec, method: str, params=None):
+    """``params`` if given, else the spec's for ``method`` (its RGC parameters; None, the
+    method's defaults, for the others)."""
+    if params is not None:
+        return params
+    return spec.rgc if method == "rgc" else None
+
+
 def mapped_view(spec: Spec, display: Display, method: str, ref, params=None) -> np.ndarray:
     """Scene-reference linear RGB through a gamut-mapped view of ``display``.
 
     To display-linear RGB (the scene-to-display matrix with chromatic
     adaptation), gamut mapping with ``method`` into [0, peak], display encoding
     (see :func:`map_display_linear`). ``mapped_view(..., "clip")`` is
-    :func:`colorimetric_view`.
+    :func:`colorimetric_view`. ``params`` None takes the spec's (:func:`method_params`).
     """
-    return map_display_linear(display, method, apply_matrix(scene_to_display_matrix(spec, display), ref), params)
+    return map_display_linear(display, method, apply_matrix(scene_to_display_matrix(spec, display), ref),
+                              method_params(spec, method, params))

@@ -34,6 +34,12 @@ import numpy as np
 from generator.gamut.display import DisplayGamut, sanitize
 
 
+#: The ranges OpenColorIO's FIXED_FUNCTION_ACES_GAMUT_COMP_13 accepts for each limit, each
+#: threshold and the power (its FixedFunctionOpData validation, 2.1 to 2.6; measured): a
+#: config with a parameter beyond them does not load.
+OCIO_RANGES = {"limits": (1.001, 65504.0), "thresholds": (0.0, 0.9995), "power": (1.0, 65504.0)}
+
+
 @dataclass(frozen=True)
 class RGCParams:
     """Parameters of the Reference Gamut Compression; defaults are ACES 1.3's.

@@ -306,7 +306,9 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
     display space encodes it (a view of a display CLF cannot encode, PQ or HLG): the
     lattice holds the same curve of the mapped colour as its input (the pre-shaper's
     power inside the cube, :class:`LogAxis` coordinates for clip and scale), so what the
-    mapping leaves alone passes through exactly, and an exact operator undoes the curve."""
+    mapping leaves alone passes through exactly, and an exact operator undoes the curve.
+    ``params`` None takes the spec's (:func:`~generator.colorimetry.reference.method_params`)."""
+    params = reference.method_params(spec, method, params)
     matrix = reference.normalised_display_matrix(spec, display)
     if source is not None:
         matrix = matrix @ reference.space_matrix(spec, source)
@@ -347,8 +349,11 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: st
                    shaper: str | ColourSpace = "auto", params=None) -> Lattice:
     """The source layout. ``shaper``: "auto" (:class:`SourceAxis` on the decoded source),
     "none" (the cube directly over the source domain) or a colour space whose
-    curve, applied to the decoded source values, spaces the nodes."""
+    curve, applied to the decoded source values, spaces the nodes. ``params`` None takes
+    the spec's (:func:`~generator.colorimetry.reference.method_params`)."""
     from generator.luts.fit import FIT_COUNT, reweighted_fit  # fit.py builds on this module
+
+    params = reference.method_params(spec, method, params)
 
     domain = shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
     table = _shaper_table(spec, source, display, size, shaper, domain)

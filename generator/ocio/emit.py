@@ -130,7 +130,6 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     the display's own encoding is undone from, so the display space re-encodes it
     exactly; for an HDR display (PQ, HLG, extended range) the file ends in display
     light and the display space encodes it."""
-    from generator.gamut import RGCParams
     from generator.luts import hsv
     from generator.luts.view import bake_view_lut_cached, lut_steps
 
@@ -139,7 +138,7 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     to_xyz = reference.normalised_display_to_xyz(spec, display)
     if method == "rgc":
         steps = [matrix_transform(to_display),
-                 ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, RGCParams().as_ocio_params()),
+                 ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, spec.rgc.as_ocio_params()),
                  matrix_transform(to_xyz)]
     else:
         lut = bake_view_lut_cached(spec, display, method)

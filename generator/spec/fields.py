@@ -270,3 +270,37 @@ def _check_log_break(params: dict, source: str, field: str) -> None:
         raise SpecError(source, f"{field}.lin_side_break",
                         f"at {params['lin_side_break']:g} the log segment is undefined "
                         f"(lin_side_slope * lin_side_break + lin_side_offset <= 0); allowed: > {lowest:g}")
+
+
+#: The keys of a spec's [rgc] table, each as RGCParams holds it.
+RGC_KEYS = ("limits", "thresholds", "power")
+
+
+def rgc_params(value, source: str):
+    """The spec's [rgc] table (limits and thresholds as [cyan, magenta, yellow], power), each
+    key defaulting to ACES 1.3's value, within what OpenColorIO's fixed function accepts."""
+    from generator.gamut.rgc import OCIO_RANGES, RGCParams
+
+    defaults = RGCParams()
+    if value is None:
+        return defaults
+    if not isinstance(value, dict):
+        raise SpecError(source, "rgc", f"expected a table of {', '.join(RGC_KEYS)} (under an [rgc] header), got {value!r}")
+    for key in value:
+        if key not in RGC_KEYS:
+            raise SpecError(source, f"rgc.{key}", f"unknown key; allowed: {', '.join(RGC_KEYS)}")
+    chosen = {"limits": defaults.limits, "thresholds": defaults.thresholds, "power": defaults.power}
+    for key, given in value.items():
+        if key == "power":
+            numbers = [(f"rgc.power", number(given, source, "rgc.power"))]
+        else:
+            if not isinstance(given, list) or len(given) != 3:
+                raise SpecError(source, f"rgc.{key}", f"expected three numbers [cyan, magenta, yellow], got {given!r}")
+            numbers = [(f"rgc.{key}[{i}]", number(v, source, f"rgc.{key}[{i}]")) for i, v in enumerate(given)]
+        low, high = OCIO_RANGES[key]
+        for field, v in numbers:
+            if not low <= v <= high:
+                raise SpecError(source, field, f"{v!r} is outside what OpenColorIO's ACES_GAMUT_COMP_13 takes; "
+                                f"allowed: {low:g} to {high:g}")
+        chosen[key] = numbers[0][1] if key == "power" else tuple(v for _, v in numbers)
+    return RGCParams(*chosen["limits"], *chosen["thresholds"], chosen["power"])

@@ -22,7 +22,7 @@ from generator.spec import fields, labels, namespace
 from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
-TOP_KEYS = ("name", "description", "ocio_version", "scene_reference", "chromatic_adaptation", "colour_spaces",
+TOP_KEYS = ("name", "description", "ocio_version", "scene_reference", "chromatic_adaptation", "rgc", "colour_spaces",
             "inactive", "display_view_spaces", "custom_space", "display", "roles", "file_rule")
 CUSTOM_SPACE_KEYS = ("name", "aliases", "family", "encoding", "description", "gamut", "primaries",
                      "primaries_spectra", "white", "transfer")
@@ -199,6 +199,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
                            _picked_by_hosts(chosen_roles, rules, names, displays)),
         display_view_spaces=view_spaces,
         source=recorded(source),
+        rgc=fields.rgc_params(raw.get("rgc"), source),
         left_out=left_out,
     )
 

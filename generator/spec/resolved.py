@@ -56,6 +56,7 @@ def dumps(spec: Spec) -> str:
     data["colour_spaces"] = [_record(s) for s in spec.colour_spaces]
     data["displays"] = [_record(d) for d in spec.displays]
     data["file_rules"] = [_rule_record(r) for r in spec.file_rules]
+    data["rgc"] = dataclasses.asdict(spec.rgc)
     return json.dumps(data, indent=1, sort_keys=True) + "\n"
 
 
@@ -209,6 +210,19 @@ class _Reader:
             raise self.fail(f"{field}.regex", "empty")
         return FileRule(**d, **({"pattern": "", "extension": ""} if "regex" in d else {}))
 
+    def rgc(self, value):
+        """RGC parameters as :func:`dumps` records them (field by field), ACES 1.3's if absent."""
+        from generator.gamut.rgc import RGCParams
+
+        if value is None:
+            return RGCParams()
+        names = [f.name for f in dataclasses.fields(RGCParams)]
+        d = {k: self.typed(v, float, f"rgc.{k}") for k, v in self.table(value, names, "rgc").items()}
+        try:
+            return RGCParams(**d)
+        except ValueError as error:
+            raise self.fail("rgc", str(error)) from None
+
     def version(self, value) -> tuple[int, int]:
         from generator.spec.load import OCIO_MIN_VERSION, newest_ocio_version
 
@@ -222,7 +236,10 @@ class _Reader:
     def spec(self, data) -> Spec:
         from generator.colorimetry.matrices import CATS
 
-        keys = [f.name for f in dataclasses.fields(Spec) if f.metadata.get("resolved", True)]
+        keys = [f.name for f in dataclasses.fields(Spec) if f.metadata.get("resolved", True) and f.name != "rgc"]
+        # Builds before the spec held RGC parameters recorded none: they used ACES 1.3's.
+        data = dict(data) if isinstance(data, dict) else data
+        rgc = self.rgc(data.pop("rgc", None) if isinstance(data, dict) else None)
         d = self.table(data, keys, "")
         if d["chromatic_adaptation"] not in CATS:
             raise self.fail("chromatic_adaptation", f"unknown chromatic adaptation {d['chromatic_adaptation']!r}")
@@ -235,7 +252,7 @@ class _Reader:
             displays=self.items(d["displays"], "displays", self.display, 1),
             roles=self.items(d["roles"], "roles", self.pair), file_rules=self.items(d["file_rules"], "file_rules", self.rule),
             display_view_spaces=self.typed(d["display_view_spaces"], bool, "display_view_spaces"),
-            inactive=self.strings(d["inactive"], "inactive"), source=self.typed(d["source"], str, "source"))
+            inactive=self.strings(d["inactive"], "inactive"), source=self.typed(d["source"], str, "source"), rgc=rgc)
         self.check_names(spec)
         return spec
 

@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 
 from generator.colorimetry.matrices import Gamut
 from generator.colorimetry.transfer import TransferFunction
+from generator.gamut.rgc import RGCParams
 
 
 class SpecError(ValueError):
@@ -106,6 +107,8 @@ class Spec:
     display_view_spaces: bool  # no default here: a spec that leaves it out takes the embedded default spec's
     inactive: tuple[str, ...] = ()
     source: str = "<default>"
+    #: The ACES Reference Gamut Compression's parameters, for every RGC view and bake.
+    rgc: RGCParams = RGCParams()
     #: Names of the spec's colour spaces a load for one command left out (see
     #: :func:`generator.spec.load.load`'s ``keep``): offered when a name is mistyped, never built.
     left_out: tuple[str, ...] = field(default=(), compare=False, metadata={"resolved": False})

@@ -227,10 +227,12 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
         return _lattice_view(spec, display, method)
     to_display = reference.scene_to_display_matrix(spec, display)
     bounds = None if method in ANALYTIC_METHODS else lut_range(display, method)
+    params = reference.method_params(spec, method)
 
     def mapped(ref):
         linear = apply_matrix(to_display, ref)
-        return reference.map_display_linear(display, method, linear if bounds is None else np.clip(linear, *bounds))
+        return reference.map_display_linear(display, method, linear if bounds is None else np.clip(linear, *bounds),
+                                            params)
 
     return mapped
 

@@ -288,3 +288,20 @@ def test_a_clf_into_a_tabulated_eotf_puts_the_peak_on_an_entry(tmp_path):
     greys = np.repeat(np.array([1.0, 2.0, 5.0, 40.0])[:, None], 3, axis=1)
     codes = probes.ocio_apply(_transform(_write(tmp_path, req)))(greys)
     np.testing.assert_allclose(codes, 1.0, rtol=0, atol=tolerances.LUT_CLF_IN_GAMUT_CODES / 1023)
+
+
+def test_an_rgc_bake_takes_the_specs_parameters(default_spec, tmp_path):
+    """The spec's [rgc] table reaches the lattice: measured against the spec's own mapping the
+    file is as close as ACES 1.3's bake is to ACES 1.3's, and far from ACES 1.3's mapping."""
+    from generator.spec import load
+
+    spec = load.parse("[rgc]\nlimits = [1.5, 1.4, 1.3]\nthresholds = [0.6, 0.7, 0.75]\npower = 1.5", "show.toml",
+                      tmp_path)
+    figures = {}
+    for name, baked in (("own", spec), ("aces", default_spec)):
+        req = _request(baked, "clf", method="rgc", size=33, source="ACEScg")
+        apply = probes.ocio_apply(_transform(_write(tmp_path, req, name)))
+        figures[name] = {against: probes.measure(s, req.source, req.display, "rgc", apply, count=1024)["in_gamut"].p99
+                         for against, s in (("own", spec), ("aces", default_spec))}
+    assert figures["own"]["own"] <= 1.5 * figures["aces"]["aces"]
+    assert figures["own"]["aces"] > 4 * figures["own"]["own"], figures

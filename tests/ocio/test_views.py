@@ -193,3 +193,28 @@ def test_perceptual_takes_bright_saturated_lights_to_white(built):
         assert error.max() <= tolerances.LUT_CLF_SCALE_CODES, (display.name, error.max())
         checked += 1
     assert checked == 6
+
+
+def test_the_rgc_view_runs_the_specs_parameters_and_verify_judges_it_by_them(tmp_path):
+    """The spec's [rgc] table is the config's FixedFunction, and the reference verify compares
+    with: the config passes, and the same config with ACES 1.3's parameters fails."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
+    from generator.verify.checks import VIEW
+    from generator.verify.judge import FAIL, PASS
+    from generator.verify.run import verify
+
+    spec = load.parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+                      "[rgc]\nlimits = [1.5, 1.4, 1.3]\nthresholds = [0.6, 0.7, 0.75]\npower = 1.5\n"
+                      '[[display]]\nname = "Rec.1886 Rec.709 - Display"\nviews = ["RGC", "Raw"]\n', "show.toml", tmp_path)
+    folder = tmp_path / "show"
+    build(for_folder(spec, folder), folder)
+    config = folder / "config.ocio"
+    text = config.read_text(encoding="utf-8")
+    assert text.count("params: [1.5, 1.4, 1.3, 0.6, 0.7, 0.75, 1.5]") == 1  # the view transform
+    result = verify(config, ("ocio",), density="quick", kinds=(VIEW,), only="RGC", strict=True)
+    assert result.outcomes and all(o.verdict == PASS for o in result.outcomes)
+    config.write_text(text.replace("[1.5, 1.4, 1.3, 0.6, 0.7, 0.75, 1.5]", "[1.147, 1.264, 1.312, 0.815, 0.803, 0.88, 1.2]"),
+                      encoding="utf-8")
+    result = verify(config, ("ocio",), density="quick", kinds=(VIEW,), only="RGC", strict=True)
+    assert any(o.verdict == FAIL for o in result.outcomes)

@@ -389,6 +389,31 @@ def test_raw_and_the_data_role_need_a_data_colour_space(text, field):
 
 
 
+
+def test_the_rgc_table_sets_the_compressions_parameters_each_defaulting_to_aces_13():
+    from generator.gamut import RGCParams
+
+    assert parse("").rgc == RGCParams()
+    spec = parse("[rgc]\nlimits = [1.5, 1.4, 1.3]\nthresholds = [0.6, 0.7, 0.75]\npower = 1.5")
+    assert spec.rgc.as_ocio_params() == [1.5, 1.4, 1.3, 0.6, 0.7, 0.75, 1.5]
+    assert parse("[rgc]\npower = 2").rgc == RGCParams(power=2.0)
+
+
+@pytest.mark.parametrize("text, field, words", [
+    ("[rgc]\nlimits = [1.0, 1.4, 1.3]", "rgc.limits[0]", "allowed: 1.001 to 65504"),  # OCIO refuses the config
+    ("[rgc]\nthresholds = [0.5, 0.9996, 0.5]", "rgc.thresholds[1]", "allowed: 0 to 0.9995"),
+    ("[rgc]\npower = 0.9", "rgc.power", "allowed: 1 to 65504"),
+    ("[rgc]\npower = 'a'", "rgc.power", "expected a finite number"),
+    ("[rgc]\nlimits = [1.5, 1.4]", "rgc.limits", "expected three numbers [cyan, magenta, yellow]"),
+    ("[rgc]\nlimit = 1.5", "rgc.limit", "allowed: limits, thresholds, power"),
+    ("rgc = 3", "rgc", "expected a table"),
+])
+def test_a_bad_rgc_parameter_is_one_error_naming_it(text, field, words):
+    with pytest.raises(SpecError) as error:
+        parse(text)
+    assert error.value.field == field and words in str(error.value)
+
+
 SPACES = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
 CUSTOM = "[[custom_space]]\nname = {name}\ngamut = 'Rec.709'\n"
 RULES = "[[file_rule]]\nname = {name}\ncolour_space = 'ACEScg'\n{extra}\n[[file_rule]]\nname = 'Default'\ncolour_space = 'ACEScg'\n"

@@ -72,6 +72,9 @@ def test_a_build_that_wrote_an_inactive_space_by_its_alias_still_loads(stored):
     (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": ""}, "file_rules[0].regex", "empty"),
     (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": 5}, "file_rules[0].regex", "expected a string"),
     (("name",), 5, "name", "expected a string"),
+    (("rgc", "power"), "x", "rgc.power", "expected a finite number"),
+    (("rgc", "power"), 0.5, "rgc", "power must be at least 1"),
+    (("rgc", "limit_cyan"), KeyError, "rgc.limit_cyan", "missing"),
 ])
 def test_a_malformed_stored_spec_is_one_error_naming_the_field(stored, path, value, field, words):
     assert resolved.loads(json.dumps(stored)) is not None
@@ -102,3 +105,11 @@ def test_verify_of_a_config_whose_stored_spec_is_malformed_exits_2_with_one_line
         main(["verify", str(folder / "config.ocio"), "--quick", "--engines", "ocio"])
     err = capsys.readouterr().err
     assert exit_.value.code == 2 and err.count("\n") == 1 and ":roles: expected a list" in err
+
+
+def test_the_rgc_parameters_round_trip_and_a_build_before_them_reads_aces_13s(stored, tmp_path):
+    from generator.gamut import RGCParams
+
+    spec = load.parse("[rgc]\nlimits = [1.5, 1.4, 1.3]\npower = 1.5", "show.toml", tmp_path)
+    assert resolved.loads(resolved.dumps(spec)).rgc == spec.rgc == RGCParams(1.5, 1.4, 1.3, power=1.5)
+    assert resolved.loads(json.dumps(_set(stored, ("rgc",), KeyError))).rgc == RGCParams()
