@@ -3,6 +3,7 @@ place of anything the user did not ask to replace."""
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import os
 import shutil
@@ -293,14 +294,53 @@ def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
         with _uninterrupted():
             for _, path in staged:
                 target(path, force)
-            for temporary, path in staged:
-                with _writing(path):
-                    os.replace(temporary, path)
+            _replace_all(staged)
     finally:
         for temporary, _ in staged:
             if os.path.exists(temporary):
                 os.unlink(temporary)
     return list(targets)
+
+
+def _replace_all(staged: list[tuple[str, Path]]) -> None:
+    """Rename each staged temporary onto its path, all or none: with more than one, each file
+    there is first moved aside, and if any rename fails, the files placed are taken back and
+    the old ones restored (a .spi3d must not be left new beside its old .spi1d)."""
+    if len(staged) == 1:
+        temporary, path = staged[0]
+        with _writing(path):
+            os.replace(temporary, path)
+        return
+    aside: dict[Path, str] = {}  # a path whose old file was moved, to where
+    placed: list[Path] = []
+    try:
+        for _, path in staged:
+            if os.path.lexists(path):
+                with _writing(path):
+                    handle, old = tempfile.mkstemp(prefix=f".{path.name}.old.", dir=path.parent)
+                    os.close(handle)
+                    try:
+                        os.replace(path, old)
+                    except OSError:
+                        os.unlink(old)
+                        raise
+                aside[path] = old
+        for temporary, path in staged:
+            with _writing(path):
+                os.replace(temporary, path)
+            placed.append(path)
+    except BaseException:
+        for path in placed:
+            if path not in aside:
+                with contextlib.suppress(OSError):
+                    os.unlink(path)
+        for path, old in aside.items():
+            with contextlib.suppress(OSError):
+                os.replace(old, path)
+        raise
+    for old in aside.values():
+        with contextlib.suppress(OSError):
+            os.unlink(old)
 
 
 def write_atomic(path: Path, data: bytes, force: bool) -> Path:

@@ -37,6 +37,29 @@ def test_files_are_written_all_or_none(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["blocked", "lut.cube"]
 
 
+def test_a_pair_whose_second_rename_fails_keeps_both_old_files(tmp_path, monkeypatch):
+    """A .spi3d and its .spi1d: if the .spi1d cannot be renamed into place once the .spi3d has
+    been, the .spi3d is taken back, so the old pair stays a pair (the new lattice beside the old
+    shaper is off by tens of codes)."""
+    import os
+
+    (tmp_path / "lut.spi3d").write_bytes(b"old 3d")
+    (tmp_path / "lut.spi1d").write_bytes(b"old 1d")
+    real_replace = os.replace
+
+    def failing(source, destination):
+        if str(destination).endswith("lut.spi1d") and ".old." not in str(destination) and ".old." not in str(source):
+            raise PermissionError(1, "Operation not permitted", str(destination))
+        return real_replace(source, destination)
+
+    monkeypatch.setattr(os, "replace", failing)
+    with pytest.raises(CannotWrite, match="lut.spi1d"):
+        write_files({tmp_path / "lut.spi3d": b"new 3d", tmp_path / "lut.spi1d": b"new 1d"}, force=True)
+    monkeypatch.setattr(os, "replace", real_replace)
+    assert (tmp_path / "lut.spi3d").read_bytes() == b"old 3d" and (tmp_path / "lut.spi1d").read_bytes() == b"old 1d"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["lut.spi1d", "lut.spi3d"]  # nothing set aside is left
+
+
 def test_a_folder_that_cannot_be_staged_names_the_folder(tmp_path):
     (tmp_path / "blocked").write_bytes(b"")
     with pytest.raises(CannotWrite, match=r"show: cannot write: Not a directory$"):

@@ -36,6 +36,7 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     if not output:
         raise SpecError(bake.WHERE, "-o", "give the file to write")
     target(output, force)  # refused before the bake, not after
+    bake.check_folder(output)
     fmt = bake.format_for(fmt, output)
     req = bake.request(load.load(spec_path, keep=(source, shaper)), source, display,
                        bake.DEFAULT_METHOD if method is None else method.lower(), fmt,

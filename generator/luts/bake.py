@@ -10,6 +10,7 @@ layout each format gets is in :mod:`generator.luts.lattice`; bad requests raise
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -119,8 +120,9 @@ def format_for(fmt: str | None, output: str) -> str:
     if fmt not in FORMATS:
         raise SpecError(WHERE, "--format", f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
     suffix = Path(output).suffix.lower()
-    if suffix in (*_BY_SUFFIX, SHAPER_SUFFIX) and suffix != FORMATS[fmt].suffix:
-        raise SpecError(WHERE, "-o", f"{Path(output).name!r} ends in {suffix}, not {fmt}'s suffix; allowed: a name "
+    if suffix != FORMATS[fmt].suffix:
+        ends = f"ends in {suffix}" if suffix else "has no suffix"
+        raise SpecError(WHERE, "-o", f"{Path(output).name!r} {ends}, not {fmt}'s; allowed: a name "
                         f"ending in {FORMATS[fmt].suffix} (hosts tell formats by suffix)")
     return fmt
 
@@ -260,17 +262,33 @@ def identifier(req: Request) -> str:
     return f"ocioforge:{slug(req.source.name)}_to_{slug(req.display.name)}_{req.method}_{req.size}"
 
 
-def paths(files: dict[str, bytes], output: str | Path) -> dict[Path, bytes]:
-    """Where each file goes: the main file at ``output``, a shaper beside it with its own suffix."""
+def _beside(output: str | Path) -> Path:
+    """The file a shaper goes beside: ``output``, or the file it links to (where the main file
+    is written), so a .spi3d and its .spi1d stay a pair."""
     output = Path(output)
-    return {(output if not suffix else output.with_suffix(suffix)): data for suffix, data in files.items()}
+    return Path(os.path.realpath(output)) if output.is_symlink() else output
+
+
+def paths(files: dict[str, bytes], output: str | Path) -> dict[Path, bytes]:
+    """Where each file goes: the main file at ``output``, a shaper beside it (beside the file
+    ``output`` links to, if it is a link) with its own suffix."""
+    output = Path(output)
+    return {(output if not suffix else _beside(output).with_suffix(suffix)): data for suffix, data in files.items()}
 
 
 def stale(files: dict[Path, bytes], output: str | Path, fmt: str) -> list[Path]:
     """Files an earlier bake to ``output`` left that this one does not write: the shaper
     beside a .spi3d (paired with the new file, it would put colours tens of codes off)."""
-    shaper = Path(output).with_suffix(SHAPER_SUFFIX)
+    shaper = _beside(output).with_suffix(SHAPER_SUFFIX)
     return [shaper] if fmt == "spi3d" and shaper not in files and shaper.is_file() else []
+
+
+def check_folder(path: str | Path) -> None:
+    """SpecError unless the folder ``path`` goes in exists (checked before a bake, and before writing)."""
+    parent = Path(path).parent
+    if not parent.is_dir():
+        what = "is a file, not a folder" if parent.exists() else "does not exist"
+        raise SpecError(WHERE, "-o", f"folder {str(parent)!r} {what}")
 
 
 def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | None = None) -> None:
@@ -282,9 +300,7 @@ def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | No
             raise SpecError(WHERE, "-o", f"{str(path)!r} exists, an earlier bake's shaper this one does not write; "
                             "pass --force to replace the bake and delete it")
     for path in files:
-        if not path.parent.is_dir():
-            what = "is a file, not a folder" if path.parent.exists() else "does not exist"
-            raise SpecError(WHERE, "-o", f"folder {str(path.parent)!r} {what}")
+        check_folder(path)
     write_files(files, force)
     for path in remove or ():
         path.unlink(missing_ok=True)

@@ -129,7 +129,8 @@ def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
         weights = {}
         for name, rows in system.sets.items():
             error = probes.errors(lat.display, actual[:, rows].T, system.expected[:, rows].T)[0]
-            u = error / max(_percentile_99(error) if error.size else 1.0, 1e-12)
+            # beyond the cut-off a colour's weight is the tail's whatever u is; capped, u**2 cannot overflow
+            u = np.minimum(error / max(_percentile_99(error) if error.size else 1.0, 1e-12), 2 * FIT_REWEIGHT_CUTOFF)
             scale = np.where(u > FIT_REWEIGHT_CUTOFF, FIT_REWEIGHT_TAIL, FIT_REWEIGHT_FLOOR + u**2)
             weights[name] = base[name] * scale
         cube = fit(lat, colours, zero, weights, system)

@@ -75,6 +75,11 @@ BAD = {
     "display shaper": ["--from", "ACEScct", "--to", "sRGB - Display", "--shaper", "Rec.1886 Rec.709 - Display"],
     "suffix of another format": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "spi3d"],
 }
+#: A name whose suffix no host reads as the format asked for (the case below writes to "out.cube").
+BAD_NAMES = {
+    "suffix no format has": (["--format", "clf"], "out.3dl", "ends in .3dl, not clf's"),
+    "no suffix": (["--format", "resolve_cube"], "out", "has no suffix"),
+}
 
 
 @pytest.fixture
@@ -265,3 +270,50 @@ def test_a_build_bakes_from_the_spec_it_stored(tmp_path, build_config):
         result = CliRunner().invoke(command, [*args, *(["--spec", str(spec)] if spec else [])])
         assert result.exit_code == 0, result.output
     assert len({path.read_bytes() for path in outputs}) == 1
+
+
+@pytest.mark.parametrize("case", sorted(BAD_NAMES))
+def test_a_name_without_the_formats_suffix_is_refused(tmp_path, run, case):
+    """README: hosts tell formats by suffix; a .clf named .3dl, or a cube with no suffix, reads as nothing."""
+    args, name, words = BAD_NAMES[case]
+    code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", *args, "-o", str(tmp_path / name)])
+    assert code == 2 and err.count("\n") == 1 and words in err, err
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_missing_folder_is_refused_before_the_bake(tmp_path, run, monkeypatch):
+    """A 65³ perceptual bake took seconds before saying its folder did not exist."""
+    from generator.luts import bake
+
+    monkeypatch.setattr(bake, "bake", lambda req: pytest.fail("baked before the folder was checked"))
+    code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", "-o", str(tmp_path / "nodir" / "out.cube")])
+    assert code == 2 and "does not exist" in err, err
+
+
+def test_a_spi3d_baked_through_a_link_keeps_its_shaper_beside_the_file_written(tmp_path, run):
+    """The .spi3d is written to the file the link points to: its .spi1d goes beside that file,
+    not beside the link, where the target's earlier shaper had stayed paired with the new lattice
+    (168 ten-bit codes off in gamut)."""
+    real = tmp_path / "v001" / "show.spi3d"
+    real.parent.mkdir()
+    assert CliRunner().invoke(command, ["--from", "ACEScct", "--to", "sRGB - Display", "-o", str(real)]).exit_code == 0
+    first = real.with_suffix(".spi1d").read_bytes()
+    link = tmp_path / "current.spi3d"
+    link.symlink_to(real)
+    CliRunner().invoke(command, ["--from", "ACEScct", "--to", "Rec.1886 Rec.709 - Display", "-o", str(link), "--force"])
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["current.spi3d", "v001"]
+    assert "Rec.1886" in real.with_suffix(".spi1d").read_text() and real.with_suffix(".spi1d").read_bytes() != first
+    assert "Rec.1886" in real.read_text()
+
+
+def test_a_bake_whose_weights_reach_zero_warns_of_nothing(tmp_path):
+    """An HLG desaturate fit has a set whose 99th percentile error is about 0: squaring each
+    colour's error over it overflowed, and numpy printed a RuntimeWarning on a good bake."""
+    import warnings
+
+    out = tmp_path / "hlg.cube"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        result = CliRunner().invoke(command, ["--from", "slog3_sgamut3cine", "--to", "Rec.2100-HLG - Display",
+                                              "--gamut-map", "desaturate", "-o", str(out)])
+    assert result.exit_code == 0, result.output
