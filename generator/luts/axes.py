@@ -104,10 +104,12 @@ class LogAxis:
         """The fewest nodes below the peak leaving at least :data:`LOG_TOE_BITS`
         (:data:`HLG_TOE_BITS` for HLG code values, unless ``exact``: the lattice then
         holds display light, not HLG's code) between the toe and the peak, or all but
-        one in a small lattice."""
+        one in a small lattice. Three nodes are too few: the toe then sits a few bits below
+        the peak, and scale's over-range colours came out 26 ten-bit codes off (ACEScg into
+        sRGB; from four nodes, 0.013)."""
         wanted = HLG_TOE_BITS if display.eotf_name == "HLG" and not exact else LOG_TOE_BITS
         n = size - 1
-        if n < 2:
+        if n < 3:
             raise ValueError(f"a lattice of {size} nodes is too small for this axis")
         one = next((k for k in range(1, n) if np.log2(high) * k / (n - k) >= wanted), n - 1)
         return cls(size, one, 1.0 / _ratio_to_peak(high, one / n))

@@ -305,3 +305,14 @@ def test_an_rgc_bake_takes_the_specs_parameters(default_spec, tmp_path):
                          for against, s in (("own", spec), ("aces", default_spec))}
     assert figures["own"]["own"] <= 1.5 * figures["aces"]["aces"]
     assert figures["own"]["aces"] > 4 * figures["own"]["own"], figures
+
+
+def test_a_scale_clf_at_its_smallest_size_is_exact(default_spec, tmp_path):
+    """At three nodes a side the log axis's toe sat a few bits below the peak, and scale's
+    over-range colours came out 26 ten-bit codes off: the smallest size is the first exact one."""
+    req = _request(default_spec, "clf", method="scale", size=bake._smallest_size(
+        default_spec, default_spec.displays[0], default_spec.space("ACEScg"), "scale", "clf", "auto"), source="ACEScg")
+    assert req.size == 4
+    figures = probes.measure(default_spec, req.source, req.display, "scale",
+                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_EXACT_CODES
