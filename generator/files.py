@@ -100,6 +100,38 @@ def named(path: Path, what: str = "file") -> Path:
     return path
 
 
+def check_file_output(path: str | Path) -> None:
+    """:class:`Refused` where ``path`` names a file in a folder that does not exist (a command
+    writing one file, init, plot or bake, makes no folder: a failed write had left the folders
+    it made), or ends in a slash, naming a folder, not the file it would have written."""
+    text = str(path)
+    if text.endswith(("/", os.sep)) and Path(text).name:
+        raise Refused(path, "ends in a slash, so it names a folder; allowed: a file's name")
+    parent = Path(path).parent
+    try:
+        os.stat(parent)
+    except FileNotFoundError:
+        raise Refused(path, f"its folder {str(parent)!r} does not exist; allowed: a file in an existing folder") from None
+    except OSError:
+        pass  # a file or a loop of links where the folder should be: the write names the OS's reason
+
+
+def not_readable(path: str | Path) -> str | None:
+    """Why ``path`` is not a file to read, or None for a regular file (through links): a
+    device or pipe would be read without end (/dev/zero) or wait for a writer forever."""
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        return "does not exist"
+    except OSError as error:
+        return f"cannot be read: {error.strerror}"
+    if stat.S_ISDIR(mode):
+        return "is a folder"
+    if not stat.S_ISREG(mode):
+        return "is not a regular file (a device, pipe or socket)"
+    return None
+
+
 def target(path: str | Path, force: bool) -> Path:
     """Where writing the file ``path`` goes: ``path`` when nothing is there; with ``force``, a
     regular file there, or the regular file a link there points to (written, the link kept, as

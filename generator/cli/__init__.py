@@ -92,6 +92,13 @@ class ConfigPath(GivenPath):
                 self.fail(f"{value!r} is a folder without {CONFIG_FILENAME}; allowed: a config file, or a "
                           f"build's folder holding {CONFIG_FILENAME}", param, ctx)
             value = os.path.join(value, CONFIG_FILENAME)
+        if isinstance(value, str) and os.path.exists(value):
+            from generator.files import not_readable
+
+            why = not_readable(value)
+            if why is not None:
+                self.fail(f"{value!r} {why}; allowed: a config file, or a build's folder holding {CONFIG_FILENAME}",
+                          param, ctx)
         return super().convert(value, param, ctx)
 
 
@@ -207,6 +214,11 @@ def _os_error(error: OSError) -> str:
     return f"{name}{error.strerror or error}"
 
 
+#: The last second of year 9999, the latest date the plots' metadata and Python's datetime
+#: hold (a later SOURCE_DATE_EPOCH overflowed them with a traceback).
+LATEST_EPOCH = 253402300799
+
+
 def _check_environment() -> None:
     """What the environment must give a command: an open standard output, and a SOURCE_DATE_EPOCH
     that is unset or an integer (reproducible-builds.org: a malformed one is an error; numpy's
@@ -214,6 +226,6 @@ def _check_environment() -> None:
     if sys.stdout is None:
         fail("standard output is closed; allowed: a command with its output open (a file, a pipe or /dev/null)")
     epoch = os.environ.get("SOURCE_DATE_EPOCH")
-    if epoch is not None and not (epoch.isascii() and epoch.isdigit()):
-        fail(f"SOURCE_DATE_EPOCH={epoch!r} is not a whole number of seconds since 1970; allowed: unset, or "
-             "such a number")
+    if epoch is not None and not (epoch.isascii() and epoch.isdigit() and int(epoch) <= LATEST_EPOCH):
+        fail(f"SOURCE_DATE_EPOCH={epoch!r} is not a whole number of seconds since 1970 up to the end of year "
+             f"9999; allowed: unset, or such a number (0 to {LATEST_EPOCH})")

@@ -27,7 +27,7 @@ from generator.cli import NAME, Command, GivenPath, printable
               help="File to write, required (a .spi3d's shaper goes beside it as .spi1d).")
 @click.option("--force", is_flag=True, help="Replace existing files (through a link, the file it points to).")
 def command(source, display, method, size, fmt, shaper, spec_path, output, force):
-    from generator.files import target
+    from generator.files import check_file_output, target
     from generator.luts import bake
     from generator.spec import load
     from generator.spec.schema import SpecError
@@ -35,8 +35,8 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     started = time.perf_counter()
     if not output:
         raise SpecError(bake.WHERE, "-o", "give the file to write")
+    check_file_output(output)
     target(output, force)  # refused before the bake, not after
-    bake.check_folder(output)
     fmt = bake.format_for(fmt, output)
     req = bake.request(load.load(spec_path, keep=(source, shaper)), source, display,
                        bake.DEFAULT_METHOD if method is None else method.lower(), fmt,

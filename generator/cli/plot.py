@@ -24,15 +24,18 @@ FORMATS = ("png", "svg", "pdf")
               help="With --mapping: the display (name or alias; default: the spec's first).")
 @click.option("--force", is_flag=True, help="Replace an existing image (through a link, the file it points to).")
 def command(config, output, mapping, display_name, force):
-    from generator.files import target, write_atomic
+    from generator.files import check_file_output, target, write_atomic
     from generator.spec.schema import SpecError
     from generator.verify.figures import chromaticity, png
     from generator.verify.run import load
 
+    if display_name is not None and not mapping:
+        raise SpecError("ocioforge plot", "--display", "chooses the display --mapping draws; allowed: with --mapping")
+    check_file_output(output)
+    target(output, force)  # refused before the drawing, not after (a folder, a device: named as such)
     fmt = Path(output).suffix.lower().lstrip(".")
     if fmt not in FORMATS:
         raise SpecError(output, "-o", f"unknown image format {fmt!r}; allowed: {', '.join(FORMATS)}")
-    target(output, force)  # refused before the drawing, not after
     _, spec = load(config)
     display = _display(spec, display_name) if mapping else None
     write_atomic(Path(output), png(chromaticity(spec, display, spaces=True), fmt), force)

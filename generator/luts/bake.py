@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from generator.files import write_files
+from generator.files import check_file_output, write_files
 from generator.luts import formats, lattice
 from generator.luts.axes import LogAxis
 from generator.spec.schema import ColourSpace, Display, Spec, SpecError
@@ -283,14 +283,6 @@ def stale(files: dict[Path, bytes], output: str | Path, fmt: str) -> list[Path]:
     return [shaper] if fmt == "spi3d" and shaper not in files and shaper.is_file() else []
 
 
-def check_folder(path: str | Path) -> None:
-    """SpecError unless the folder ``path`` goes in exists (checked before a bake, and before writing)."""
-    parent = Path(path).parent
-    if not parent.is_dir():
-        what = "is a file, not a folder" if parent.exists() else "does not exist"
-        raise SpecError(WHERE, "-o", f"folder {str(parent)!r} {what}")
-
-
 def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | None = None) -> None:
     """Write every file or none (:func:`generator.files.write_files`, which refuses what is there
     without ``force``), after checking each path's folder exists; then, with ``force``,
@@ -300,7 +292,7 @@ def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | No
             raise SpecError(WHERE, "-o", f"{str(path)!r} exists, an earlier bake's shaper this one does not write; "
                             "pass --force to replace the bake and delete it")
     for path in files:
-        check_folder(path)
+        check_file_output(path)
     write_files(files, force)
     for path in remove or ():
         path.unlink(missing_ok=True)

@@ -102,11 +102,14 @@ def check_triangle(primaries: tuple, white: tuple, source: str, field: str, whit
 def resolve_path(value, base: Path, source: str, field: str) -> Path:
     if not isinstance(value, str) or not value:
         raise SpecError(source, field, f"expected a file path, got {value!r}")
+    from generator.files import not_readable
+
     path = (base / value).resolve() if not Path(value).is_absolute() else Path(value)
-    if path.is_dir():
-        raise SpecError(source, field, f"{value!r} is a folder; allowed: a file's path")
-    if not path.is_file():
+    why = not_readable(path)
+    if why == "does not exist":
         raise SpecError(source, field, f"file {value!r} does not exist")
+    if why is not None:
+        raise SpecError(source, field, f"{value!r} {why}; allowed: a file's path")
     return path
 
 

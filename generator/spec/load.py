@@ -123,6 +123,12 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
 
         folder = path if path.is_dir() else path.parent
         return resolved.read(path if path.suffix.lower() == ".json" else folder / resolved.FILENAME)
+    from generator.files import not_readable
+
+    why = not_readable(path)
+    if why is not None:
+        raise SpecError(str(path), "-", f"cannot read the spec: it {why}; allowed: a spec's TOML file, a build's "
+                        "folder, its config.ocio or the ocioforge-spec.json beside it")
     try:
         text = path.read_text(encoding="utf-8-sig")  # a BOM some editors write is not TOML
     except OSError as error:

@@ -124,7 +124,7 @@ class _Reader:
             raise self.fail(f"{field}.primaries", "expected three chromaticities")
         white = self.white(d["whitepoint"], f"{field}.whitepoint")
         fields.check_triangle(primaries, white, self.source, f"{field}.primaries", f"{field}.whitepoint")
-        if d["adaptation"] is not None and d["adaptation"] not in CATS:
+        if d["adaptation"] is not None and self.typed(d["adaptation"], str, f"{field}.adaptation") not in CATS:
             raise self.fail(f"{field}.adaptation", f"unknown {d['adaptation']!r}")
         adapting = None if d["adapting_white"] is None else self.white(d["adapting_white"], f"{field}.adapting_white")
         gamut = Gamut(self.typed(d["name"], str, f"{field}.name"), primaries, white, adapting,
@@ -241,7 +241,7 @@ class _Reader:
         data = dict(data) if isinstance(data, dict) else data
         rgc = self.rgc(data.pop("rgc", None) if isinstance(data, dict) else None)
         d = self.table(data, keys, "")
-        if d["chromatic_adaptation"] not in CATS:
+        if self.typed(d["chromatic_adaptation"], str, "chromatic_adaptation") not in CATS:
             raise self.fail("chromatic_adaptation", f"unknown chromatic adaptation {d['chromatic_adaptation']!r}")
         spec = Spec(
             name=self.typed(d["name"], str, "name"), description=self.typed(d["description"], str, "description"),
@@ -293,6 +293,11 @@ def read_beside(config_path: str | Path) -> Spec:
 
 def read(path: Path) -> Spec:
     """The resolved spec stored at ``path``."""
+    from generator.files import not_readable
+
+    why = not_readable(path)
+    if why not in (None, "does not exist"):
+        raise SpecError(str(path), "-", f"{why}; allowed: the {FILENAME} a build writes beside its config.ocio")
     try:
         text = path.read_text(encoding="utf-8")
     except OSError:

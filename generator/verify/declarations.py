@@ -6,7 +6,8 @@ config's files travel with it) and what menus sort and filter spaces by (family,
 encoding, data flag, categories) decide which transform a host picks or finds; none of
 them moves a number the checks compare, so an edit to one (a role pointed elsewhere, a
 file rule sending EXR to a log space, an alias moved onto another space, a search path
-made absolute) is found here, by name.
+made absolute) is found here, by name; so is what a build never writes and a host would
+act on (:func:`_additions`).
 """
 
 from __future__ import annotations
@@ -67,6 +68,10 @@ def differences(cfg, spec: Spec) -> list[str]:
         views = list(cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, display.name))
         if views != list(display.views):
             out.append(f"{display.name}'s views are {views}, the spec's {list(display.views)} (the first the default)")
+        shared = list(cfg.getViews(ocio.VIEW_SHARED, display.name))
+        if shared:
+            out.append(f"{display.name} also lists the shared views {shared}, which the build does not write")
+    out += _additions(cfg, spec)
     from generator.ocio.emit import LUT_FOLDER
 
     if cfg.getSearchPath() != LUT_FOLDER:
@@ -81,6 +86,9 @@ def differences(cfg, spec: Spec) -> list[str]:
         for alias in space.aliases:
             if _canonical(cfg, alias) != space.name:
                 out.append(f"alias {alias!r} names {_canonical(cfg, alias)!r}, the spec's {space.name!r}")
+        extra = [] if held is None else sorted(set(held.getAliases()) - set(space.aliases))
+        if extra:
+            out.append(f"{space.name} has the aliases {extra}, which the spec does not give it")
     from generator.ocio.emit import generated_spaces
 
     for built in generated_spaces(spec):
@@ -91,6 +99,66 @@ def differences(cfg, spec: Spec) -> list[str]:
             out.append(f"{built.getName()}'s family, encoding, data flag, categories and aliases are {_declared(held)}, "
                        f"the build's {_declared(built)}")
     return out
+
+
+def _additions(cfg, spec: Spec) -> list[str]:
+    """What a build never writes and a host would act on: another profile version than the
+    spec's (a 2.1 config made 2.3 loads in no OCIO 2.1 host), viewing rules (they change which
+    views, and so which default, a host offers an image), named transforms (listed in hosts'
+    colour-space menus), context variables (a file name then depends on the shell), and a file
+    read by any name but a bare one on the search path (a path leaves the build's folder)."""
+    import PyOpenColorIO as ocio
+
+    out = []
+    version = (cfg.getMajorVersion(), cfg.getMinorVersion())
+    if version != tuple(spec.ocio_version):
+        out.append(f"the config is OCIO {version[0]}.{version[1]}, the spec's {spec.ocio_version[0]}."
+                   f"{spec.ocio_version[1]}")
+    rules = cfg.getViewingRules()
+    if rules.getNumEntries():
+        out.append(f"viewing rules {[rules.getName(i) for i in range(rules.getNumEntries())]} choose views per "
+                   "image, which the build does not write")
+    named = [t.getName() for t in cfg.getNamedTransforms(ocio.NAMEDTRANSFORM_ALL)]
+    if named:
+        out.append(f"named transforms {named}, which the build does not write, appear in hosts' menus")
+    names = list(cfg.getEnvironmentVarNames())
+    if names:
+        out.append(f"environment variables {names}, which the build does not write, make what a view reads depend "
+                   "on the shell")
+    for owner, source in _file_sources(cfg):
+        if source != source.strip() or "/" in source or "\\" in source or "$" in source or "%" in source:
+            out.append(f"{owner} reads {source!r}, where the build reads a file of its LUT folder by its bare name")
+    return out
+
+
+def _file_sources(cfg) -> list[tuple[str, str]]:
+    """Every FileTransform's file in ``cfg``'s colour spaces and view transforms, with its owner."""
+    import PyOpenColorIO as ocio
+
+    return [(owner, t.getSrc()) for owner, t in leaf_transforms(cfg) if isinstance(t, ocio.FileTransform)]
+
+
+def leaf_transforms(cfg) -> list[tuple[str, object]]:
+    """Every transform of ``cfg``'s colour spaces (inactive ones too) and view transforms, both
+    directions, groups opened, with its owner described."""
+    import PyOpenColorIO as ocio
+
+    owners = [(f"colour space {s.getName()!r}", [s.getTransform(d) for d in (ocio.COLORSPACE_DIR_TO_REFERENCE,
+                                                                           ocio.COLORSPACE_DIR_FROM_REFERENCE)])
+              for s in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)]
+    owners += [(f"view transform {v.getName()!r}", [v.getTransform(d) for d in (ocio.VIEWTRANSFORM_DIR_TO_REFERENCE,
+                                                                              ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)])
+               for v in cfg.getViewTransforms()]
+    found = []
+    for owner, transforms in owners:
+        stack = [t for t in transforms if t is not None]
+        while stack:
+            t = stack.pop()
+            if isinstance(t, ocio.GroupTransform):
+                stack.extend(t)
+            else:
+                found.append((owner, t))
+    return found
 
 
 def _declared(space) -> tuple:

@@ -167,7 +167,8 @@ class GpuEngine:
 
 
 def culprit(config_path: Path, check: Check, error_of) -> str:
-    """Why a check fails on the GPU where the CPU passes: the operator of its chain that, drawn
+    """Why a check fails on the GPU: the config's numbers, where OCIO's CPU processor (lossless)
+    departs too; else the operator of its chain that, drawn
     alone on the GPU while every other runs on the CPU losslessly, gives the largest error
     (``error_of(values)``, the check's worst error for an output; :func:`~generator.verify.
     engines.isolate`), or, when no operator alone does, that OCIO's GPU processor of the whole
@@ -176,8 +177,14 @@ def culprit(config_path: Path, check: Check, error_of) -> str:
 
     from generator.verify.engines import cpu_with, isolate, uncached_config
 
+    from generator.verify.engines import apply
+
     cfg = uncached_config(config_path)
-    transforms = list(processor(cfg, check, config_path.parent).createGroupTransform())
+    proc = processor(cfg, check, config_path.parent)
+    cpu = error_of(apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS), check.probes.values))
+    if cpu > check.tolerance:  # a broken config is not the GPU's to answer for
+        return f"not OCIO's GPU path: its CPU processor, lossless, departs {cpu:.2g} too (the config's numbers)"
+    transforms = list(proc.createGroupTransform())
     ctx = open_device()
     try:
         alone, name, split = isolate(cfg, transforms, check.probes.values, cpu_with(ocio.OPTIMIZATION_LOSSLESS),

@@ -433,10 +433,11 @@ def test_standard_output_closed_is_one_line(capsys, monkeypatch):
     assert exited.value.code == 2 and err.count("\n") == 1 and "standard output is closed" in err
 
 
-@pytest.mark.parametrize("value", ("", "abc", "1.5"))
+@pytest.mark.parametrize("value", ("", "abc", "1.5", "253402300800", "99999999999999999999"))
 def test_a_malformed_source_date_epoch_is_one_line(capsys, monkeypatch, value):
     """numpy's f2py, imported with colour-science, failed on it with a traceback (plot, info,
-    bake --gamut-map perceptual); reproducible-builds.org asks for an error."""
+    bake --gamut-map perceptual); reproducible-builds.org asks for an error. A whole number past
+    year 9999 overflowed the time functions of info and plot with a traceback."""
     monkeypatch.setenv("SOURCE_DATE_EPOCH", value)
     code, _, err = run(capsys, "info", "acescg")
     assert code == 2 and err.count("\n") == 1 and "SOURCE_DATE_EPOCH" in err, err
@@ -509,3 +510,32 @@ def test_info_takes_a_shows_own_space_with_its_reference_and_version(tmp_path, c
     assert "(the spec builds" not in run(capsys, "info", "acescct")[1]
     code, _, err = run(capsys, "info", "arri_logc4", "--spec", str(tmp_path / "show.toml"))
     assert code == 2 and "no colour space 'arri_logc4' in show.toml" in err and err.count("\n") == 1, err
+
+
+def test_a_config_that_is_a_device_is_refused_unread(capsys):
+    """plot and verify read CONFIG through OpenColorIO: a device or pipe is refused first."""
+    code, _, err = run(capsys, "plot", "/dev/zero", "-o", "never.png")
+    assert code == 2 and err.count("\n") == 1 and "not a regular file" in err, err
+
+
+@pytest.mark.parametrize("command, name, words", [
+    ("init", "nd/sub/show.toml", "its folder"),  # made nd/sub, and left it when the write failed
+    ("init", "show.toml/", "ends in a slash"),   # wrote show.toml
+    ("plot", "nd/sub/gamuts.png", "its folder"),
+    ("plot", "gamuts", "is a folder"),           # said: unknown image format ''
+])
+def test_a_file_output_in_no_folder_or_naming_one_is_refused_and_makes_nothing(capsys, tmp_path, monkeypatch,
+                                                                              build_config, command, name, words):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "gamuts").mkdir()
+    args = ["init", name] if command == "init" else ["plot", str(build_config((2, 1))), "-o", name]
+    code, _, err = run(capsys, *args)
+    assert code == 2 and err.count("\n") == 1 and words in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["gamuts"] and not any((tmp_path / "gamuts").iterdir())
+
+
+def test_plot_display_without_mapping_is_refused(capsys, tmp_path, build_config):
+    """--display chooses the display --mapping draws: alone, any name (a typo too) was ignored."""
+    code, _, err = run(capsys, "plot", str(build_config((2, 1))), "-o", str(tmp_path / "g.png"), "--display", "nope")
+    assert code == 2 and "with --mapping" in err, err
+    assert not any(tmp_path.iterdir())

@@ -123,20 +123,10 @@ def test_written_matrices_hold_no_float_residue(build_config):
     is a residue below 1e-12 (a reader sees 0, not -3.96e-17)."""
     import PyOpenColorIO as ocio
 
+    from generator.verify.declarations import leaf_transforms
+
     config = ocio.Config.CreateFromFile(str(build_config((2, 1))))
-    entries, stack = [], []
-    for space in config.getColorSpaces():
-        stack += [space.getTransform(d) for d in (ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)]
-    for view_transform in config.getViewTransforms():
-        stack += [view_transform.getTransform(d) for d in (ocio.VIEWTRANSFORM_DIR_TO_REFERENCE,
-                                                           ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)]
-    stack = [t for t in stack if t is not None]
-    while stack:
-        t = stack.pop()
-        if isinstance(t, ocio.GroupTransform):
-            stack.extend(t)
-        elif isinstance(t, ocio.MatrixTransform):
-            entries.extend(t.getMatrix())
+    entries = [v for _, t in leaf_transforms(config) if isinstance(t, ocio.MatrixTransform) for v in t.getMatrix()]
     entries = np.array(entries)
     assert entries.size > 100
     residue = entries[(entries != 0.0) & (np.abs(entries) < 1e-12)]

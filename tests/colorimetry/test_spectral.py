@@ -214,3 +214,22 @@ def test_read_primaries_spectra_csv_errors(tmp_path):
     path = _write(tmp_path, "dark.csv", "380,1,0,1\n780,1,0,1\n")
     with pytest.raises(ValueError, match="column 'g' is zero throughout"):
         spectral.read_primaries_spectra_csv(path)
+
+
+@pytest.mark.parametrize("step, within", [(5, 1e-6), (10, 3e-5)])
+def test_narrow_primaries_sampled_every_5_or_10_nm_keep_their_chromaticity(tmp_path, step, within):
+    """Gaussian emitters (632, 525 and 462 nm; deviations 9, 15 and 10 nm), as an LED wall's
+    spectroradiometer tabulates them: interpolated linearly between rows, green came out 4.7e-3
+    off in xy at 10 nm; CIE 167's Sprague interpolation keeps every primary to a few 1e-6."""
+    import colour
+
+    peaks = ((632.0, 9.0), (525.0, 15.0), (462.0, 10.0))
+    rows = np.arange(380, 781, step)
+    lines = ["wavelength,r,g,b"] + [f"{w}," + ",".join(f"{np.exp(-0.5 * ((w - c) / s) ** 2):.10f}" for c, s in peaks)
+                                    for w in rows]
+    got = spectral.read_primaries_spectra_csv(_write(tmp_path, "wall.csv", "\n".join(lines) + "\n"))
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].trim(colour.SpectralShape(380, 780, 1))
+    nm = cmfs.wavelengths
+    for (centre, deviation), xy in zip(peaks, got):
+        XYZ = cmfs.values.T @ np.exp(-0.5 * ((nm - centre) / deviation) ** 2)
+        np.testing.assert_allclose(xy, XYZ[:2] / XYZ.sum(), rtol=0, atol=within)

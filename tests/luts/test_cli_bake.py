@@ -102,7 +102,7 @@ def test_bad_input_exits_2_with_one_line(tmp_path, run, case):
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("blocker, reason", [(None, "does not exist"), ("file", "is a file, not a folder")])
+@pytest.mark.parametrize("blocker, reason", [(None, "does not exist"), ("file", "Not a directory")])
 def test_an_output_folder_that_is_not_one_is_named(tmp_path, run, blocker, reason):
     folder = tmp_path / "luts"
     if blocker:

@@ -414,6 +414,21 @@ def test_a_bad_rgc_parameter_is_one_error_naming_it(text, field, words):
     assert error.value.field == field and words in str(error.value)
 
 
+
+@pytest.mark.parametrize("make", ["device", "pipe"])
+def test_a_spec_that_is_a_device_or_a_pipe_is_refused_unread(tmp_path, make):
+    """/dev/zero was read until memory ran out, and a named pipe waited for a writer forever."""
+    import os
+
+    if make == "device":
+        path = Path("/dev/zero")
+    else:
+        path = tmp_path / "show.toml"
+        os.mkfifo(path)
+    with pytest.raises(SpecError, match="is not a regular file"):
+        load.load(path)
+
+
 SPACES = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
 CUSTOM = "[[custom_space]]\nname = {name}\ngamut = 'Rec.709'\n"
 RULES = "[[file_rule]]\nname = {name}\ncolour_space = 'ACEScg'\n{extra}\n[[file_rule]]\nname = 'Default'\ncolour_space = 'ACEScg'\n"

@@ -73,6 +73,9 @@ def test_a_build_that_wrote_an_inactive_space_by_its_alias_still_loads(stored):
     (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": 5}, "file_rules[0].regex", "expected a string"),
     (("name",), 5, "name", "expected a string"),
     (("rgc", "power"), "x", "rgc.power", "expected a finite number"),
+    # unhashable values had raised TypeError from the lookup of the adaptation's name
+    (("colour_spaces", 1, "gamut", "adaptation"), [], "colour_spaces[1].gamut.adaptation", "expected a string"),
+    (("chromatic_adaptation",), [1, 2], "chromatic_adaptation", "expected a string"),
     (("rgc", "power"), 0.5, "rgc", "power must be at least 1"),
     (("rgc", "limit_cyan"), KeyError, "rgc.limit_cyan", "missing"),
 ])

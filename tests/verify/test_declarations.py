@@ -48,7 +48,49 @@ def _edit_space(cfg, name, change):
     cfg.addColorSpace(space)  # replaces the one of that name
 
 
+def _shared_view(cfg):
+    """A shared view listed on sRGB: hosts offer it after the display's own."""
+    cfg.addSharedView("Extra", "Scale (Display P3 - Display)", "<USE_DISPLAY_NAME>", "", "", "")
+    cfg.addDisplaySharedView("sRGB - Display", "Extra")
+
+
+def _viewing_rule(cfg):
+    """A viewing rule on sRGB's Colorimetric view: an ACEScg image no longer defaults to it."""
+    rules = ocio.ViewingRules()
+    rules.insertRule(0, "logonly")
+    rules.addColorSpace(0, "ACEScct")
+    cfg.setViewingRules(rules)
+
+
+def _named_transform(cfg):
+    transform = ocio.NamedTransform()
+    transform.setName("Darker")
+    transform.setTransform(ocio.ExponentTransform([2.0, 2.0, 2.0, 1.0]), ocio.TRANSFORM_DIR_FORWARD)
+    cfg.addNamedTransform(transform)
+
+
+def _absolute_file(cfg):
+    """The sRGB Scale view reads its file by an absolute path: a copied build reads the original's."""
+    name = "Scale (sRGB - Display)"
+    view = cfg.getViewTransform(name)
+    group = view.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    for t in group:
+        if isinstance(t, ocio.FileTransform):
+            t.setSrc("/mnt/shows/other/luts/" + t.getSrc())
+    view.setTransform(group, ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    cfg.addViewTransform(view)
+
+
 EDITS = {
+    # what a build never writes and a host acts on
+    "shared view": (_shared_view, "sRGB - Display also lists the shared views ['Extra']"),
+    "viewing rule": (_viewing_rule, "viewing rules ['logonly'] choose views per image"),
+    "named transform": (_named_transform, "named transforms ['Darker']"),
+    "environment": (lambda cfg: cfg.addEnvironmentVar("SHOT", "a"), "environment variables ['SHOT']"),
+    "file by path": (_absolute_file, "view transform 'Scale (sRGB - Display)' reads '/mnt/shows/other/luts/"),
+    "version": (lambda cfg: cfg.setMinorVersion(3), "the config is OCIO 2.3, the spec's 2.1"),
+    "extra alias": (lambda cfg: _edit_space(cfg, "ACEScg", lambda cs: cs.addAlias("cg")),
+                    "ACEScg has the aliases ['cg'], which the spec does not give it"),
     "role": (lambda cfg: cfg.setRole("scene_linear", "ACES2065-1"), "role scene_linear is 'ACES2065-1'"),
     "file rule": (_exr_as_log, "file rule 1 is ('OpenEXR', '*', 'exr', '', 'ACEScct')"),
     "inactive": (lambda cfg: cfg.setInactiveColorSpaces("ACEScct, Linear Rec.2020"), "inactive spaces are"),

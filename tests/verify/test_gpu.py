@@ -66,7 +66,10 @@ def test_the_gpu_names_a_scale_file_dimmed_by_half_a_code(config_copy, device):
     scaled by 0.9995."""
     dim_output_table(config_copy.parent / "luts" / "view_srgb_display_scale_17.clf", 0.9995)
     result = verify(config_copy, ("gpu",), density="quick", kinds=(VIEW, LUT), only="srgb_display_scale", strict=True)
-    assert [o.verdict for o in result.outcomes if o.engine.startswith("gpu")] == [FAIL]
+    failed = [o for o in result.outcomes if o.engine.startswith("gpu")]
+    assert [o.verdict for o in failed] == [FAIL]
+    # the config's numbers, not OCIO's GPU path (which README lists as a known departure)
+    assert failed[0].note.startswith("not OCIO's GPU path: its CPU processor, lossless, departs"), failed[0].note
 
 
 def test_a_failure_of_the_gpu_path_names_its_operator(build_config, device):
