@@ -24,14 +24,28 @@ def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
                 "primaries: " + "  ".join(f"{c} ({x:.5f}, {y:.5f})" for c, (x, y) in zip("RGB", g.primaries)),
                 f"white:     ({g.white[0]:.5f}, {g.white[1]:.5f})", f"curve:     {space.curve_name}: {space.curve!r}"]
         out.append(f"18% grey:  code {float(space.curve.encode(np.float64(0.18))):.6f}")
-        out.append(f"to {spec.scene_reference} ({reference.adaptation_for(spec, g)}"
-                   f"{', as its publisher' if g.adaptation else ''}):")
+        out.append(f"to {spec.scene_reference} ({_adaptation(spec, g)}):")
         out += ["  " + " ".join(f"{v: .10f}" for v in row) for row in reference.space_matrix(spec, space)]
     newest = newest_ocio_version()
     for minor in range(1, newest[1] + 1):
         how = _expression(space, (2, minor))
         out.append(f"OCIO 2.{minor}: {how}{'  (the spec builds this version)' if target == (2, minor) else ''}")
     return out
+
+
+def _adaptation(spec, gamut) -> str:
+    """How ``gamut`` adapts to the spec's scene reference, and on whose authority."""
+    import numpy as np
+
+    from generator.colorimetry import reference
+    from generator.colorimetry.gamuts import STUDIO_CONFIG_ADAPTATION
+
+    if np.allclose(gamut.white, spec.reference.gamut.white, rtol=0, atol=1e-12):
+        return "the same white: no adaptation"
+    cat = reference.adaptation_for(spec, gamut)
+    if not gamut.adaptation:
+        return cat
+    return f"{cat}, as the ACES studio config" if gamut.name in STUDIO_CONFIG_ADAPTATION else f"{cat}, as its publisher"
 
 
 def _expression(space, version) -> str:

@@ -82,6 +82,10 @@ PUBLISHED_ADAPTATION = {
     "Blackmagic Wide Gamut": "CAT02", "DaVinci Wide Gamut": "CAT02", "D-Gamut": "CAT02",
 }
 
+#: Of PUBLISHED_ADAPTATION, the gamuts whose vendor publishes no matrix to ACES: their
+#: adaptation is the ACES studio config's, not a publisher's.
+STUDIO_CONFIG_ADAPTATION = ("Blackmagic Wide Gamut", "DaVinci Wide Gamut", "D-Gamut")
+
 
 def _rounded(values) -> tuple:
     return tuple(tuple(float(v) for v in row) for row in values)

@@ -539,3 +539,14 @@ def test_plot_display_without_mapping_is_refused(capsys, tmp_path, build_config)
     code, _, err = run(capsys, "plot", str(build_config((2, 1))), "-o", str(tmp_path / "g.png"), "--display", "nope")
     assert code == 2 and "with --mapping" in err, err
     assert not any(tmp_path.iterdir())
+
+
+@pytest.mark.parametrize("name, how", [
+    ("ARRI LogC4", "(CAT02, as its publisher)"),
+    ("DaVinci Intermediate WideGamut", "(CAT02, as the ACES studio config)"),  # said: as its publisher
+    ("ACEScg", "(the same white: no adaptation)"),  # said: Bradford, though AP1 and AP0 share ACES white
+    ("sRGB Encoded Rec.709 (sRGB)", "(Bradford)"),
+])
+def test_info_says_how_and_on_whose_authority_a_gamut_adapts(capsys, name, how):
+    code, out, _ = run(capsys, "info", name)
+    assert code == 0 and f"to ACES2065-1 {how}:" in out, out
