@@ -37,7 +37,7 @@ def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
         _check_report_folder(Path(report_dir), force)
     names = tuple(dict.fromkeys(e.strip().lower() for e in engines.split(",") if e.strip()))  # each engine once
     if not names:
-        fail(f"--engines names none; allowed: a comma-separated list of {ENGINES}")
+        fail(f"--engines names none; allowed: a comma-separated list of {ENGINES},gpu")
     named = ctx.get_parameter_source("engines") is not click.core.ParameterSource.DEFAULT
     result = verify(config, names, density="quick" if quick else "full", only=only or "", strict=named)
     if not summary_only:
@@ -58,6 +58,7 @@ def _check_report_folder(folder: Path, force: bool) -> None:
     absent or (with ``force``) regular files."""
     import errno
     import os
+    import tempfile
 
     from generator.files import CannotWrite, target
     from generator.verify.report import report_paths
@@ -67,5 +68,10 @@ def _check_report_folder(folder: Path, force: bool) -> None:
                          (errno.EACCES, not os.access(existing, os.W_OK | os.X_OK))):
         if broken:
             raise CannotWrite(folder, OSError(code, os.strerror(code)))
+    if existing != folder:  # a folder to make: try there (os.access passes root everywhere, /proc too)
+        try:
+            os.rmdir(tempfile.mkdtemp(prefix=".ocioforge-check.", dir=existing))
+        except OSError as error:
+            raise CannotWrite(folder, error) from None
     for path in report_paths(folder):
         target(path, force)

@@ -80,9 +80,15 @@ def engine_registry() -> dict:
 
 def load(config_path: str | Path) -> tuple[Path, Spec]:
     """The config path and the spec it was built from; SpecError when either is missing or unreadable."""
+    from generator.files import not_readable
+
+    if str(config_path).startswith("ocio://"):  # Path() would fold the URI's slashes
+        raise SpecError(str(config_path), "-", "is one of OpenColorIO's builtin configs, which no spec built; "
+                        "allowed: a build's folder or its config.ocio, beside its ocioforge-spec.json")
     path = Path(config_path)
-    if not path.is_file():
-        raise SpecError(str(path), "-", "no such config file")
+    why = not_readable(path)
+    if why is not None:
+        raise SpecError(str(path), "-", f"no such config file (it {why}); allowed: a build's folder or its config.ocio")
     spec = resolved.read_beside(path)
     try:
         cfg = load_config(path)

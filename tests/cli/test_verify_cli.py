@@ -192,3 +192,17 @@ def test_verify_takes_a_builds_folder_for_its_config(config, capsys, tmp_path):
     assert code("verify", str(tmp_path), "--quick", "--engines", "ocio") == 2
     err = capsys.readouterr().err
     assert "is a folder without config.ocio; allowed: " in err and err.count("\n") == 1, err
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["verify", "ocio://default"], "is one of OpenColorIO's builtin configs"),  # said: ocio:/default, no such file
+    (["verify", "{config}", "--engines", ","], "ocio,oiiotool,ocioconvert,blender,gpu"),  # gpu was left out
+    # root passes os.access everywhere: /proc took the run, then failed making its folder
+    (["verify", "{config}", "--engines", "ocio", "--report", "/proc/ocioforge-report"], "cannot write"),
+])
+def test_what_verify_cannot_do_is_one_line_before_any_check(config, capsys, argv, words):
+    with pytest.raises(SystemExit) as exited:
+        main([a.format(config=config) for a in argv])
+    out, err = capsys.readouterr()
+    assert exited.value.code == 2 and err.count("\n") == 1 and words in err, err
+    assert "verify passed" not in out and "FAILED" not in out
