@@ -76,12 +76,29 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
                 allowance = lattice_file_allowance(spec, display, method, checked.values * display.clip_high)
             else:
                 fn = paths.view_function(spec, display, view)
-                checked = inputs
-                expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), inputs.values)
+                checked = Probes((*families, *_output_table_greys(spec, display, method)))
+                expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), checked.values)
             out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=checked,
                              expected=expected, output=paths.DISPLAY, encode=encode, allowance=allowance,
                              **_judging(None, display, None, view)))
     return out
+
+
+def _output_table_greys(spec: Spec, display: Display, method: str) -> tuple[Family, ...]:
+    """Greys reading every entry of a view file's output table (a :class:`~generator.luts.axes.
+    LogAxis` lattice's 1D table from the mapped grey's coordinate to its code) and the middle
+    between neighbours, up to the peak's coordinate, beyond which the mapping sends nothing:
+    random colours read the table only where they land (one entry changed by 0.1 ten-bit codes
+    passed --quick). None for a file without one (it ends in light)."""
+    from generator.luts.axes import LogAxis
+    from generator.luts.view import view_lattice
+
+    lat = view_lattice(spec, display, method)
+    if lat.post is None or not isinstance(lat.pre, LogAxis):
+        return ()
+    halves = np.arange(2 * (len(lat.post) - 1) + 1) / (2 * (len(lat.post) - 1))
+    grey = lat.pre.position(halves[halves <= float(lat.pre.coordinate(1.0)) + 1e-12])
+    return (Family("a grey on every entry of the output table and between", np.repeat(grey[:, None], 3, axis=1)),)
 
 
 def _lattice_probes(spec: Spec, display: Display, method: str, families: list[Family]) -> tuple[Probes, np.ndarray]:

@@ -139,16 +139,20 @@ def test_a_perceptual_node_nudged_by_a_tenth_of_a_code_is_named(config_copy, nod
     assert failing == {"luts/view_srgb_display_perceptual_33.clf"}
 
 
+def _raise_entry(clf, entry: int, by: float, decimals: int) -> None:
+    """Raise entry ``entry`` of the first LUT1D of the single-column CLF ``clf`` by ``by``."""
+    lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
+    start = next(i for i, line in enumerate(lines) if line.startswith("<LUT1D")) + 2  # after <Array>
+    lines[start + entry] = f"{float(lines[start + entry]) + by:.{decimals}f}\n"
+    clf.write_text("".join(lines), encoding="utf-8")
+
+
 @pytest.mark.parametrize("entry", [20, 460])
 def test_a_perceptual_shaper_entry_nudged_is_named(config_copy, entry):
     """One entry of a Perceptual file's shaper table moved by 1e-3 of a coordinate (far below
     black, far above the peak: entries no display-code or scene probe reaches) fails the file."""
     def nudge(path):
-        clf = path.parent / "luts" / "view_srgb_display_perceptual_33.clf"
-        lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
-        start = next(i for i, line in enumerate(lines) if line.startswith("<LUT1D")) + 2  # after <Array>
-        lines[start + entry] = f"{float(lines[start + entry]) + 1e-3:.6f}\n"
-        clf.write_text("".join(lines), encoding="utf-8")
+        _raise_entry(path.parent / "luts" / "view_srgb_display_perceptual_33.clf", entry, 1e-3, 6)
 
     assert "luts/view_srgb_display_perceptual_33.clf" in _newly_failing(config_copy, nudge, (LUT,))
 
@@ -168,6 +172,17 @@ def test_an_entry_of_the_shared_hsv_table_is_named(config_copy, half, column):
         clf.write_text("".join(lines), encoding="utf-8")
 
     assert _newly_failing(config_copy, nudge, (LUT,)) == {"luts/hsv_coordinates.clf"}
+
+
+@pytest.mark.parametrize("entry", [37, 1500, 2700])
+def test_an_entry_of_a_scale_files_output_table_nudged_is_named(config_copy, entry):
+    """One entry of the sRGB Scale file's output table (coordinate to code) raised by a tenth of
+    a ten-bit code: greys on every entry and between read it (random colours had read it only
+    where they landed, and the quick probes passed it)."""
+    def nudge(path):
+        _raise_entry(path.parent / "luts" / "view_srgb_display_scale_17.clf", entry, 0.1 / 1023, 9)
+
+    assert "luts/view_srgb_display_scale_17.clf" in _newly_failing(config_copy, nudge, (LUT,))
 
 
 def test_a_scale_file_dimmed_by_half_a_code_is_named(config_copy):
