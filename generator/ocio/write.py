@@ -130,21 +130,31 @@ def files_read(config: Path) -> set[str] | None:
         return None
     if cfg.getSearchPath() != LUT_FOLDER:
         return set()
-    transforms = []
-    for space in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL):
-        transforms += [space.getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE),
-                       space.getTransform(ocio.COLORSPACE_DIR_FROM_REFERENCE)]
-    for view in cfg.getViewTransforms():
-        transforms += [view.getTransform(ocio.VIEWTRANSFORM_DIR_TO_REFERENCE),
-                       view.getTransform(ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)]
-    names = set()
-    while transforms:
-        transform = transforms.pop()
-        if isinstance(transform, ocio.GroupTransform):
-            transforms += list(transform)
-        elif isinstance(transform, ocio.FileTransform) and Path(transform.getSrc()).name == transform.getSrc():
-            names.add(transform.getSrc())
-    return names
+    return {t.getSrc() for _, t in leaf_transforms(cfg)
+            if isinstance(t, ocio.FileTransform) and Path(t.getSrc()).name == t.getSrc()}
+
+
+def leaf_transforms(cfg) -> list[tuple[str, object]]:
+    """Every transform of ``cfg``'s colour spaces (inactive ones too) and view transforms, both
+    directions, groups opened, with its owner described."""
+    import PyOpenColorIO as ocio
+
+    owners = [(f"colour space {s.getName()!r}", [s.getTransform(d) for d in (ocio.COLORSPACE_DIR_TO_REFERENCE,
+                                                                           ocio.COLORSPACE_DIR_FROM_REFERENCE)])
+              for s in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)]
+    owners += [(f"view transform {v.getName()!r}", [v.getTransform(d) for d in (ocio.VIEWTRANSFORM_DIR_TO_REFERENCE,
+                                                                              ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)])
+               for v in cfg.getViewTransforms()]
+    found = []
+    for owner, transforms in owners:
+        stack = [t for t in transforms if t is not None]
+        while stack:
+            t = stack.pop()
+            if isinstance(t, ocio.GroupTransform):
+                stack.extend(t)
+            else:
+                found.append((owner, t))
+    return found
 
 
 def target(out_dir: str | Path) -> Path:

@@ -295,7 +295,7 @@ def rgc_params(value, source: str):
     chosen = {"limits": defaults.limits, "thresholds": defaults.thresholds, "power": defaults.power}
     for key, given in value.items():
         if key == "power":
-            numbers = [(f"rgc.power", number(given, source, "rgc.power"))]
+            numbers = [("rgc.power", number(given, source, "rgc.power"))]
         else:
             if not isinstance(given, list) or len(given) != 3:
                 raise SpecError(source, f"rgc.{key}", f"expected three numbers [cyan, magenta, yellow], got {given!r}")

@@ -135,30 +135,9 @@ def _file_sources(cfg) -> list[tuple[str, str]]:
     """Every FileTransform's file in ``cfg``'s colour spaces and view transforms, with its owner."""
     import PyOpenColorIO as ocio
 
+    from generator.ocio.write import leaf_transforms
+
     return [(owner, t.getSrc()) for owner, t in leaf_transforms(cfg) if isinstance(t, ocio.FileTransform)]
-
-
-def leaf_transforms(cfg) -> list[tuple[str, object]]:
-    """Every transform of ``cfg``'s colour spaces (inactive ones too) and view transforms, both
-    directions, groups opened, with its owner described."""
-    import PyOpenColorIO as ocio
-
-    owners = [(f"colour space {s.getName()!r}", [s.getTransform(d) for d in (ocio.COLORSPACE_DIR_TO_REFERENCE,
-                                                                           ocio.COLORSPACE_DIR_FROM_REFERENCE)])
-              for s in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)]
-    owners += [(f"view transform {v.getName()!r}", [v.getTransform(d) for d in (ocio.VIEWTRANSFORM_DIR_TO_REFERENCE,
-                                                                              ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)])
-               for v in cfg.getViewTransforms()]
-    found = []
-    for owner, transforms in owners:
-        stack = [t for t in transforms if t is not None]
-        while stack:
-            t = stack.pop()
-            if isinstance(t, ocio.GroupTransform):
-                stack.extend(t)
-            else:
-                found.append((owner, t))
-    return found
 
 
 def _declared(space) -> tuple:

@@ -123,7 +123,7 @@ def test_written_matrices_hold_no_float_residue(build_config):
     is a residue below 1e-12 (a reader sees 0, not -3.96e-17)."""
     import PyOpenColorIO as ocio
 
-    from generator.verify.declarations import leaf_transforms
+    from generator.ocio.write import leaf_transforms
 
     config = ocio.Config.CreateFromFile(str(build_config((2, 1))))
     entries = [v for _, t in leaf_transforms(config) if isinstance(t, ocio.MatrixTransform) for v in t.getMatrix()]
