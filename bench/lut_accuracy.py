@@ -43,6 +43,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+import generator  # noqa: F401  (before numpy: the numbers ocioforge itself gets, see generator/backends.py)
 import numpy as np
 
 PAIRS = (("ACEScg", "sRGB - Display"), ("ACEScct", "sRGB - Display"), ("ARRI LogC4", "Rec.1886 Rec.709 - Display"),

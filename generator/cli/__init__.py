@@ -12,12 +12,6 @@ import click
 
 from generator.files import CannotWrite, Refused, Stopped, deferring, stop, stop_signal
 
-# A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy
-# starts it on import, which no module above makes) is not started: numpy's import took
-# 100 ms rather than 160 on a 2-core machine (the gain varies with the machine and OpenBLAS).
-# A setting in the environment is kept.
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
-
 #: Command name -> module under generator.cli, with its one-line help.
 COMMANDS = {
     "build": "Build an OCIO config (and its LUTs) from a spec.",
