@@ -123,14 +123,16 @@ def bake_curve(name: str, curve, domain) -> BakedCurve:
     jumps = tuple((j - lo) / (hi - lo) for j in getattr(curve, "discontinuities", ()))
     candidates = []
     rows = _row_intervals(curve, (lo, hi))
-    if rows:  # a table with evenly spaced rows: entries on every row reproduce it exactly
+    if rows:  # a table with evenly spaced rows: entries on every row reproduce it exactly, and
+        # are taken whenever they are within bound, even where a smaller LUT would be too
         shaped = _Shaped(curve, (lo, hi), 1.0)
         error = max(_lut_errors(shaped, (0.0, 1.0), rows + 1, jumps))
-        candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, rows, error, -1, shaped))
+        candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, False, rows, error, -1, shaped))
     for k in SHAPER_EXPONENTS:
         shaped = _Shaped(curve, (lo, hi), k)
         size, error = _smallest(shaped, tuple(j ** (1.0 / k) for j in jumps))
-        candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, size, error, SHAPER_EXPONENTS.index(k), shaped))
-    _, size, error, _, shaped = min(candidates, key=lambda c: c[:4])
+        candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, True, size, error, SHAPER_EXPONENTS.index(k),
+                           shaped))
+    *_, size, error, _, shaped = min(candidates, key=lambda c: c[:5])
     values = shaped.decode(np.linspace(0.0, 1.0, size + 1)).astype(np.float32).astype(np.float64)
     return BakedCurve(f"{slug(name)}_to_linear.spi1d", (lo, hi), shaped.shaper, tuple(values), error)

@@ -204,6 +204,11 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
         curve = transfer.PiecewisePower(params["gamma"], params["offset"])
         _check_float32(curve, family, source, field, "an offset of at least 1e-6, below which OCIO evaluates "
                        "1e-6, and with a steep gamma one whose toe's slopes stay within float32")
+        if curve.break_code >= 1.0:
+            raise SpecError(source, f"{field}.offset", f"the toe's break, offset / (gamma - 1) = {curve.break_code:.4g}, "
+                            f"lies at or above code 1, so no code reaches the power and code 1 decodes to "
+                            f"{float(curve.decode(1.0)):.4g}, not 1; allowed: an offset below gamma - 1 "
+                            f"({params['gamma'] - 1.0:.4g})")
         return label, curve
     _check_log_break(params, source, field)
     curve = transfer.LogCamera(**params)

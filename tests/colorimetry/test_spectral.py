@@ -233,3 +233,37 @@ def test_narrow_primaries_sampled_every_5_or_10_nm_keep_their_chromaticity(tmp_p
     for (centre, deviation), xy in zip(peaks, got):
         XYZ = cmfs.values.T @ np.exp(-0.5 * ((nm - centre) / deviation) ** 2)
         np.testing.assert_allclose(xy, XYZ[:2] / XYZ.sum(), rtol=0, atol=within)
+
+
+def _locus(nm: np.ndarray, spectrum: np.ndarray) -> np.ndarray:
+    """xy of ``spectrum`` summed at ``nm``, the CIE 1931 functions Sprague-interpolated there."""
+    cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].copy()
+    cmfs.interpolator = colour.SpragueInterpolator
+    XYZ = spectrum @ cmfs[nm]
+    return XYZ[:2] / XYZ.sum()
+
+
+def test_lines_narrower_than_a_nanometre_keep_their_chromaticity(tmp_path):
+    """A laser projector's white, three lines 0.2 nm deviation measured every 0.1 nm: read at
+    whole nanometres only, it came out green, (0.259, 0.637) for (0.273, 0.332); summed at its
+    rows it is the lines' own colour, as a 0.01 nm sum of the exact lines gives."""
+    lines = ((465.5, 0.2, 0.9), (532.0, 0.2, 1.0), (639.3, 0.2, 1.2))
+
+    def power(nm):
+        return sum(w * np.exp(-0.5 * ((nm - c) / s) ** 2) for c, s, w in lines)
+
+    rows = np.round(np.arange(3800, 7801) * 0.1, 1)
+    text = "wavelength,power\n" + "".join(f"{w:.1f},{power(w):.12f}\n" for w in rows)
+    got = spectral.whitepoint_from_sd(spectral.read_spd_csv(_write(tmp_path, "laser.csv", text)))
+    fine = np.linspace(380.0, 780.0, 40001)
+    np.testing.assert_allclose(got, _locus(fine, power(fine)), rtol=0, atol=2e-6)
+
+
+def test_a_line_between_whole_nanometres_is_not_lost(tmp_path):
+    """Rows every 0.5 nm, power in one of them only, 467.5 nm, and zero at every whole nanometre:
+    the chromaticity is the spectral locus's there (read at whole nanometres, it had been derived
+    from interpolation noise, 4e-16 of the peak, and came out (0.1266, 0.0533))."""
+    rows = np.arange(760, 1561) * 0.5
+    text = "".join(f"{w:.1f},{1.0 if w == 467.5 else 0.0}\n" for w in rows)
+    got = spectral.whitepoint_from_sd(spectral.read_spd_csv(_write(tmp_path, "line.csv", text)))
+    np.testing.assert_allclose(got, spectral.monochromatic_primaries_xy([467.5])[0], rtol=0, atol=1e-4)

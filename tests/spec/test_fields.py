@@ -128,6 +128,20 @@ def test_a_piecewise_gamma_ocio_evaluates_otherwise_is_refused(gamma, offset, ac
     assert "OCIO evaluates a piecewise_gamma curve in float32" in error.message
 
 
+@pytest.mark.parametrize("gamma, offset, accepted", [(1.001, 0.5, False), (1.2, 0.3, False), (1.5, 0.5, False),
+                                                     (1.5, 0.45, True), (2.4, 0.9, True)])
+def test_a_piecewise_gamma_whose_toe_reaches_code_1_is_refused(gamma, offset, accepted):
+    """The break, offset / (gamma - 1), at or above code 1 leaves no power segment: code 1 would
+    decode to 0.67 (gamma 1.001, offset 0.5), a straight line OCIO and the reference agree on."""
+    text = f"{SPACE}transfer = {{ family = 'piecewise_gamma', gamma = {gamma}, offset = {offset} }}\n"
+    if accepted:
+        assert load.parse(text, "show.toml", None).space("C").curve.decode(1.0) == pytest.approx(1.0, abs=1e-15)
+        return
+    error = quiet_error(text)
+    assert error.field == "custom_space[0].transfer.offset"
+    assert "decodes to" in error.message and "allowed: an offset below gamma - 1" in error.message
+
+
 def test_log_camera_breaks_are_refused_from_where_float32_departs_upward():
     """A break far above black puts the codes verify probes (those of its linear values, above 1
     from a break of 100) on a toe that float32 loses: refused from 10 up, 1000 among them."""
