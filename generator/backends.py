@@ -41,10 +41,10 @@ def fixes_numbers() -> bool:
 
 
 def _pin(environ) -> None:
-    disabled = environ.get("NPY_DISABLE_CPU_FEATURES", "").replace(",", " ").split()
+    """Every dispatch target above the baseline off, whatever was there: numpy fails to load
+    when asked to turn off a baseline feature (X86_V2), and other names add nothing."""
     environ.pop("NPY_ENABLE_CPU_FEATURES", None)
-    environ["NPY_DISABLE_CPU_FEATURES"] = " ".join(dict.fromkeys([*disabled, *NUMPY_ABOVE_BASELINE]))
-    environ["OPENBLAS_CORETYPE"] = OPENBLAS_CORE
+    environ.update(PINNED)
 
 
 # A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy starts

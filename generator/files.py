@@ -231,7 +231,7 @@ def _replace_folder(staging: Path, folder: Path, check: Callable[[Path], None]) 
     else; otherwise what is there is moved aside, checked again there (what it held when
     moved is what is deleted), and deleted only then; moved back when the check refuses it.
     Signals wait until it is done (:func:`_uninterrupted`)."""
-    os.chmod(staging, _plain_mode(0o777) | (staging.stat().st_mode & stat.S_ISGID))  # a shared folder's group kept
+    _take_modes(staging, folder)
     _unless_stopped()
     with _uninterrupted():
         check(folder)
@@ -255,6 +255,32 @@ def _replace_folder(staging: Path, folder: Path, check: Callable[[Path], None]) 
             _move_back(aside, folder)
             raise
         shutil.rmtree(holder)
+
+
+def _kept_mode(path: Path, folder: bool) -> int | None:
+    """The permissions of what ``path`` holds, when it is what will be replaced (a folder, or a
+    regular file: links are followed, as a replacement writes through them); None otherwise."""
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return None
+    return stat.S_IMODE(mode) if (stat.S_ISDIR(mode) if folder else stat.S_ISREG(mode)) else None
+
+
+def _take_modes(staging: Path, folder: Path) -> None:
+    """The staged folder's permissions: those of the folder it replaces, entry for entry where
+    the old one held an entry of the same name and kind (a show's build rebuilt under a stricter
+    umask stays readable to the show), a plain creation's otherwise; a shared parent's setgid
+    bit, which the staged folder took, kept on a new folder."""
+    old = _kept_mode(folder, True)
+    if old is None:
+        os.chmod(staging, _plain_mode(0o777) | (staging.stat().st_mode & stat.S_ISGID))
+        return
+    os.chmod(staging, old)
+    for path in sorted(staging.rglob("*")):
+        mode = _kept_mode(folder / path.relative_to(staging), path.is_dir())
+        if mode is not None and not path.is_symlink():
+            os.chmod(path, mode)
 
 
 def _move_back(aside: Path, folder: Path) -> None:
@@ -305,7 +331,7 @@ def _plain_mode(full: int = 0o666) -> int:
 def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
     """Write every file or none: each target is checked (:func:`target`: without ``force`` no
     file may be there) before any is written, each goes to a private temporary sibling first
-    and gets a plain write's permissions, and only once all are complete, and every target is
+    and gets a plain write's permissions (a file replaced, its own), and only once all are complete, and every target is
     checked again, are they renamed into place, signals held back until all are
     (:func:`_uninterrupted`). Returns the paths written (a link's file where a link was). A file
     that cannot be written raises :class:`CannotWrite`."""
@@ -321,7 +347,8 @@ def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
                     staged.append((temporary, path))
                 with os.fdopen(handle, "wb") as stream:
                     stream.write(data)
-                os.chmod(temporary, mode)
+                kept = _kept_mode(path, False)  # a file replaced keeps its permissions
+                os.chmod(temporary, mode if kept is None else kept)
         _unless_stopped()
         with _uninterrupted():
             for _, path in staged:

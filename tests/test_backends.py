@@ -53,3 +53,12 @@ def test_numpy_loaded_first_is_named():
     done = subprocess.run([sys.executable, "-W", "error", "-c", "import numpy, generator"], env=pinned,
                           capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
+
+
+def test_a_baseline_feature_named_in_the_environment_does_not_stop_numpy():
+    """numpy refuses to load when told to turn off a baseline feature; generator sets the list
+    whole, every target above the baseline, so a shell's X86_V2 there adds nothing and breaks nothing."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("NPY_", "OPENBLAS_CORETYPE"))}
+    done = subprocess.run([sys.executable, "-c", "import generator, numpy"], capture_output=True, text=True,
+                          env={**env, "NPY_DISABLE_CPU_FEATURES": "X86_V2 AVX512_ICL"})
+    assert done.returncode == 0, done.stderr

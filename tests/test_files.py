@@ -279,3 +279,29 @@ def test_a_folder_staged_in_a_shared_folder_keeps_its_group_bit(tmp_path):
         os.umask(old)
     modes = [stat.S_IMODE((shared / name).stat().st_mode) for name in ("show", "show/luts", "plain")]
     assert modes == [0o2775] * 3, [oct(m) for m in modes]
+
+
+def test_what_is_replaced_keeps_its_permissions_under_a_stricter_umask(tmp_path):
+    """A show's LUT and build, rebuilt with --force by someone whose umask is 077: they had become
+    readable by that user alone. A replaced file keeps its mode, a replaced folder its own and,
+    entry for entry, its entries'; what is new gets a plain write's."""
+    lut = tmp_path / "show.cube"
+    lut.write_bytes(b"old")
+    os.chmod(lut, 0o664)
+    build = tmp_path / "build"
+    (build / "luts").mkdir(parents=True)
+    (build / "config.ocio").write_bytes(b"old")
+    for path, mode in ((build, 0o2775), (build / "luts", 0o775), (build / "config.ocio", 0o644)):
+        os.chmod(path, mode)
+    old = os.umask(0o077)
+    try:
+        write_files({lut: b"new", tmp_path / "new.cube": b"new"}, force=True)
+        with staged_folder(build, files._no_check) as staging:
+            (staging / "luts").mkdir()
+            (staging / "config.ocio").write_bytes(b"new")
+            (staging / "luts" / "new.spi1d").write_bytes(b"new")
+    finally:
+        os.umask(old)
+    modes = {str(p.relative_to(tmp_path)): oct(stat.S_IMODE(p.stat().st_mode)) for p in sorted(tmp_path.rglob("*"))}
+    assert modes == {"show.cube": "0o664", "new.cube": "0o600", "build": "0o2775", "build/luts": "0o775",
+                     "build/config.ocio": "0o644", "build/luts/new.spi1d": "0o600"}

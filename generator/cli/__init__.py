@@ -11,6 +11,7 @@ import threading
 import click
 
 from generator.files import CannotWrite, Refused, Stopped, deferring, stop, stop_signal
+from generator.ocio.environment import set_aside
 
 #: Command name -> module under generator.cli, with its one-line help.
 COMMANDS = {
@@ -52,8 +53,26 @@ def cli():
 
 def printable(text: str) -> str:
     """``text`` with every character a terminal would not print as itself (a newline in a path)
-    escaped as Python writes it, so that a message stays one line."""
-    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in str(text))
+    escaped as Python writes it, so that a message stays one line; a byte of a path that is not
+    UTF-8 (which Python holds as a lone surrogate) as that byte, ``\\xff``."""
+    return "".join(c if c.isprintable() else f"\\x{ord(c) - 0xDC00:02x}" if 0xDC80 <= ord(c) <= 0xDCFF
+                   else repr(c)[1:-1] for c in str(text))
+
+
+class StandardOutputFailed(Exception):
+    """Standard output could not take a command's report (a full device): the OSError it raised."""
+
+
+def say(text: str) -> None:
+    """Print a command's report on standard output; a failure there is :class:`StandardOutputFailed`,
+    told apart from the failure of a file's write (both are OSErrors naming no path). A reader
+    that stopped reading (``| head``) is BrokenPipeError, as before."""
+    try:
+        click.echo(text)
+    except BrokenPipeError:
+        raise
+    except OSError as error:
+        raise StandardOutputFailed(error) from None
 
 
 def fail(message: str) -> None:
@@ -179,14 +198,18 @@ def _checked_run(argv) -> None:
     try:
         _check_environment()
         skip_plotting()
-        with cli.make_context("ocioforge", [*(sys.argv[1:] if argv is None else argv)]) as ctx:
+        with set_aside(), cli.make_context("ocioforge", [*(sys.argv[1:] if argv is None else argv)]) as ctx:
             cli.invoke(ctx)
     except click.exceptions.NoArgsIsHelpError as error:
-        click.echo(error.ctx.get_help())
+        say(error.ctx.get_help())
     except click.UsageError as error:
         fail(error.format_message().replace("\n", " "))
     except (SpecError, CannotWrite, Refused) as error:
         fail(str(error))
+    except StandardOutputFailed as failed:  # Python's own flush at exit must not fail a second time
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        fail(f"standard output: {failed.args[0].strerror or failed.args[0]} (files the command wrote are complete; "
+             "what it printed is lost); allowed: an output with room for it (a file, a pipe or /dev/null)")
     except BrokenPipeError:  # the reader stopped reading (| head): no message, as a shell's tools
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         sys.exit(128 + signal.SIGPIPE)
@@ -215,11 +238,13 @@ LATEST_EPOCH = 253402300799
 
 def _check_environment() -> None:
     """What the environment must give a command: an open standard output, and a SOURCE_DATE_EPOCH
-    that is unset or an integer (reproducible-builds.org: a malformed one is an error; numpy's
+    that is unset (or empty) or an integer (reproducible-builds.org: a malformed one is an error; numpy's
     f2py, imported by colour-science, failed on it with a traceback)."""
     if sys.stdout is None:
         fail("standard output is closed; allowed: a command with its output open (a file, a pipe or /dev/null)")
     epoch = os.environ.get("SOURCE_DATE_EPOCH")
-    if epoch is not None and not (epoch.isascii() and epoch.isdigit() and int(epoch) <= LATEST_EPOCH):
+    if epoch == "":  # CI services export it empty: unset (f2py, which colour-science imports, fails on it)
+        del os.environ["SOURCE_DATE_EPOCH"]
+    elif epoch is not None and not (epoch.isascii() and epoch.isdigit() and int(epoch) <= LATEST_EPOCH):
         fail(f"SOURCE_DATE_EPOCH={epoch!r} is not a whole number of seconds since 1970 up to the end of year "
              f"9999; allowed: unset, or such a number (0 to {LATEST_EPOCH})")

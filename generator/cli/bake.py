@@ -6,7 +6,7 @@ import time
 
 import click
 
-from generator.cli import NAME, Command, GivenPath, printable
+from generator.cli import NAME, Command, GivenPath, printable, say
 
 
 @click.command(cls=Command,
@@ -46,4 +46,4 @@ def command(source, display, method, size, fmt, shaper, spec_path, output, force
     bake.write({target(path, force): data for path, data in files.items()}, force, stale)  # every one checked first
     written = ", ".join(printable(path) for path in files)
     order = "; apply the .spi1d, then the .spi3d" if len(files) > 1 else ""
-    click.echo(f"{written}: {fmt}, {bake.describe(req)}{order} ({time.perf_counter() - started:.2f} s)")
+    say(f"{written}: {fmt}, {bake.describe(req)}{order} ({time.perf_counter() - started:.2f} s)")

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from generator.cli import NAME, Command, GivenPath, printable
+from generator.cli import NAME, Command, GivenPath, printable, say
 
 
 def counted(number: int, noun: str) -> str:
@@ -29,7 +29,7 @@ def command(spec, output, ocio_version, force):
     version = load.parse_version(ocio_version, "--ocio-version") if ocio_version else None
     out_dir = Path(output) if output else Path("configs") / labels.folder_name(parsed.name, parsed.source)
     result = build(for_folder(parsed, target(out_dir), version), out_dir, force=force)
-    click.echo(
+    say(
         f"{printable(result.path / 'config.ocio')}: OCIO {'.'.join(map(str, version or parsed.ocio_version))}, "
         f"{counted(result.colour_spaces, 'colour space')}, {counted(result.displays, 'display')}, "
         f"{counted(result.views, 'view')}, {counted(result.files, 'file')} ({time.perf_counter() - started:.2f} s)"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from generator.cli import NAME, Command, GivenPath
+from generator.cli import NAME, Command, GivenPath, say
 
 
 def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
@@ -73,4 +73,4 @@ def command(name, spec_path):
 
     spec = load(spec_path)
     space = named_space(None if spec_path is None else spec, name, "ocioforge info", "NAME")
-    click.echo("\n".join(_lines(space, spec, None if spec_path is None else spec.ocio_version)))
+    say("\n".join(_lines(space, spec, None if spec_path is None else spec.ocio_version)))

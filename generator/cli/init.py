@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import click
 
-from generator.cli import Command, GivenPath, printable
+from generator.cli import Command, GivenPath, printable, say
 
 
 @click.command(cls=Command, help="Write the embedded default spec, commented, to FILE.")
@@ -16,5 +16,5 @@ def command(file, force):
 
     check_file_output(file)
     write_atomic(file, default_text().encode("utf-8"), force)
-    click.echo(f"{printable(file)}: default spec written; edit it, then: ocioforge build {printable(file)} "
+    say(f"{printable(file)}: default spec written; edit it, then: ocioforge build {printable(file)} "
                "-o configs/NAME")

@@ -6,7 +6,7 @@ import sys
 
 import click
 
-from generator.cli import Command
+from generator.cli import Command, say
 
 
 def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
@@ -39,7 +39,7 @@ def command(displays, curves, spaces):
     header, rows = _rows(chosen[0] if chosen else "spaces")
     if not sys.stdout.isatty():  # piped (grep, a script): never wrapped
         for row in (header, *rows):
-            click.echo("\t".join(row))
+            say("\t".join(row))
         return
     from rich.console import Console
     from rich.table import Table

@@ -7,7 +7,7 @@ import json
 import click
 import numpy as np
 
-from generator.cli import NAME, Command, GivenPath
+from generator.cli import NAME, Command, GivenPath, say
 
 FORMATS = ("plain", "json", "nuke", "ocio")
 
@@ -99,5 +99,5 @@ def command(src, dst, cat, fmt, spec_path):
     else:
         matrix = published_matrix(*(s.gamut for s in spaces))
     label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
-    click.echo(render(matrix, fmt, label))
+    say(render(matrix, fmt, label))
 

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from generator.cli import NAME, Command, ConfigPath, GivenPath, printable
+from generator.cli import NAME, Command, ConfigPath, GivenPath, printable, say
 
 FORMATS = ("png", "svg", "pdf")
 
@@ -39,7 +39,7 @@ def command(config, output, mapping, display_name, force):
     _, spec = load(config)
     display = _display(spec, display_name) if mapping else None
     write_atomic(Path(output), png(chromaticity(spec, display, spaces=True), fmt), force)
-    click.echo(f"wrote {printable(output)}")
+    say(f"wrote {printable(output)}")
 
 
 def _display(spec, name: str | None):

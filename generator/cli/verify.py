@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from generator.cli import NAME, Command, ConfigPath, GivenPath, fail, printable
+from generator.cli import NAME, Command, ConfigPath, GivenPath, fail, printable, say
 
 ENGINES = "ocio,oiiotool,ocioconvert,blender"
 
@@ -40,14 +40,16 @@ def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
         fail(f"--engines names none; allowed: a comma-separated list of {ENGINES},gpu")
     named = ctx.get_parameter_source("engines") is not click.core.ParameterSource.DEFAULT
     result = verify(config, names, density="quick" if quick else "full", only=only or "", strict=named)
-    if not summary_only:
-        click.echo(report.table(result))
-    click.echo(report.summary(result))
-    if report_dir:
+    written = []
+    if report_dir:  # first: a verdict printed to a full device is lost, the report's is not
         from generator.verify.figures import report_figures
 
-        for path in report.write_report(result, report_dir, report_figures(result), force):
-            click.echo(f"wrote {printable(path)}")
+        written = report.write_report(result, report_dir, report_figures(result), force)
+    if not summary_only:
+        say(report.table(result))
+    say(report.summary(result))
+    for path in written:
+        say(f"wrote {printable(path)}")
     if not result.passed:
         sys.exit(1)
 

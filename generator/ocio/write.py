@@ -14,6 +14,7 @@ from generator import tolerances
 from generator.files import staged_folder
 from generator.luts.curve1d import MAX_SIZE, curve_file
 from generator.ocio.emit import LUT_FOLDER, emit
+from generator.ocio.environment import set_aside
 from generator.spec import resolved
 from generator.spec.schema import Spec, SpecError
 
@@ -50,7 +51,14 @@ def _check_baked(spec: Spec, luts: dict) -> None:
 
 
 def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None) -> Spec:
-    """The spec as built into ``out_dir``: the config's name is the folder's name."""
+    """The spec as built into ``out_dir``: the config's name is the folder's name, which must
+    therefore be text (OCIO writes a config in UTF-8: a name of other bytes failed in OCIO)."""
+    try:
+        out_dir.name.encode("utf-8")
+    except UnicodeEncodeError:
+        shown = os.fsencode(out_dir).decode("utf-8", "backslashreplace")
+        raise SpecError(shown, "-o", "the folder's name, which names the config, is not UTF-8 text; allowed: a "
+                        "folder named in UTF-8") from None
     return replace(spec, name=out_dir.name, ocio_version=version or spec.ocio_version)
 
 
@@ -185,6 +193,6 @@ def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
                         "(or is a loop of links); allowed: a folder, or a link to one")
     out_dir = target(out_dir)
     _check_replaceable(out_dir, force)
-    with staged_folder(out_dir, lambda contents: _check_replaceable(out_dir, force, contents)) as staging:
+    with set_aside(), staged_folder(out_dir, lambda contents: _check_replaceable(out_dir, force, contents)) as staging:
         result = write_files(spec, staging)
     return replace(result, path=out_dir)

@@ -15,6 +15,7 @@ import shutil
 from dataclasses import dataclass
 from pathlib import Path
 
+from generator.ocio.environment import without_overrides
 from generator.verify.checks import VIEW, Check
 from generator.verify.paths import RAW
 from generator.verify.hosts import TOO_NEW, NotRunnable, read_output, run_host, write_inputs
@@ -71,7 +72,7 @@ class BlenderEngine:
                  "output": str(out)} for c, out in zip(checks, outputs)]
         request, status_path = workdir / "blender-jobs.json", workdir / "blender-status.json"
         request.write_text(json.dumps({"jobs": jobs, "status": str(status_path)}), encoding="utf-8")
-        env = {**os.environ, "OCIO": str(config)}
+        env = {**without_overrides(os.environ), "OCIO": str(config)}
         result = run_host([self.executable(), "-b", "--factory-startup", "--python", str(SCRIPT), "--",
                            str(request)], env)
         if TOO_NEW in result.stdout + result.stderr:

@@ -16,6 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
+from generator.ocio.environment import set_aside
 from generator.spec import resolved
 from generator.spec.schema import Spec, SpecError
 from generator.verify import checks as checks_module
@@ -245,6 +246,11 @@ def verify(config_path: str | Path, engines=("ocio",), density: str = "full", ki
     of the given ``kinds`` whose title contains ``only`` (every one when empty; SpecError when
     it matches none). ``strict``: an engine that cannot run fails the verification (one the user
     named), as every one does on CI; otherwise it is reported as not run."""
+    with set_aside():  # the shell's OCIO overrides: verify checks the config as written
+        return _verify(config_path, engines, density, kinds, workdir, only, strict)
+
+
+def _verify(config_path, engines, density, kinds, workdir, only, strict) -> Verification:
     import PyOpenColorIO as ocio
 
     started = time.perf_counter()

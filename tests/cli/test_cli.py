@@ -433,7 +433,18 @@ def test_standard_output_closed_is_one_line(capsys, monkeypatch):
     assert exited.value.code == 2 and err.count("\n") == 1 and "standard output is closed" in err
 
 
-@pytest.mark.parametrize("value", ("", "abc", "1.5", "253402300800", "99999999999999999999"))
+def test_an_empty_source_date_epoch_is_unset():
+    """CI services export it empty: a command runs as without it (colour-science's f2py, which
+    fails on an empty one, imported in a fresh process)."""
+    import os
+
+    env = {**os.environ, "SOURCE_DATE_EPOCH": ""}
+    done = subprocess.run([sys.executable, "-m", "generator", "info", "acescg"], capture_output=True, text=True,
+                          timeout=120, env=env)
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+
+
+@pytest.mark.parametrize("value", ("abc", "1.5", "253402300800", "99999999999999999999", " 1"))
 def test_a_malformed_source_date_epoch_is_one_line(capsys, monkeypatch, value):
     """numpy's f2py, imported with colour-science, failed on it with a traceback (plot, info,
     bake --gamut-map perceptual); reproducible-builds.org asks for an error. A whole number past
@@ -550,3 +561,34 @@ def test_plot_display_without_mapping_is_refused(capsys, tmp_path, build_config)
 def test_info_says_how_and_on_whose_authority_a_gamut_adapts(capsys, name, how):
     code, out, _ = run(capsys, "info", name)
     assert code == 0 and f"to ACES2065-1 {how}:" in out, out
+
+
+def test_a_folder_name_that_is_not_utf8_is_one_line(tmp_path, capsys):
+    """The folder's name names the config, which OCIO writes in UTF-8: a name of other bytes had
+    failed inside OCIO with a traceback. A bake to such a path is fine, and says where, byte for byte."""
+    import os
+
+    out = os.fsdecode(os.fsencode(tmp_path) + b"/bad\xffname")
+    code, _, err = run(capsys, "build", "-o", out)
+    assert code == 2 and err.count("\n") == 1 and "bad\\xffname:-o: the folder's name" in err
+    assert list(tmp_path.iterdir()) == []
+    lut = os.fsdecode(os.fsencode(tmp_path) + b"/x\xff.cube")
+    code, stdout, _ = run(capsys, "bake", "--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", lut)
+    assert code == 0 and stdout.startswith(f"{tmp_path}/x\\xff.cube: ")
+
+
+def test_a_full_standard_output_is_named_and_loses_no_file(tmp_path):
+    """A report printed to a full device: the error names standard output (it read as a full disk,
+    the build half-written), and verify writes its report folder before printing its verdict."""
+    with open("/dev/full", "w") as full:
+        def ocioforge(*argv):
+            return subprocess.run([sys.executable, "-m", "generator", *argv], stdout=full, stderr=subprocess.PIPE,
+                                  text=True, timeout=300, cwd=tmp_path)
+
+        built = ocioforge("build", "-o", "show")
+        checked = ocioforge("verify", "show", "--quick", "--engines", "ocio", "--report", "report")
+    for done in (built, checked):
+        assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
+        assert done.stderr.startswith("error: standard output: No space left on device (files the command wrote")
+    assert sorted(p.name for p in (tmp_path / "show").iterdir()) == ["config.ocio", "luts", "ocioforge-spec.json"]
+    assert sorted(p.name for p in (tmp_path / "report").iterdir()) == ["report.html", "summary.json"]
