@@ -44,7 +44,8 @@ Method (this project's design, documented here):
    colour at or beyond the blue edge runs just outside the cube through the
    red = 0 face (up to 7e-4 of blue) before meeting the colour; counted
    strictly, such a colour would land far inside and the mapping would jump.
-   For colours outside the cube of such a display, a point whose negative
+   For colours outside the cube of such a display, of hues within
+   :data:`FOLD_HUE_MARGIN` of the fold (:func:`fold_hues`), a point whose negative
    channels are within :data:`FOLD_SLACK` of its largest is counted inside,
    and the final clip removes the excursion (hue and line kept within 0.0032
    there on BT.709, 0.0075 radian on BT.2020, measured). The slack does not
@@ -116,6 +117,12 @@ CUSP_SAMPLES = 1024
 #: (a jump of 0.18 in blue at (0, 0, 0.89) perturbed by 1e-6). The final clip removes
 #: what the slack lets through.
 FOLD_SLACK = 1e-3
+
+#: Hue (radians) beyond the fold's own span within which :data:`FOLD_SLACK` applies. Elsewhere
+#: the slack only let the boundary point leave the cube, and the final clip then moved it:
+#: applied at every hue, it put an orange on BT.709 10.7 ten-bit codes off in blue, and hue
+#: 0.41 degree off on BT.2020 (a cyan).
+FOLD_HUE_MARGIN = 0.02
 
 #: RGB excursion still counted as inside a gamut during the bisection.
 _INSIDE_SLACK = 1e-12
@@ -202,6 +209,26 @@ def oklab_to_display(lab: np.ndarray, display: DisplayGamut) -> np.ndarray:
 
 
 @lru_cache(maxsize=32)
+def _hexagon_hues(display: DisplayGamut) -> tuple[np.ndarray, np.ndarray]:
+    """Unwrapped Oklab hue, increasing overall, and lightness along the hexagon of cube edges
+    (:func:`cusp_table`)."""
+    hexagon = _HEXAGON
+    for _ in range(2):
+        rgb = _hexagon_edges(CUSP_SAMPLES, hexagon)
+        lab = display_to_oklab(rgb, display)
+        hue = np.unwrap(np.arctan2(lab[:, 2], lab[:, 1]))
+        if hue[-1] > hue[0]:
+            break
+        hexagon = hexagon[::-1]  # primaries listed clockwise in xy: hue grows from red through magenta
+    return hue, lab[:, 0]
+
+
+def _turning_back(hue: np.ndarray) -> np.ndarray:
+    """Where the hexagon's hue has not yet passed its previous maximum (a fold)."""
+    return np.concatenate([[False], hue[1:] <= np.maximum.accumulate(hue)[:-1]])
+
+
+@lru_cache(maxsize=32)
 def cusp_table(display: DisplayGamut) -> tuple[np.ndarray, np.ndarray]:
     """Hue (radians in [0, 2 pi)) and lightness of the display's cusps, increasing in hue.
 
@@ -211,26 +238,41 @@ def cusp_table(display: DisplayGamut) -> tuple[np.ndarray, np.ndarray]:
     (near a blue primary) the samples are skipped until the hue passes its previous
     maximum, so the table is a function of hue. Read-only arrays.
     """
-    hexagon = _HEXAGON
-    for _ in range(2):
-        rgb = _hexagon_edges(CUSP_SAMPLES, hexagon)
-        lab = display_to_oklab(rgb, display)
-        hue = np.unwrap(np.arctan2(lab[:, 2], lab[:, 1]))
-        if hue[-1] > hue[0]:
-            break
-        hexagon = hexagon[::-1]  # primaries listed clockwise in xy: hue grows from red through magenta
-    keep = np.concatenate([[True], hue[1:] > np.maximum.accumulate(hue)[:-1]])
-    table = np.mod(hue[keep], 2.0 * np.pi), lab[keep, 0]
+    hue, lightness = _hexagon_hues(display)
+    keep = ~_turning_back(hue)
+    table = np.mod(hue[keep], 2.0 * np.pi), lightness[keep]
     for array in table:
         array.flags.writeable = False
     return table
 
 
+@lru_cache(maxsize=32)
+def fold_hues(display: DisplayGamut) -> tuple[float, float] | None:
+    """Centre and half-width (radians) of the Oklab hues over which the hexagon's hue turns
+    back (BT.709's and BT.2020's blue, not P3's); None where it never does."""
+    hue, _ = _hexagon_hues(display)
+    back = _turning_back(hue)
+    if not back.any():
+        return None
+    low, high = float(hue[back].min()), float(np.maximum.accumulate(hue)[back].max())
+    return float(np.mod(0.5 * (low + high), 2.0 * np.pi)), 0.5 * (high - low)
+
+
 def hue_folds(display: DisplayGamut) -> bool:
     """Whether Oklab hue turns back somewhere along the display cube's hue hexagon (near
     BT.709's and BT.2020's blue primaries; not for P3): only then does a colour's line leave
-    and re-enter the cube, and only then is :data:`FOLD_SLACK` used."""
-    return bool(cusp_table(display)[0].size < 6 * CUSP_SAMPLES)
+    and re-enter the cube, and only then, near those hues, is :data:`FOLD_SLACK` used."""
+    return fold_hues(display) is not None
+
+
+def _fold_slack(hue_cos, hue_sin, display: DisplayGamut) -> np.ndarray:
+    """:data:`FOLD_SLACK` for hues within :data:`FOLD_HUE_MARGIN` of the display's fold, 0 elsewhere."""
+    fold = fold_hues(display)
+    if fold is None:
+        return np.zeros(np.shape(hue_cos))
+    centre, half = fold
+    turn = np.abs(np.angle((hue_cos + 1j * hue_sin) * np.exp(-1j * centre)))
+    return np.where(turn <= half + FOLD_HUE_MARGIN, FOLD_SLACK, 0.0)
 
 
 def focus_lightness(hue_cos, hue_sin, display: DisplayGamut) -> np.ndarray:
@@ -361,8 +403,7 @@ def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: Display
     """
     matrix = adapted_matrix(display)
     in_display = None if rgb is None else np.all((rgb >= 0.0) & (rgb <= 1.0), axis=-1)
-    fold = FOLD_SLACK if hue_folds(display) else 0.0
-    slack = 0.0 if rgb is None else np.where(in_display, 0.0, fold)[..., None]
+    slack = 0.0 if rgb is None else np.where(in_display, 0.0, _fold_slack(hue_cos, hue_sin, display))[..., None]
     display_chroma = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix,
                                      *_anchored(chroma, in_display, chroma_bracket(matrix)), slack)
     found = display_chroma > 0.0

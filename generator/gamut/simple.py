@@ -93,7 +93,9 @@ def desaturate(rgb, display: DisplayGamut, params=None) -> np.ndarray:
     display white's chromaticity, and ``c' = c + t (n - c)`` with the
     smallest ``t`` in [0, 1] making every channel non-negative keeps ``Y``
     and lies on the line from the colour's chromaticity to the white point,
-    so its dominant wavelength is kept. Then, if ``max(c') > 1``,
+    so its dominant wavelength is kept (where its X + Y + Z is positive: a
+    colour with ``Y > 0`` but negative X + Y + Z has its xy across the white
+    point, and comes out with the complementary one). Then, if ``max(c') > 1``,
     ``c'' = c' / max(c')`` keeps the chromaticity.
 
     Parameters

@@ -65,6 +65,27 @@ def test_desaturate_keeps_luminance_and_dominant_wavelength(display_name, source
 
 
 @pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
+def test_desaturate_turns_a_negative_sum_colour_to_the_complementary_side(display_name):
+    """Y > 0 but X + Y + Z < 0 (negative scene values): xy lies across the white point from the
+    mix's direction, so the result's chromaticity is on the same line through white, on the
+    other side (README: the complementary dominant wavelength), with Y kept."""
+    d = cases.display(display_name)
+    rgb = np.random.default_rng(5).uniform(-0.5, 1.5, (200000, 3))
+    xyz = rgb @ d.matrix.T
+    rgb = rgb[(xyz[:, 1] > 0.0) & (xyz.sum(axis=-1) < 0.0)]
+    assert len(rgb) > 1000
+    out = desaturate(rgb, d)
+    kept = needs_no_scale_step(rgb, d)
+    y_in, y_out = rgb @ d.luminance_weights, out @ d.luminance_weights
+    assert np.max(np.abs(y_out - y_in)[kept] / y_in[kept]) <= GAMUT_LUMINANCE_RELATIVE
+    towards_in, towards_out = xy(rgb, d) - d.white_xy, xy(out, d) - d.white_xy
+    cross = towards_in[:, 0] * towards_out[:, 1] - towards_in[:, 1] * towards_out[:, 0]
+    scale_ = np.linalg.norm(towards_in, axis=-1) * np.linalg.norm(towards_out, axis=-1)
+    assert np.max(np.abs(cross) / scale_) <= 1e-9
+    assert np.all(np.sum(towards_in * towards_out, axis=-1) < 0.0)
+
+
+@pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES)
 def test_desaturate_moves_only_to_the_first_non_negative_point(display_name):
     d = cases.display(display_name)
     rgb = cases.source_colours("ACEScg", display_name)
