@@ -172,12 +172,31 @@ def gamut_map(display: Display, method: str, linear, params=None) -> np.ndarray:
     return METHODS[method](np.asarray(linear, dtype=np.float64) / display.clip_high, gamut, params)
 
 
-def method_params(spec: Spec, method: str, params=None):
-    """``params`` if given, else the spec's for ``method`` (its RGC parameters; None, the
-    method's defaults, for the others)."""
+def method_params(spec: Spec, method: str, params=None, source: ColourSpace | None = None,
+                  display: Display | None = None):
+    """``params`` if given, else the spec's for ``method``: its RGC parameters; for a
+    perceptual mapping from a known ``source`` (a bake) to ``display``, the source's gamut,
+    so that its boundary lands on the display's (:func:`source_gamut_matrix`); None, the
+    method's defaults, otherwise (a view, which every source goes through, compresses up to a
+    fixed multiple of the display's boundary)."""
     if params is not None:
         return params
-    return spec.rgc if method == "rgc" else None
+    if method == "rgc":
+        return spec.rgc
+    if method == "perceptual" and source is not None and display is not None:
+        from generator.gamut import PerceptualParams
+
+        return PerceptualParams(source_to_display=source_gamut_matrix(spec, source, display))
+    return None
+
+
+def source_gamut_matrix(spec: Spec, source: ColourSpace, display: Display) -> np.ndarray:
+    """Linear ``source`` RGB to normalised display-linear RGB, scaled so that the source's white
+    is the display's (1, 1, 1): the source gamut's solid at the display's size, whose boundary
+    a perceptual bake maps onto the display's (on an HDR display the source's scene white,
+    1.0, would otherwise be a fraction of the peak)."""
+    matrix = normalised_display_matrix(spec, display) @ space_matrix(spec, source)
+    return matrix / float(np.mean(matrix.sum(axis=1)))
 
 
 def mapped_view(spec: Spec, display: Display, method: str, ref, params=None) -> np.ndarray:

@@ -308,7 +308,7 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
     power inside the cube, :class:`LogAxis` coordinates for clip and scale), so what the
     mapping leaves alone passes through exactly, and an exact operator undoes the curve.
     ``params`` None takes the spec's (:func:`~generator.colorimetry.reference.method_params`)."""
-    params = reference.method_params(spec, method, params)
+    params = reference.method_params(spec, method, params, source, display)
     matrix = reference.normalised_display_matrix(spec, display)
     if source is not None:
         matrix = matrix @ reference.space_matrix(spec, source)
@@ -353,7 +353,7 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: st
     the spec's (:func:`~generator.colorimetry.reference.method_params`)."""
     from generator.luts.fit import FIT_COUNT, reweighted_fit  # fit.py builds on this module
 
-    params = reference.method_params(spec, method, params)
+    params = reference.method_params(spec, method, params, source, display)
 
     domain = shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
     table = _shaper_table(spec, source, display, size, shaper, domain)

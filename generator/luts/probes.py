@@ -171,7 +171,8 @@ def set_errors(spec: Spec, source: ColourSpace | None, display: Display, method:
         if not len(ref):
             continue
         with np.errstate(all="ignore"):
-            expected = reference.mapped_view(spec, display, method, ref)
+            expected = reference.mapped_view(spec, display, method, ref,
+                                             reference.method_params(spec, method, None, source, display))
         result[name], unit = errors(display, apply(code), expected)
     return result, unit
 
