@@ -169,6 +169,28 @@ _UTILITY = (
 #: Every library colour space, in the order configs list them.
 SPACES: tuple[SpaceDef, ...] = _ACES + _CAMERAS + _UTILITY
 
+#: Hosts' menu categories of the library spaces that OCIO's built-in ACES studio config
+#: (studio-config-v5.0.0_aces-v2.1_ocio-v2.6) lists beyond file-io; every other library space
+#: has file-io alone, as there (a working-space menu of camera encodings is not a studio's).
+STUDIO_CATEGORIES: dict[str, tuple[str, ...]] = {
+    "ACES2065-1": ("file-io", "texture"),
+    "ACEScct": ("file-io", "working-space"),
+    "ACEScg": ("file-io", "working-space", "texture"),
+    "Linear P3-D65": ("file-io", "working-space", "texture"),
+    "Linear Rec.709 (sRGB)": ("file-io", "working-space", "texture"),
+    "Linear AdobeRGB": ("file-io", "texture"),
+    "Linear Rec.2020": ("file-io", "texture"),
+    "sRGB Encoded Rec.709 (sRGB)": ("file-io", "texture"),
+    "Gamma 1.8 Encoded Rec.709": ("file-io", "texture"),
+    "Gamma 2.2 Encoded Rec.709": ("file-io", "texture"),
+    "Gamma 2.4 Encoded Rec.709": ("file-io", "texture"),
+    "sRGB Encoded P3-D65": ("file-io", "texture"),
+    "Gamma 2.2 Encoded AdobeRGB": ("file-io", "texture"),
+    "sRGB Encoded AP1": ("file-io", "texture"),
+    "Gamma 2.2 Encoded AP1": ("file-io", "texture"),
+    "Raw": ("file-io", "texture"),
+}
+
 #: Every library display.
 DISPLAYS: tuple[DisplayDef, ...] = (
     DisplayDef("sRGB - Display", "Rec.709", "sRGB", ("srgb_display", "srgb_rec709_display")),

@@ -33,6 +33,19 @@ CATEGORIES = {
 }
 
 
+def space_categories(space) -> list[str]:
+    """A scene colour space's menu categories: a library space's as OCIO's ACES studio config
+    gives them (:data:`~generator.colorimetry.library.STUDIO_CATEGORIES`, else file-io), a custom
+    space's by its encoding (:data:`CATEGORIES`)."""
+    from generator.colorimetry import library
+
+    if space.name in library.STUDIO_CATEGORIES:
+        return list(library.STUDIO_CATEGORIES[space.name])
+    if any(space.name == known.name for known in library.SPACES):
+        return ["file-io"]
+    return list(CATEGORIES.get(space.encoding, ["file-io"]))
+
+
 @dataclass(frozen=True)
 class Emitted:
     """A config, the 1D curve LUTs it references, and the view LUT files (name -> bytes)."""
@@ -67,7 +80,7 @@ def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
 def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace:
     cs = ocio.ColorSpace(
         SCENE, name=space.name, aliases=list(space.aliases), family=space.family, encoding=space.encoding,
-        description=space.description, isData=space.is_data, categories=CATEGORIES.get(space.encoding, ["file-io"]),
+        description=space.description, isData=space.is_data, categories=space_categories(space),
     )
     transform = curves.group(_to_reference(spec, space, bakes))
     if transform is not None:

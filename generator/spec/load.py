@@ -154,6 +154,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         raise SpecError(source, "roles", "expected a table of role = colour space")
     for role in roles:
         labels.label(role, source, f"roles.{labels.toml_key(role)}")
+        _check_role_name(role, source)
     listed = _listed(raw, source)
     customs = tuple(_custom_space(t, source, f"custom_space[{i}]", base)
                     for i, t in enumerate(_tables(raw, "custom_space", source)))
@@ -523,6 +524,35 @@ def _check_data(spaces, displays, roles, source: str) -> None:
                         f"role unconverted, and this space converts); {allowed}, and name it or its alias")
 
 
+#: Edits (insertions, deletions, substitutions) within which a role the spec names is taken for a
+#: misspelling of a known one (scene_lienar, colour_picking), not for a custom role (plate_linear).
+ROLE_TYPO_EDITS = 2
+
+
+def _edits(a: str, b: str) -> int:
+    """Levenshtein distance between ``a`` and ``b``."""
+    row = list(range(len(b) + 1))
+    for i, x in enumerate(a, 1):
+        previous, row[0] = row[0], i
+        for j, y in enumerate(b, 1):
+            previous, row[j] = row[j], min(row[j] + 1, row[j - 1] + 1, previous + (x != y))
+    return row[-1]
+
+
+def _check_role_name(role: str, source: str) -> None:
+    """A role the spec names is one OCIO or a host reads (:data:`DEFAULT_ROLES`) or a custom one;
+    a custom one within :data:`ROLE_TYPO_EDITS` of a known one is taken for its misspelling,
+    which would leave the known role at its default without a word."""
+    key = role.lower()
+    if key in DEFAULT_ROLES:
+        return
+    near = sorted(known for known in DEFAULT_ROLES if _edits(key, known) <= ROLE_TYPO_EDITS)
+    if near:
+        raise SpecError(source, f"roles.{labels.toml_key(role)}", f"unknown role (did you mean "
+                        f"{', '.join(map(repr, near))}?); allowed: {', '.join(DEFAULT_ROLES)}, or a custom role "
+                        "not spelt within two letters of one of them")
+
+
 def _default_roles(names, displays, spec_roles) -> dict[str, str]:
     """The default roles a spec gets: all of :data:`DEFAULT_ROLES` but the linear role where a
     colour space or display is called "linear" and the spec sets no such role (OpenImageIO finds
@@ -546,7 +576,9 @@ def _roles(table, defaults: dict, reference: str, source: str, names: set[str]) 
             raise SpecError(source, f"roles.{labels.toml_key(role)}", f"expected a string naming a colour space, got {target!r}")
         if target.lower() not in names:
             if role in given:
-                raise SpecError(source, f"roles.{role}", f"{target!r} is not among the colour spaces")
+                raise SpecError(source, f"roles.{role}", f"{target!r} is not among the spec's scene colour spaces; "
+                                "allowed: a colour space of colour_spaces or custom_space, by name or alias, or "
+                                f"{namespace.DISPLAY_REFERENCE!r}")
             raise SpecError(source, f"roles.{role}", f"the default target {target!r} is not among the colour spaces; "
                             f"allowed: list it in colour_spaces, or set {role} under [roles]")
     return tuple(sorted(roles.items()))
@@ -603,6 +635,10 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
         if empty:
             raise SpecError(source, f"{field}.{empty}", "empty, which OCIO refuses; allowed: a glob ('*' matches "
                             "every file), or the key left out")
+        if rule.extension.startswith("."):
+            raise SpecError(source, f"{field}.extension", f"{rule.extension!r} starts with a dot, and OCIO puts one "
+                            f"before the extension, so the rule would match only names ending in "
+                            f"'.{rule.extension}'; allowed: the extension without its dot, {rule.extension[1:]!r}")
         if "regex" in table:
             _check_regex(rule, source, field)
         else:

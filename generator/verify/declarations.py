@@ -30,11 +30,11 @@ def _names(listed) -> list[str]:
 def _menu(space) -> tuple:
     """What hosts sort and filter a colour space's menus by, as the build writes it: family,
     encoding, the data flag and categories."""
-    from generator.ocio.emit import CATEGORIES
+    from generator.ocio.emit import space_categories
 
     if isinstance(space, Display):
         return ("Display", space.encoding, False, ["file-io"])
-    return (space.family, space.encoding, space.is_data, CATEGORIES.get(space.encoding, ["file-io"]))
+    return (space.family, space.encoding, space.is_data, space_categories(space))
 
 
 def differences(cfg, spec: Spec) -> list[str]:

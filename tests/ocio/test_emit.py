@@ -179,6 +179,23 @@ def test_studio_config_names_and_aliases_are_all_present(build_config):
     assert not missing, sorted(missing)
 
 
+def test_scene_spaces_carry_the_studio_configs_menu_categories(build_config):
+    """Hosts build their working-space and texture menus from categories: the camera encodings had
+    been offered as working spaces and no linear space as a texture's. Every scene space the ACES
+    studio config shares with the build has its categories."""
+    ours = ocio.Config.CreateFromFile(str(build_config((2, 6))))
+    studio = ocio.Config.CreateFromFile("ocio://studio-config-latest")
+    differ = []
+    for cs in studio.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_SCENE, ocio.COLORSPACE_ALL):
+        held = ours.getColorSpace(cs.getName())
+        if held is not None and list(held.getCategories()) != list(cs.getCategories()):
+            differ.append((cs.getName(), list(held.getCategories()), list(cs.getCategories())))
+    assert not differ, differ
+    working = ocio.ColorSpaceMenuHelper(ocio.ColorSpaceMenuParameters(ours, appCategories="working-space"))
+    assert {working.getName(i) for i in range(working.getNumColorSpaces())} >= {"ACEScg", "ACEScct"}
+    assert "ARRI LogC4" not in {working.getName(i) for i in range(working.getNumColorSpaces())}
+
+
 def test_same_spec_builds_byte_identical_files(tmp_path, default_spec):
     from generator.ocio.write import build, for_folder
 

@@ -322,6 +322,34 @@ def test_a_file_rule_matches_by_a_regex_or_by_a_glob():
     assert resolved.loads(resolved.dumps(spec)) == spec
 
 
+def test_an_extension_with_its_dot_is_refused():
+    """OCIO puts a dot before a rule's extension: '.exr' matched only names ending in '..exr', so
+    every EXR fell through to the Default rule and was read as sRGB, without a word."""
+    text = ('[[file_rule]]\nname = "EXR"\nextension = ".exr"\ncolour_space = "ACEScg"\n'
+            '[[file_rule]]\nname = "Default"\ncolour_space = "default"\n')
+    with pytest.raises(SpecError) as error:
+        parse(text)
+    assert error.value.field == "file_rule[0].extension" and "allowed: the extension without its dot, 'exr'" in str(
+        error.value)
+
+
+@pytest.mark.parametrize("role, near", [("scene_lienar", "scene_linear"), ("colour_picking", "color_picking"),
+                                        ("Texture_Pain", "texture_paint")])
+def test_a_misspelt_role_is_refused_and_a_custom_one_kept(role, near):
+    """A misspelt role had been written as a custom role beside the one meant, which kept its default:
+    the TD's scene_linear never took. A custom role spelt unlike any known one is kept."""
+    with pytest.raises(SpecError) as error:
+        parse(f'[roles]\n{role} = "ACEScct"\n')
+    assert error.value.field == f"roles.{role}" and f"did you mean {near!r}" in str(error.value)
+    assert ("plate_linear", "ACEScg") in parse('[roles]\nplate_linear = "ACEScg"\n').roles
+
+
+def test_a_role_naming_a_display_says_what_is_allowed():
+    with pytest.raises(SpecError) as error:
+        parse('[roles]\ncolor_picking = "sRGB - Display"\n')
+    assert "allowed: a colour space of colour_spaces or custom_space" in str(error.value)
+
+
 def test_a_spec_loaded_for_one_space_is_checked_whole():
     """bake loads a spec keeping only the spaces it uses: a spec build accepts must load (an inactive
     space left out is no error), and one build refuses must not (an unknown space left out is)."""
