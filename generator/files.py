@@ -276,11 +276,11 @@ def _take_modes(staging: Path, folder: Path) -> None:
     if old is None:
         os.chmod(staging, _plain_mode(0o777) | (staging.stat().st_mode & stat.S_ISGID))
         return
-    os.chmod(staging, old)
-    for path in sorted(staging.rglob("*")):
+    for path in sorted(staging.rglob("*"), reverse=True):  # a folder after what it holds, the staged one last
         mode = _kept_mode(folder / path.relative_to(staging), path.is_dir())
         if mode is not None and not path.is_symlink():
             os.chmod(path, mode)
+    os.chmod(staging, old)
 
 
 def _move_back(aside: Path, folder: Path) -> None:
