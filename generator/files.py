@@ -143,9 +143,10 @@ def target(path: str | Path, force: bool) -> Path:
     if mode is None:
         return path
     if stat.S_ISLNK(mode):
+        linked = _linked_file(path)  # a link to nothing is refused as such, --force or not
         if not force:
             raise Refused(path, f"is a link; pass --force to write the file it points to; {ALLOWED}")
-        return _linked_file(path)
+        return linked
     if stat.S_ISDIR(mode):
         raise Refused(path, f"is a folder; {ALLOWED}")
     if not stat.S_ISREG(mode):

@@ -152,8 +152,8 @@ def test_a_link_to_nothing_or_a_loop_is_never_replaced(tmp_path, force):
     (tmp_path / "dangling").symlink_to("nowhere")
     (tmp_path / "l1").symlink_to("l2")
     (tmp_path / "l2").symlink_to("l1")
-    for name in ("dangling", "l1"):
-        with pytest.raises(Refused, match="link" if not force else "a link to nothing"):
+    for name in ("dangling", "l1"):  # the real reason, --force or not (it had said to pass --force)
+        with pytest.raises(Refused, match="a link to nothing"):
             write_atomic(tmp_path / name, b"x", force)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["dangling", "l1", "l2"]
     assert all((tmp_path / n).is_symlink() for n in ("dangling", "l1", "l2"))

@@ -410,10 +410,13 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                         "allowed: absolute_luminance with an SDR eotf")
     peak = fields.number(table.get("peak_luminance", 1000.0 if hdr else 100.0), source, f"{field}.peak_luminance")
     if eotf_name == "HLG" and peak != HLG_DISPLAY_PEAK:
-        raise SpecError(source, f"{field}.peak_luminance", f"HLG displays are built for {HLG_DISPLAY_PEAK:g} cd/m²")
+        raise SpecError(source, f"{field}.peak_luminance", f"{peak:g} cd/m²: HLG displays are built for "
+                        f"{HLG_DISPLAY_PEAK:g} cd/m² (BT.2100's reference); allowed: {HLG_DISPLAY_PEAK:g}")
     low, high = (100.0, 10000.0) if hdr else ABSOLUTE_PEAK_RANGE if absolute else (100.0, 100.0)
     if not low <= peak <= high:
-        raise SpecError(source, f"{field}.peak_luminance", "allowed: 100 to 10000 cd/m² for ST 2084 displays; 100 for "
+        raise SpecError(source, f"{field}.peak_luminance", f"{peak:g} cd/m² is outside what a {eotf_name} display "
+                        f"{'driven in absolute luminance ' if absolute else ''}takes; "
+                        "allowed: 100 to 10000 cd/m² for ST 2084 displays; 100 for "
                         "SDR (code 1 shows display-referred 1.0, 100 cd/m²), or with absolute_luminance = true "
                         f"{ABSOLUTE_PEAK_RANGE[0]:g} to {ABSOLUTE_PEAK_RANGE[1]:g} (code 1 emits the peak)")
     views = views or default_views("hdr-video" if hdr else "sdr-video")

@@ -12,6 +12,7 @@
 from __future__ import annotations
 
 import io
+import warnings
 
 import numpy as np
 
@@ -38,7 +39,10 @@ def png(figure, fmt: str = "png") -> bytes:
     buffer = io.BytesIO()
     # No dates, and SVG element ids from a fixed salt: the same figure gives the same bytes.
     metadata = {"png": {}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}.get(fmt, {})
-    with _pyplot().rc_context({"svg.hashsalt": "ocioforge"}):
+    # A name in a script the font lacks (日本) is drawn as boxes; matplotlib's warning per glyph
+    # would reach a command's standard error, which carries one line for an error.
+    with _pyplot().rc_context({"svg.hashsalt": "ocioforge"}), warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message="Glyph .* missing from font", category=UserWarning)
         figure.savefig(buffer, format=fmt, dpi=110, bbox_inches="tight", metadata=metadata)
     _pyplot().close(figure)
     return buffer.getvalue()
