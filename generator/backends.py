@@ -47,16 +47,17 @@ def _pin(environ) -> None:
     environ.update(PINNED)
 
 
-# A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy starts
-# it on import) is not started: numpy's import took 100 ms rather than 160 on a 2-core machine
-# (the gain varies with the machine and OpenBLAS). A setting in the environment is kept.
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
-
 def _pinned_already(environ) -> bool:
+    """Whether ``environ`` already holds :data:`PINNED` (a numpy loaded with it has its baseline)."""
     disabled = environ.get("NPY_DISABLE_CPU_FEATURES", "").replace(",", " ").split()
     return ("NPY_ENABLE_CPU_FEATURES" not in environ and set(NUMPY_ABOVE_BASELINE) <= set(disabled)
             and environ.get("OPENBLAS_CORETYPE") == OPENBLAS_CORE)
 
+
+# A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy starts
+# it on import) is not started: numpy's import took 100 ms rather than 160 on a 2-core machine
+# (the gain varies with the machine and OpenBLAS). A setting in the environment is kept.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 if fixes_numbers():
     if "numpy" in sys.modules and not _pinned_already(os.environ):
