@@ -6,7 +6,7 @@ config it loads: validating a build against a display it does not define failed 
 traceback, hosts that verify ran lost the displays and spaces it checks (120 to 136 checks
 failed on a good config), and the optimisation flags replaced the ones verify names in its
 report. ocioforge writes and checks a config as written, so its commands, and the hosts
-verify runs, see none of them.
+verify runs (inside :func:`~generator.verify.run.verify`), see none of them.
 """
 
 from __future__ import annotations
@@ -17,11 +17,6 @@ from contextlib import contextmanager
 #: The variables set aside (OCIO itself, the config's path, is set where a host needs it).
 OVERRIDES = ("OCIO_ACTIVE_DISPLAYS", "OCIO_ACTIVE_VIEWS", "OCIO_INACTIVE_COLORSPACES", "OCIO_OPTIMIZATION_FLAGS",
              "OCIO_USER_CATEGORIES")
-
-
-def without_overrides(environ) -> dict:
-    """A copy of ``environ`` without :data:`OVERRIDES`."""
-    return {key: value for key, value in environ.items() if key not in OVERRIDES}
 
 
 @contextmanager

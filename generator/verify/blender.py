@@ -15,7 +15,6 @@ import shutil
 from dataclasses import dataclass
 from pathlib import Path
 
-from generator.ocio.environment import without_overrides
 from generator.verify.checks import VIEW, Check
 from generator.verify.paths import RAW
 from generator.verify.hosts import TOO_NEW, NotRunnable, read_output, run_host, write_inputs
@@ -72,7 +71,7 @@ class BlenderEngine:
                  "output": str(out)} for c, out in zip(checks, outputs)]
         request, status_path = workdir / "blender-jobs.json", workdir / "blender-status.json"
         request.write_text(json.dumps({"jobs": jobs, "status": str(status_path)}), encoding="utf-8")
-        env = {**without_overrides(os.environ), "OCIO": str(config)}
+        env = {**os.environ, "OCIO": str(config)}  # OCIO's overrides set aside by verify()
         result = run_host([self.executable(), "-b", "--factory-startup", "--python", str(SCRIPT), "--",
                            str(request)], env)
         if TOO_NEW in result.stdout + result.stderr:

@@ -19,7 +19,6 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from generator.verify import images
-from generator.ocio.environment import without_overrides
 from generator.verify.checks import KINDS, LUT, VIEW, Check
 from generator.verify.judge import Output
 
@@ -157,7 +156,7 @@ class OcioconvertEngine:
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
         inputs = write_inputs(checks, workdir, "ocioconvert")
         targets = [workdir / f"ocioconvert-{i:04d}-out.exr" for i in range(len(checks))]
-        env = {**without_overrides(os.environ), "OCIO": str(config)}
+        env = {**os.environ, "OCIO": str(config)}  # OCIO's overrides set aside by verify()
         commands = [self._command(c, s, t, config) for c, s, t in zip(checks, inputs, targets)]
         first = next((i for i, c in enumerate(checks) if c.kind != LUT), None)
         if first is not None:  # one process tells whether this OCIO reads the config at all
