@@ -1,0 +1,1 @@
+"""Display rendering transforms: the ACES output transforms in float64."""
