@@ -209,3 +209,32 @@ def mapped_view(spec: Spec, display: Display, method: str, ref, params=None) -> 
     """
     return map_display_linear(display, method, apply_matrix(scene_to_display_matrix(spec, display), ref),
                               method_params(spec, method, params))
+
+
+def aces_view_of(display: Display, view: str):
+    """The :class:`~generator.rendering.views.ACESView` called ``view`` on ``display``, or None."""
+    from generator.rendering import views
+
+    return views.resolve(view, display.name, display.peak, display.gamut.primaries, display.gamut.whitepoint)
+
+
+def to_aces_matrix(spec: Spec) -> np.ndarray:
+    """Scene-reference linear RGB to ACES2065-1, the ACES output transforms' input."""
+    from generator.colorimetry.gamuts import gamuts
+
+    return np.linalg.inv(gamut_matrix(spec, gamuts()["AP0"]))
+
+
+def display_xyz_encode(spec: Spec, display: Display, xyz) -> np.ndarray:
+    """CIE XYZ-D65 (1.0 = 100 cd/m²) to ``display``'s code values as its display space
+    encodes: to display RGB, clip each channel to [0, peak], encode."""
+    return display_encode(display, np.clip(apply_matrix(display_matrix(spec, display), xyz), 0.0, display.clip_high))
+
+
+def aces_view(spec: Spec, display: Display, view: str, ref) -> np.ndarray:
+    """Scene-reference linear RGB through the ACES view ``view`` of ``display``: to
+    ACES2065-1, the output transform (float64) to CIE XYZ, the display's encoding."""
+    from generator.rendering import views
+
+    xyz = views.evaluate(aces_view_of(display, view), apply_matrix(to_aces_matrix(spec), ref))
+    return display_xyz_encode(spec, display, xyz)

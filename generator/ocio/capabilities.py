@@ -106,3 +106,14 @@ def pq_builtin_tables(version: tuple[int, int]) -> tuple[int, ...]:
     ``version``: the oldest such library's (the last entry at or before ``version``) and every later one."""
     first = max(v for v in PQ_BUILTIN_TABLES if v <= version)
     return tuple(size for v, size in sorted(PQ_BUILTIN_TABLES.items()) if v >= first)
+
+
+#: First config version that runs the ACES output transforms analytically: ACES 1.x's
+#: builtins exist from 2.0; ACES 2.0's builtins and FixedFunction ACES_OUTPUT_TRANSFORM_20
+#: from 2.4 (an older config is refused by OCIO when it holds them).
+ACES_ANALYTIC_MIN_VERSION = {"1.3": (2, 0), "2.0": (2, 4)}
+
+
+def aces_analytic(version_of_aces: str, version: tuple[int, int]) -> bool:
+    """Whether a config of ``version`` runs an ACES ``version_of_aces`` view analytically."""
+    return version >= ACES_ANALYTIC_MIN_VERSION[version_of_aces]

@@ -17,7 +17,7 @@ from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
-from generator.spec.load import VIEW_METHODS
+from generator.spec.load import COLORIMETRIC_ALIASES, VIEW_METHODS
 from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES, display_view_space
 from generator.spec.schema import ColourSpace, Display, Spec
 
@@ -170,18 +170,69 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     return vt
 
 
+def aces_view_transform(spec: Spec, view, view_luts: dict) -> ocio.ViewTransform:
+    """The view transform of an ACES view (scene reference -> CIE XYZ-D65, as the studio
+    configs'): OCIO's builtin where the target version has it, FixedFunction
+    ACES_OUTPUT_TRANSFORM_20 for a custom display's own ACES 2.0 view, else its baked
+    lattice (:mod:`generator.luts.aces_lattice`), whose file joins ``view_luts``."""
+    from generator.luts import aces_lattice
+    from generator.ocio.capabilities import aces_analytic
+    from generator.rendering import views
+
+    steps = _matrix_unless_identity(reference.to_aces_matrix(spec))
+    if aces_analytic(view.version, spec.ocio_version):
+        steps += [ocio.BuiltinTransform(view.style)] if view.style else _aces2_fixed_function(view)
+    else:
+        lat = aces_lattice.bake(view)
+        name = aces_lattice.file_name(view)
+        add_file(view_luts, name, aces_lattice.ocio_file(lat))
+        steps += [matrix_transform(views.tables(view).ap0_to_ap1),
+                  ocio.RangeTransform(minInValue=0.0, maxInValue=lat.upper, minOutValue=0.0, maxOutValue=lat.upper),
+                  ocio.FileTransform(name, interpolation=ocio.INTERP_TETRAHEDRAL),
+                  ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
+                  matrix_transform(aces_lattice.to_xyz(lat))]
+    family = f"ACES {view.version}"
+    vt = ocio.ViewTransform(SCENE, name=view.name, family=family,
+                            description=f"{view.name}: the Academy's output transform to CIE XYZ-D65 display light")
+    vt.setTransform(curves.group(steps), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
+    return vt
+
+
+def _aces2_fixed_function(view) -> list:
+    """A custom ACES 2.0 view as OCIO's builtins run one: AP0 -> AP1, clamp to the tone
+    scale's forward limit, back, the output transform (peak and limiting primaries and white),
+    clamp to the peak, limiting RGB -> CIE XYZ (with the white scaling)."""
+    from generator.rendering import views
+
+    t = views.tables(view)
+    upper, peak = float(t.tone.forward_limit), view.peak / 100.0
+    params = [view.peak, *np.ravel(view.limiting), *view.white]
+    return [matrix_transform(t.ap0_to_ap1),
+            ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
+            matrix_transform(t.ap1_to_ap0),
+            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_OUTPUT_TRANSFORM_20, [float(v) for v in params]),
+            ocio.RangeTransform(minInValue=0.0, maxInValue=peak, minOutValue=0.0, maxOutValue=peak),
+            matrix_transform(t.limit_to_xyz * t.display_scale)]
+
+
 def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict) -> None:
     vt = ocio.ViewTransform(SCENE, name=COLORIMETRIC, family="Colorimetric",
                             description="Scene reference to CIE XYZ-D65, no tone or gamut mapping; displays clip per channel")
     vt.setTransform(matrix_transform(reference.scene_to_display_reference(spec)), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
     cfg.addViewTransform(vt)
     raw = next((s.name for s in spec.colour_spaces if s.is_data), None)
+    aces_added: set[str] = set()
     for display in spec.displays:
         for view in display.views:
             if view == "Raw":
                 cfg.addDisplayView(display.name, view, raw)
-            elif view == COLORIMETRIC:
+            elif view == COLORIMETRIC or view in COLORIMETRIC_ALIASES:
                 cfg.addDisplayView(display.name, view, COLORIMETRIC, display.name, "", "", "")
+            elif reference.aces_view_of(display, view) is not None:
+                if view not in aces_added:
+                    cfg.addViewTransform(aces_view_transform(spec, reference.aces_view_of(display, view), view_luts))
+                    aces_added.add(view)
+                cfg.addDisplayView(display.name, view, view, display.name, "", "", "")
             else:
                 mapped = _mapped_view_transform(spec, display, view, bakes, view_luts)
                 cfg.addViewTransform(mapped)

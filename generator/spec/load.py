@@ -18,6 +18,7 @@ from generator import tolerances
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.colorimetry.transfer import Linear
+from generator.rendering import views as aces_views
 from generator.spec import fields, labels, namespace
 from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
@@ -42,6 +43,9 @@ ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "edr-video", 
 VIEW_METHODS = {"Colorimetric": "clip", "Desaturate": "desaturate", "Scale": "scale", "Perceptual": "perceptual",
                 "RGC": "rgc"}
 VIEWS = (*VIEW_METHODS, "Raw")
+
+#: The ACES studio configs' name for a view without tone mapping: our Colorimetric.
+COLORIMETRIC_ALIASES = ("Un-tone-mapped",)
 
 #: Views a display offers when the spec does not say. Colorimetric (clip) and RGC are
 #: analytic; Scale is a CLF lattice on which the mapping is linear inside every tetrahedron,
@@ -373,8 +377,10 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
         raise SpecError(source, f"{field}.views", f"empty; allowed: one or more of {', '.join(VIEWS)}, "
                         "or the key left out for the defaults")
     for i, view in enumerate(views or ()):
-        if view not in VIEWS:
-            raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}; allowed: {', '.join(VIEWS)}")
+        if view not in VIEWS and view not in COLORIMETRIC_ALIASES and not aces_views.is_aces_name(view):
+            raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}{fields.suggest(view, _view_names())}; "
+                            f"allowed: {', '.join(VIEWS)}, {', '.join(COLORIMETRIC_ALIASES)}, {aces_views.OWN_ACES2} "
+                            "(the display's own) or an ACES studio view ('ocioforge list --views' shows them)")
         if view in views[:i]:
             raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
     known = {n.lower(): d for d in library.DISPLAYS for n in (d.name, *d.aliases)}
@@ -394,8 +400,10 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                             f"{fixed} is fixed; allowed: {', '.join(LIBRARY_DISPLAY_KEYS)} here, or a display of "
                             "another name with gamut (or primaries) and eotf")
         d = known[name.lower()]
-        views = views or default_views(d.encoding)
-        return Display(d.name, gamuts()[d.gamut], CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
+        gamut = gamuts()[d.gamut]
+        views = _aces(views or default_views(d.encoding), d.name, gamut, d.peak, d.encoding != "sdr-video",
+                      source, field)
+        return Display(d.name, gamut, CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
         raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
                         "a custom display needs 'gamut' or 'primaries' and 'eotf'")
@@ -422,6 +430,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     views = views or default_views("hdr-video" if hdr else "sdr-video")
     gamut = _gamut(table, source, field, base, name)
     given = next((k for k in ("primaries", "primaries_spectra") if k in table), "gamut")
+    views = _aces(views, name, gamut, peak, hdr or absolute, source, field)
     _check_views_can_hold(views, eotf, gamut, source, field, given)
     if eotf_name == "HLG":
         _check_bt2020(gamut, source, f"{field}.{given}", f"{field}.{'white' if 'white' in table else given}")
@@ -429,6 +438,42 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                    labels.aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
                    "hdr-video" if hdr else "sdr-video", labels.string(table.get("description", ""), source, f"{field}.description", text=True),
                    absolute)
+
+
+def _view_names() -> list[str]:
+    return [*VIEWS, *COLORIMETRIC_ALIASES, aces_views.OWN_ACES2, *aces_views.catalogue()]
+
+
+def _aces(views, name: str, gamut: Gamut, peak: float, bright: bool, source: str, field: str) -> tuple[str, ...]:
+    """``views`` with ``ACES 2.0`` replaced by the display's own ACES 2.0 view (a library display's
+    first studio ACES 2.0 view), each ACES view checked against what the display can show
+    (``bright``: an HDR display, or an SDR one driven in absolute luminance)."""
+    out = []
+    for i, view in enumerate(views):
+        key = f"{field}.views[{i}]"
+        if view == aces_views.OWN_ACES2:
+            studio = [v for v in aces_views.STUDIO_VIEWS.get(name, ()) if v.startswith(aces_views.OWN_ACES2 + " - ")]
+            if studio:
+                view = studio[0]
+            else:
+                try:
+                    view = aces_views.own_view(name, peak, gamut.primaries, gamut.whitepoint).name
+                except ValueError as error:
+                    raise SpecError(source, key, f"the display's own ACES 2.0 view cannot be made: {error}; allowed: "
+                                    "a peak luminance, primaries and white the ACES 2.0 Output Transform takes") from None
+        if aces_views.is_aces_name(view):
+            found = aces_views.resolve(view, name, peak, gamut.primaries, gamut.whitepoint)
+            if found is None:
+                raise SpecError(source, key, f"unknown ACES view {view!r}; allowed: {aces_views.OWN_ACES2} or an ACES "
+                                "studio view ('ocioforge list --views' shows them)")
+            why = aces_views.cannot_show(found, gamut.primaries, peak, bright)
+            if why:
+                raise SpecError(source, key, f"{name!r} cannot show {view!r}: {why}; allowed: a view whose peak and "
+                                "limiting primaries the display holds")
+        if view in out:
+            raise SpecError(source, key, f"{view!r} is listed twice; allowed: each view once")
+        out.append(view)
+    return tuple(out)
 
 
 def _check_views_can_hold(views, eotf, gamut: Gamut, source: str, field: str, given: str) -> None:

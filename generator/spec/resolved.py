@@ -181,11 +181,13 @@ class _Reader:
             description=self.typed(d["description"], str, f"{field}.description"), is_data=is_data, special=special)
 
     def display(self, data, field: str) -> Display:
-        from generator.spec.load import VIEWS
+        from generator.rendering.views import is_aces_name
+        from generator.spec.load import COLORIMETRIC_ALIASES, VIEWS
 
         d = self.table(data, [f.name for f in dataclasses.fields(Display)], field)
         views = self.items(d["views"], f"{field}.views", lambda v, f: self.typed(v, str, f), 1)
-        unknown = next((i for i, v in enumerate(views) if v not in VIEWS), None)
+        unknown = next((i for i, v in enumerate(views) if v not in VIEWS and v not in COLORIMETRIC_ALIASES
+                        and not is_aces_name(v)), None)
         if unknown is not None:
             raise self.fail(f"{field}.views[{unknown}]", f"unknown view {views[unknown]!r}")
         peak = self.typed(d["peak"], float, f"{field}.peak")

@@ -190,7 +190,7 @@ def view_method(view: str) -> str | None:
     from generator.spec import load
 
     methods = getattr(load, "VIEW_METHODS", {COLORIMETRIC: "clip"})
-    return methods.get(view)
+    return "clip" if view in load.COLORIMETRIC_ALIASES else methods.get(view)
 
 
 def lut_range(display: Display, method: str | None = None) -> tuple[float, float] | None:
@@ -221,6 +221,8 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
     method = view_method(view)
     if method == "clip":
         return lambda ref: reference.colorimetric_view(spec, display, ref)
+    if reference.aces_view_of(display, view) is not None:
+        return aces_view_function(spec, display, view)
     if method is None:
         return None
     if method in lattice_defined():
@@ -235,6 +237,27 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
                                             params)
 
     return mapped
+
+
+def aces_baked(spec: Spec, display: Display, view: str) -> bool:
+    """Whether the config of ``spec`` runs ACES view ``view`` as its baked lattice."""
+    from generator.ocio.capabilities import aces_analytic
+
+    return not aces_analytic(reference.aces_view_of(display, view).version, spec.ocio_version)
+
+
+def aces_view_function(spec: Spec, display: Display, view: str) -> Evaluate:
+    """Scene reference to ``display``'s codes through an ACES view as the config runs it:
+    the float64 output transform where OCIO runs it analytically, else its baked lattice
+    evaluated in float64 (the file is then what is held to; bench/aces_views.py measures
+    how far it departs from the output transform)."""
+    aces = reference.to_aces_matrix(spec)
+    if not aces_baked(spec, display, view):
+        return lambda ref: reference.aces_view(spec, display, view, ref)
+    from generator.luts import aces_lattice
+
+    lat = aces_lattice.bake(reference.aces_view_of(display, view))
+    return lambda ref: reference.display_xyz_encode(spec, display, aces_lattice.evaluate(lat, apply_matrix(aces, ref)))
 
 
 def lattice_defined() -> tuple[str, ...]:

@@ -1,0 +1,136 @@
+"""An ACES 2.0 view baked for configs whose OCIO cannot run it (2.1 to 2.3).
+
+The view runs, in the config::
+
+    Matrix (scene reference -> AP1) -> Range clamp [0, upper] -> this CLF -> Range [0, 1]
+    -> Matrix (limiting RGB at the peak -> CIE XYZ)
+
+where the clamp is the view's own AP1 clamp (upper: the tone scale's forward limit) and
+the CLF holds a Log shaper (``log2(x + toe)`` per channel, exact in every OCIO), a 3D
+table (tetrahedral) of the rendering's limiting RGB over its peak, mirrored-power encoded
+(sign(x)|x|^(1/gamma)), and the Exponent undoing that encoding. What is linear (the
+matrices) and what is a clamp stays outside the table, so the table holds the smooth
+part of the rendering unclamped. One file per view, whatever displays show it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from generator.luts.fit import tetrahedra
+from generator.luts.solve import interpolate
+from generator.rendering import views
+from generator.rendering.views import ACESView
+
+#: Nodes a side: the plain recipe's 65, which the bench compares with.
+ACES_LATTICE_SIZE = 65
+
+#: The Log shaper's toe (AP1 linear): the axis is log2(x + toe), so black sits on a node and
+#: the darkest decades keep nodes (bench/aces_views.py measured 2^-13 to 2^-10 alike).
+ACES_LATTICE_TOE = 2.0 ** -10
+
+#: The table's output encoding exponent: SDR code values follow about a 2.4 power; PQ's
+#: steeper toe takes 4.
+SDR_GAMMA, HDR_GAMMA = 2.4, 4.0
+
+
+@dataclass(frozen=True)
+class AcesLattice:
+    """A baked ACES 2.0 view: the table (n, n, n, 3) indexed [r, g, b] over the log axis of
+    AP1 in [0, ``upper``], holding ``sign(v)|v|^(1/gamma)`` of limiting RGB over the peak."""
+
+    view: ACESView
+    upper: float
+    toe: float
+    gamma: float
+    cube: np.ndarray
+
+    @property
+    def size(self) -> int:
+        return self.cube.shape[0]
+
+    @property
+    def span(self) -> float:
+        """log2 of the axis's range: the coordinate is (log2(x + toe) - log2(toe)) / span."""
+        return float(np.log2(self.upper + self.toe) - np.log2(self.toe))
+
+
+def axis_coordinate(ap1, upper: float, toe: float) -> np.ndarray:
+    """Clamped AP1 values to the lattice coordinate in [0, 1]."""
+    span = np.log2(upper + toe) - np.log2(toe)
+    return (np.log2(np.clip(ap1, 0.0, upper) + toe) - np.log2(toe)) / span
+
+
+def axis_value(u, upper: float, toe: float) -> np.ndarray:
+    """A lattice coordinate back to AP1."""
+    span = np.log2(upper + toe) - np.log2(toe)
+    return np.exp2(np.asarray(u) * span + np.log2(toe)) - toe
+
+
+def mirrored_power(x, exponent: float) -> np.ndarray:
+    """sign(x)|x|^exponent, as CLF's basicMirror Exponent."""
+    x = np.asarray(x, dtype=np.float64)
+    return np.sign(x) * np.abs(x) ** exponent
+
+
+@lru_cache(maxsize=32)
+def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
+    """The lattice of ACES 2.0 view ``view``, sampled from the float64 reference."""
+    t = views.tables(view)
+    upper = float(t.tone.forward_limit)
+    gamma = HDR_GAMMA if view.is_hdr else SDR_GAMMA
+    axis = axis_value(np.linspace(0.0, 1.0, size), upper, ACES_LATTICE_TOE)
+    ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
+    rgb = views.output_rgb(view, ap1 @ t.ap1_to_ap0.T) / (view.peak / 100.0)
+    cube = mirrored_power(rgb, 1.0 / gamma).reshape(size, size, size, 3)
+    return AcesLattice(view, upper, ACES_LATTICE_TOE, gamma, cube)
+
+
+def evaluate(lat: AcesLattice, aces) -> np.ndarray:
+    """ACES2065-1 (..., 3) through the baked view as OCIO runs it, in float64: CIE XYZ,
+    1.0 = 100 cd/m² (the display then encodes)."""
+    t = views.tables(lat.view)
+    aces = np.asarray(aces, dtype=np.float64)
+    flat = np.nan_to_num(aces.reshape(-1, 3), nan=0.0)
+    u = axis_coordinate(flat @ t.ap0_to_ap1.T, lat.upper, lat.toe)
+    nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (lat.size - 1)), lat.size)
+    encoded = interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T
+    rgb = np.clip(mirrored_power(encoded, lat.gamma), 0.0, 1.0)
+    return (rgb @ to_xyz(lat).T).reshape(aces.shape)
+
+
+def to_xyz(lat: AcesLattice) -> np.ndarray:
+    """Normalised limiting RGB (1 = the peak) to CIE XYZ, 1.0 = 100 cd/m² (with the white
+    scaling of a white simulation)."""
+    t = views.tables(lat.view)
+    return t.limit_to_xyz * (lat.view.peak / 100.0) * t.display_scale
+
+
+def ocio_file(lat: AcesLattice) -> bytes:
+    """The CLF of the lattice, written by PyOpenColorIO: Log shaper, LUT3D, Exponent."""
+    import PyOpenColorIO as ocio
+
+    span = lat.span
+    log = ocio.LogAffineTransform(logSideSlope=[1.0 / span] * 3, logSideOffset=[-np.log2(lat.toe) / span] * 3,
+                                  linSideSlope=[1.0] * 3, linSideOffset=[lat.toe] * 3)
+    log.setBase(2.0)
+    cube = ocio.Lut3DTransform(gridSize=lat.size)
+    cube.setInterpolation(ocio.INTERP_TETRAHEDRAL)
+    cube.setData(np.ascontiguousarray(lat.cube, dtype=np.float32).ravel())
+    power = ocio.ExponentTransform(value=[lat.gamma] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_MIRROR)
+    group = ocio.GroupTransform([log, cube, power])
+    group.getFormatMetadata().setID(f"ocioforge:{file_name(lat.view)[:-4]}")
+    group.getFormatMetadata().addChildElement(
+        "Description", f"ocioforge ACES view LUT: {lat.view.name}; AP1 clamped to [0, {lat.upper:g}] to limiting "
+        f"RGB over the peak, {lat.size}^3 on a log2(x + {lat.toe:g}) axis, mirrored power {lat.gamma:g} undone.")
+    return group.write("Academy/ASC Common LUT Format", ocio.Config.CreateRaw()).encode("utf-8")
+
+
+def file_name(view: ACESView) -> str:
+    """The view's file in a config's LUT folder, named after the view."""
+    from generator.luts.names import slug
+
+    return f"{slug(view.name)}_{ACES_LATTICE_SIZE}.clf"
