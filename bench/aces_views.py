@@ -1,0 +1,101 @@
+"""ACES 2.0 views baked for OCIO 2.1-2.3: accuracy against the float64 output transform.
+
+For each ACES 2.0 studio view a 2.1 config bakes (on a display that shows it), prints the
+error of ocioforge's lattice (the file's float64 evaluation, which OCIO runs within 0.013
+ten-bit codes) and of the plain recipe public generators use (AP0 to AP1, an ACEScct
+shaper, a 65³ table of display codes sampled from the same reference), measured in one run
+on the same probe sets: ten-bit codes on SDR displays, ΔE ITP (BT.2124) on HDR ones; p99 and
+max per set; then each file's size and the bake time.
+"""
+
+from __future__ import annotations
+
+import time
+
+import generator  # noqa: F401  (numpy's settings first)
+import numpy as np
+
+from generator.colorimetry import reference
+from generator.colorimetry.curves import CURVES
+from generator.colorimetry.gamuts import gamuts
+from generator.luts import aces_lattice
+from generator.luts.fit import tetrahedra
+from generator.luts.solve import interpolate
+from generator.rendering import views
+from generator.spec.load import load
+from generator.verify.metrics import delta_e_itp
+
+#: The display each view is measured on.
+DISPLAYS = {"ACES 2.0 - SDR 100 nits (Rec.709)": "sRGB - Display",
+            "ACES 2.0 - SDR 100 nits (P3 D65)": "Display P3 - Display",
+            "ACES 2.0 - HDR 1000 nits (P3 D65)": "Rec.2100-PQ - Display",
+            "ACES 2.0 - HDR 500 nits (Rec.2020)": "Rec.2100-PQ - Display",
+            "ACES 2.0 - HDR 108 nits (P3 D65)": "ST2084-P3-D65 - Display"}
+
+
+def probe_sets(display, seed: int = 11, n: int = 20000) -> dict[str, np.ndarray]:
+    """ACES2065-1 probes: the issue's six sets."""
+    rng = np.random.default_rng(seed)
+    ap0 = gamuts()["AP0"]
+    to_ap0 = lambda g: np.linalg.inv(ap0.rgb_to_xyz) @ gamuts()[g].rgb_to_xyz  # noqa: E731
+    hue = rng.random((n, 3))
+    hue /= hue.max(axis=1, keepdims=True)
+    edge = rng.random((n, 3))
+    edge[np.arange(n), rng.integers(0, 3, n)] = 0.0
+    edge /= edge.max(axis=1, keepdims=True)
+    return {
+        "in gamut": rng.random((n, 3)) @ (np.linalg.inv(ap0.rgb_to_xyz) @ display.gamut.rgb_to_xyz).T,
+        "AP0 0..1": rng.random((n, 3)),
+        "dark": hue * 10 ** rng.uniform(-4, -1, (n, 1)),
+        "bright": hue * 10 ** rng.uniform(0, np.log10(64), (n, 1)),
+        "greys": np.repeat(10 ** np.linspace(-4, 2, 2001)[:, None], 3, axis=1),
+        "camera": (edge * 10 ** rng.uniform(-2, 1, (n, 1))) @ to_ap0("ARRI Wide Gamut 4").T,
+    }
+
+
+def error(spec, display, a_codes, b_codes) -> np.ndarray:
+    """Ten-bit codes (SDR) or ΔE ITP (HDR, from PQ codes) between two code arrays."""
+    if not display.is_hdr:
+        return np.abs(a_codes - b_codes).max(axis=1) * 1023.0
+    return delta_e_itp(display, a_codes, b_codes)
+
+
+def plain_recipe(spec, display, view, size: int = 65):
+    """AP0 -> AP1 -> ACEScct -> 65³ of display codes sampled from the reference, tetrahedral."""
+    cct = CURVES["ACEScct"]
+    t = views.tables(view)
+    axis = cct.decode(np.linspace(0.0, 1.0, size))
+    ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
+    cube = reference.display_xyz_encode(spec, display, views.evaluate(view, ap1 @ t.ap1_to_ap0.T))
+
+    def run(aces):
+        u = np.clip(cct.encode(aces @ t.ap0_to_ap1.T), 0.0, 1.0)
+        nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (size - 1)), size)
+        return interpolate(nodes, weights, cube.T).T
+
+    return run
+
+
+def main() -> None:
+    spec = load(None)
+    shown = {d.name: d for d in spec.displays}
+    print(f"{'view':<36} {'set':<9} {'ocioforge p99':>13} {'max':>7} {'plain p99':>10} {'max':>7}  unit")
+    for name, display_name in DISPLAYS.items():
+        view, display = views.catalogue()[name], shown[display_name]
+        started = time.perf_counter()
+        lat = aces_lattice.bake.__wrapped__(view)
+        seconds = time.perf_counter() - started
+        plain = plain_recipe(spec, display, view)
+        unit = "ΔE ITP" if display.is_hdr else "10-bit codes"
+        for set_name, aces in probe_sets(display).items():
+            truth = reference.display_xyz_encode(spec, display, views.evaluate(view, aces))
+            ours = error(spec, display, reference.display_xyz_encode(spec, display, aces_lattice.evaluate(lat, aces)), truth)
+            theirs = error(spec, display, plain(aces), truth)
+            print(f"{name:<36} {set_name:<9} {np.percentile(ours, 99):13.2f} {ours.max():7.1f} "
+                  f"{np.percentile(theirs, 99):10.2f} {theirs.max():7.1f}  {unit}")
+        size_mb = len(aces_lattice.ocio_file(lat)) / 1e6
+        print(f"{name:<36} bake {seconds:.2f} s, file {size_mb:.1f} MB ({lat.size}³ table, as the plain recipe's)")
+
+
+if __name__ == "__main__":
+    main()
