@@ -26,6 +26,7 @@ bench: $(STAMP)
 	$(BIN)/python bench/verify.py
 	$(BIN)/python bench/lut_accuracy.py
 	$(BIN)/python bench/lut_bake.py
+	$(BIN)/python bench/aces_views.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache
