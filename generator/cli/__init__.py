@@ -23,6 +23,7 @@ COMMANDS = {
     "plot": "Draw the CIE 1931 chromaticity diagram of a built config's colour spaces.",
     "info": "Describe a colour space, the library's or a spec's: gamut, white, curve, matrix.",
     "list": "List the library's colour spaces, displays and curves.",
+    "convert": "Convert image sequences through a config (in parallel, or on a Dask cluster), verified.",
 }
 
 

@@ -287,6 +287,61 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
     return out
 
 
+def conversion_check(spec: Spec, ends: dict, inputs: Probes, src: str, dst: str = "", display: str = "",
+                     view: str = "") -> Check:
+    """The check of one conversion a config runs on ``inputs`` (``ocioforge convert``'s frames):
+    ``src`` to the colour space ``dst``, or to ``display`` through ``view`` (names as the config
+    spells them), judged as the space and view checks judge theirs: the same expectation, metric,
+    tolerance, float32 allowance and samples kept. ``ends`` is ``paths.endpoints(spec)``. A data
+    space at either end, or the same space at both, is no conversion in OCIO, and none here."""
+    source, values = _endpoint(spec, ends, src), inputs.values
+    if display:
+        return _view_conversion(spec, ends, source, inputs, display, view)
+    target = _endpoint(spec, ends, dst)
+    if source is None or target is None or paths.DATA in (source.output, target.output) or source is target:
+        identity = source is not None and target is not None
+        return Check(TO_REFERENCE, f"{src} -> {dst}", src, dst, probes=inputs, output=paths.DATA,
+                     expected=values.copy() if identity else None,
+                     problem="" if identity else "the stored spec has no such colour space")
+    expected, problem = _expected(None if source.decode is None or target.encode is None else
+                                  (lambda v: target.encode(source.decode(v))), values, f"path {src!r} -> {dst!r}")
+    allowance = None
+    if expected is not None and target.output in (paths.CODE, paths.DISPLAY):
+        allowance = (view_allowance(spec, source, target.matrix, target.display, target.view, values, expected,
+                                    ends[target.display.name].encode) if target.view
+                     else float32_allowance(source, target.matrix, target.encode, values))
+        allowance = with_encoding(allowance, spec, target.display, expected, _scene_space(spec, target))
+    elif expected is not None and source.baked:
+        allowance = _input_rounding(source, target, values)
+    keep = _keep(source, target, target.display, values, expected)
+    if target.valid is not None and keep is not None:
+        keep &= determinate(source, target, values)
+    return Check(TO_REFERENCE, f"{src} -> {dst}", src, dst, probes=inputs, expected=expected, output=target.output,
+                 problem=problem, allowance=allowance, keep=keep,
+                 **_judging(target, target.display, source, target.view))
+
+
+def _view_conversion(spec: Spec, ends: dict, source, inputs: Probes, display: str, view: str) -> Check:
+    """:func:`conversion_check` through a display's view."""
+    common = dict(probes=inputs, display=display, view=view)
+    target = next((d for d in spec.displays if d.name == display), None)
+    if source is None or target is None:
+        return Check(VIEW, f"{display} / {view}", "" if source is None else source.name, output=paths.DISPLAY,
+                     problem="the stored spec has no such colour space or display", **common)
+    if view == paths.RAW or source.output == paths.DATA:
+        return Check(VIEW, f"{display} / {view}", source.name, output=paths.DATA, expected=inputs.values.copy(),
+                     **common)
+    fn = paths.view_function(spec, target, view)
+    through = None if fn is None or source.decode is None else (lambda v: fn(source.decode(v)))
+    expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
+    back, clip = ends[display].matrix, ends[display].encode
+    allowance = with_encoding(view_allowance(spec, source, back, target, view, inputs.values, expected, clip),
+                              spec, target, expected)
+    return Check(VIEW, f"{display} / {view}", source.name, output=paths.DISPLAY, expected=expected, problem=problem,
+                 allowance=allowance, keep=_keep(source, None, target, inputs.values, expected), **common,
+                 **_judging(None, target, None, view))
+
+
 def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
     """All checks for the config built from ``spec``, of the given ``kinds``."""
     sizes = probes.SIZES[density]
