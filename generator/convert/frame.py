@@ -109,7 +109,8 @@ def source_space(config: str, path: str, part_spec, asked: str | None) -> str:
         tagged = part_spec.get_string_attribute(tag)
         if tagged and cfg.getColorSpace(tagged) is not None:
             return cfg.getColorSpace(tagged).getName()
-    return cfg.getColorSpaceFromFilepath(path)
+    ruled = cfg.getColorSpaceFromFilepath(path)[0]  # (colour space or role, index of the rule)
+    return cfg.getCanonicalName(ruled) or ruled
 
 
 def written_space(plan: Plan) -> str:
@@ -172,6 +173,9 @@ def _write(plan, source, inp, frame_parts, fmt, depth, compression, route) -> No
     colour_space = written_space(plan)
     kept = [pixels.kept_channels(p, fmt) for p in frame_parts]
     specs = [pixels.output_spec(p, fmt, depth, compression, colour_space, k, stamp) for p, k in zip(frame_parts, kept)]
+    if len({(s.tile_width, s.tile_height) for s in specs}) > 1:  # OpenEXR's parts, as OIIO writes them, are all
+        for spec in specs:                                        # tiled or all scanlines
+            spec.tile_width = spec.tile_height = spec.tile_depth = 0
     folder = tempfile.mkdtemp(prefix=PARTIAL, dir=os.path.dirname(source.output) or ".")
     staged = os.path.join(folder, os.path.basename(source.output))
     try:

@@ -63,8 +63,11 @@ def _in_pool(plan, sources, report, jobs, fail_fast) -> list[FrameResult]:
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
     threads = max(1, (os.cpu_count() or 1) // jobs)
-    # fork: the processes start before any thread of this one (the progress bar's) exists
-    pool = ProcessPoolExecutor(max_workers=min(jobs, len(sources)), mp_context=multiprocessing.get_context("fork"),
+    # forkserver: forking this process, whose libraries may hold threads (OIIO's), can deadlock or crash
+    # the children; the server forks them from a clean process that has loaded the modules once
+    context = multiprocessing.get_context("forkserver")
+    context.set_forkserver_preload(["generator.convert.frame"])
+    pool = ProcessPoolExecutor(max_workers=min(jobs, len(sources)), mp_context=context,
                                initializer=_pool_start, initargs=(threads,))
     out, stopped = [], False
     try:
