@@ -252,3 +252,61 @@ LUT_CLF_EVERY_SET_CODES = 1.0
 #: 0.86) and a blue of share 0.0050: 0.43 ten-bit codes against its tolerance of 1; share
 #: 0.0012: 4.3; Rec.709's blue gives 0.072, DCI-P3's 0.069).
 DISPLAY_MIN_LUMINANCE_SHARE = 0.005
+
+
+# ACES 1.3 output transforms (generator.rendering.aces13*), against OpenColorIO 2.6's builtins on
+# the probe sets of tests/rendering/test_aces13_ocio.py and against themselves.
+
+#: The float64 spline inverse, SSTS and output transforms undoing their forward where the CTL
+#: inverts exactly (log10 and its exponential rounding, magnified by the quadratic's root
+#: near its knots; measured 8.0e-11).
+ACES13_ROUND_TRIP_RELATIVE = 1e-9
+
+#: Our glow and red modifier against OpenColorIO's fixed functions (ACES_GLOW_10, ACES_RED_MOD_10
+#: and its inverse), relative to the largest component where both weigh by the same
+#: saturation: float32 (measured 1.6e-7).
+ACES13_OCIO_FIXED_FUNCTION_RELATIVE = 1e-6
+
+#: The CTL's inverse red modifier weighs hue at the modified colour, the forward at the
+#: original: reds come back this far, relative to the largest component (measured 1.69e-2 in
+#: ACES, 1.1e-2 in display XYZ).
+ACES13_RED_INVERSE_RELATIVE = 0.02
+
+#: An SDR preset's mid-tones (0.01 to 10, near grey: no display channel near its zero) against
+#: OpenColorIO's builtin, ten-bit codes: float32 and the builtins' tone-curve constants
+#: (measured 0.014, SDR Video; 0.006 SDR Cinema).
+ACES13_OCIO_MIDTONE_CODES = 0.02
+
+#: OpenColorIO's B-spline tone curves (log10 in, log10 out) against the CTL's splines where its
+#: fit keeps their slopes: float32 and the builtins' 8-digit control points (measured 4.4e-7).
+ACES13_OCIO_CURVE_LOG10 = 1e-6
+
+#: The same where OpenColorIO's fit rescales the slopes (AdjustRGBSlopes: float32 rounding
+#: makes the top segment's end slope, 0, come out negative; the RRT's C5 and the 1000- and
+#: 108-nit SSTS): its two top segments move (measured 2.8e-4, the RRT's: 6.4e-4 relative).
+ACES13_OCIO_SLOPE_ADJUSTED_LOG10 = 3e-4
+
+#: An SDR preset against OpenColorIO 2.6's builtin through the studio config's displays,
+#: ten-bit codes, every probe set (measured 1.70, SDR Cinema (Rec.709 lim) on P3-D65). Black:
+#: OCIO subtracts 0.02 where the CTL's black is pow10(log10(0.02)), leaving 1.5e-9 (0.22 codes
+#: through BT.1886, 0.37 through gamma 2.6). Elsewhere its XYZ is within 2e-5 (relative) of
+#: ours, which a display channel near the zero of a pure power turns into up to 1.7 codes on
+#: these probes (more the nearer a colour comes: 3.7 on 400,000 random colours, SDR Cinema).
+ACES13_OCIO_CODES = 2.0
+
+#: The same for colours whose red modifier OpenColorIO weighs by the saturation after the glow
+#: (RRT.ctl: before): they differ where the largest channel is under 1e-2, up to 1.3% of red
+#: (measured 1.10 codes on the probes, SDR Video; 6.5 on 400,000 dark reds, SDR Cinema).
+ACES13_OCIO_RED_DARK_CODES = 1.2
+
+#: An HDR preset against OpenColorIO's builtin, ΔE ITP of the display's light (measured 0.091,
+#: 1000 nits, where OCIO rescales its tone curve's slopes; 0.002 at 2000 and 4000 nits).
+ACES13_OCIO_DELTA_E_ITP = 0.1
+
+#: The same for the red modifier's dark colours (measured 0.72, 1000 and 2000 nits).
+ACES13_OCIO_RED_DARK_DELTA_E_ITP = 0.75
+
+#: inverse13 against OpenColorIO's inverse builtin on display colours of in-range ACES, relative
+#: to the largest component (measured 1.25e-3, 108 nits, and 7.5e-4 at 1000 nits, where OCIO's
+#: tone curve is rescaled; 1.2e-4 SDR, through its RRT curve's top segments).
+ACES13_OCIO_INVERSE_RELATIVE = 2e-3

@@ -2,7 +2,8 @@
 
 Each preset is one view transform of OpenColorIO's ACES 1.3 studio config
 (``ocio://studio-config-v2.2.0_aces-v1.3_ocio-v2.4``), named as there, and follows the
-Academy's CTL (aces-dev v1.3) its description cites. :func:`forward13` gives CIE XYZ
+Academy's CTL (aces-dev v1.3) of the transforms its description cites (``Preset13.ctl``,
+the v1.3 files' names). :func:`forward13` gives CIE XYZ
 exactly where OpenColorIO's builtin of that view (``ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65
 - ...``) gives it: relative to D65 as the display sees it (adapted from the ACES white,
 or not, for the white simulations; DCI displays' XYZ pre-adapted from DCI white, which
@@ -50,19 +51,12 @@ class Preset13:
         return self.peak_luminance if self.kind == "sdr" else 100.0
 
 
-def _sdr(view, style, peak, ctl, **odt) -> Preset13:
+def _sdr(view: str, style: str, peak: float, ctl: tuple[str, ...], **odt) -> Preset13:
     return Preset13(view, STYLE_PREFIX + style, "sdr", peak, ctl, SdrOdt(**odt))
 
 
-def _hdr(view, style, y_mid, y_max, limiting, ctl) -> Preset13:
-    return Preset13(view, STYLE_PREFIX + style, "hdr", y_max, ctl, HdrOdt(0.0001, y_mid, y_max, limiting))
-
-
-def _hdr_video(nits: int, limit_name: str, limiting: str) -> Preset13:
-    gamut = "Rec2020" if limiting == "Rec.2020" else "P3D65"
-    return _hdr(f"ACES 1.1 - HDR Video ({nits} nits & {limit_name} lim)",
-                f"HDR-VIDEO-{nits}nit-15nit-{limit_name.upper().replace('.', '')}lim_1.1", 15.0, float(nits),
-                limiting, (f"RRTODT.Academy.{gamut}_{nits}nits_15nits_ST2084",))
+def _hdr(view: str, style: str, mid: float, peak: float, limiting: str, ctl: tuple[str, ...]) -> Preset13:
+    return Preset13(view, STYLE_PREFIX + style, "hdr", peak, ctl, HdrOdt(0.0001, mid, peak, limiting))
 
 
 _PRESETS = (
@@ -76,7 +70,18 @@ _PRESETS = (
          ("ODT.Academy.Rec2020_P3D65limited_100nits_dim",), dim_surround=True, limiting="P3-D65"),
     _sdr("ACES 1.1 - SDR Video (Rec.709 lim)", "SDR-VIDEO-REC709lim_1.1", 100.0,
          ("ODT.Academy.Rec2020_Rec709limited_100nits_dim",), dim_surround=True, limiting="Rec.709"),
-    *(_hdr_video(nits, *limit) for limit in (("Rec.2020", "Rec.2020"), ("P3", "P3-D65")) for nits in (1000, 2000, 4000)),
+    _hdr("ACES 1.1 - HDR Video (1000 nits & Rec.2020 lim)", "HDR-VIDEO-1000nit-15nit-REC2020lim_1.1", 15.0, 1000.0,
+         "Rec.2020", ("RRTODT.Academy.Rec2020_1000nits_15nits_ST2084", "RRTODT.Academy.Rec2020_1000nits_15nits_HLG")),
+    _hdr("ACES 1.1 - HDR Video (2000 nits & Rec.2020 lim)", "HDR-VIDEO-2000nit-15nit-REC2020lim_1.1", 15.0, 2000.0,
+         "Rec.2020", ("RRTODT.Academy.Rec2020_2000nits_15nits_ST2084",)),
+    _hdr("ACES 1.1 - HDR Video (4000 nits & Rec.2020 lim)", "HDR-VIDEO-4000nit-15nit-REC2020lim_1.1", 15.0, 4000.0,
+         "Rec.2020", ("RRTODT.Academy.Rec2020_4000nits_15nits_ST2084",)),
+    _hdr("ACES 1.1 - HDR Video (1000 nits & P3 lim)", "HDR-VIDEO-1000nit-15nit-P3lim_1.1", 15.0, 1000.0,
+         "P3-D65", ("RRTODT.Academy.P3D65_1000nits_15nits_ST2084",)),
+    _hdr("ACES 1.1 - HDR Video (2000 nits & P3 lim)", "HDR-VIDEO-2000nit-15nit-P3lim_1.1", 15.0, 2000.0,
+         "P3-D65", ("RRTODT.Academy.P3D65_2000nits_15nits_ST2084",)),
+    _hdr("ACES 1.1 - HDR Video (4000 nits & P3 lim)", "HDR-VIDEO-4000nit-15nit-P3lim_1.1", 15.0, 4000.0,
+         "P3-D65", ("RRTODT.Academy.P3D65_4000nits_15nits_ST2084",)),
     _sdr("ACES 1.0 - SDR Cinema", "SDR-CINEMA_1.0", 48.0,
          ("ODT.Academy.P3D60_48nits", "ODT.Academy.P3D65_48nits"), dim_surround=False),
     _sdr("ACES 1.1 - SDR Cinema (Rec.709 lim)", "SDR-CINEMA-REC709lim_1.1", 48.0,
