@@ -310,3 +310,20 @@ ACES13_OCIO_RED_DARK_DELTA_E_ITP = 0.75
 #: to the largest component (measured 1.25e-3, 108 nits, and 7.5e-4 at 1000 nits, where OCIO's
 #: tone curve is rescaled; 1.2e-4 SDR, through its RRT curve's top segments).
 ACES13_OCIO_INVERSE_RELATIVE = 2e-3
+
+#: The ACES 2.0 Output Transform (generator.rendering.aces2) against OpenColorIO 2.6's builtins
+#: and fixed function, ten-bit codes of IEC 61966-2-1's curve on an SDR preset (measured 0.042,
+#: bright camera-gamut yellows). OCIO builds its tables in float32: its upper-hull gamma search
+#: lands up to 2e-4 from float64's, the test point next to limit_J_max deciding it.
+ACES2_OCIO_CODES = 0.05
+
+#: ACES2_OCIO_CODES in ΔE ITP, for an HDR preset (measured 0.010). Both leave out the hues where
+#: OCIO's narrowed hue search misses the interval and extrapolates its tables (slivers below a
+#: few entries of the Rec.2020 presets' tables, under 1% of the hue circle: up to 0.3 ΔE ITP).
+ACES2_OCIO_DELTA_E_ITP = ACES2_OCIO_CODES * DELTA_E_ITP_PER_PQ_CODE
+
+#: The ACES 2.0 view's images back through its inverse and forward, ten-bit codes of IEC
+#: 61966-2-1's curve for SDR (ΔE ITP through DELTA_E_ITP_PER_PQ_CODE for HDR): the CTL's inverse
+#: estimates the compression line's slope gain in one pass above the analytic threshold
+#: (measured 0.0144 codes, 0.0044 ΔE ITP; below it 1e-10).
+ACES2_ROUND_TRIP_CODES = 0.02

@@ -189,7 +189,12 @@ def hue_dependent(h, t: ACES2Tables) -> tuple[np.ndarray, np.ndarray, np.ndarray
 
 def compress_gamut(j, m, h, jx, t: ACES2Tables, invert: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """(J, M) moved along its compression line, whose slope gain ``jx`` sets (aces-core v2.0
-    ``compress_gamut``); colours with J > 0, M > 0 and J <= limit_J_max only."""
+    ``compress_gamut``); colours with J > 0, M > 0 and J <= limit_J_max only.
+
+    A boundary M that is not a number (a near-grey at limit_J_max, whose line meets the axis
+    1e-14 above it, so the upper hull's power takes a negative base) leaves M = 0, as a boundary
+    at or below 0 does; the CTL's test ``<= 0`` lets the NaN through.
+    """
     j_max = t.limit_j_max
     cusp_j, cusp_m, gamma_top_inv = hue_dependent(h, t)
     focus = focus_j(cusp_j, t.mid_j, j_max)
@@ -197,9 +202,10 @@ def compress_gamut(j, m, h, jx, t: ACES2Tables, invert: bool = False) -> tuple[n
     j_is = solve_j_intersect(j, m, focus, j_max, gain)
     slope = compression_slope(j_is, focus, j_max, gain)
     j_ic = solve_j_intersect(cusp_j, cusp_m, focus, j_max, gain)
-    gamut_m = gamut_boundary_m(cusp_j, cusp_m, j_max, gamma_top_inv, t.lower_hull_gamma_inv, j_is, slope, j_ic)
-    reach = boundary_m(j_is, slope, 1.0 / MODEL_GAMMA, j_max, reach_m_at(h, t), j_max)
-    out_m = remap_m(m, gamut_m, reach, invert)
+    with np.errstate(invalid="ignore"):
+        gamut_m = gamut_boundary_m(cusp_j, cusp_m, j_max, gamma_top_inv, t.lower_hull_gamma_inv, j_is, slope, j_ic)
+        reach = boundary_m(j_is, slope, 1.0 / MODEL_GAMMA, j_max, reach_m_at(h, t), j_max)
+        out_m = remap_m(m, gamut_m, reach, invert)
     inside = gamut_m > 0.0
     return np.where(inside, j_is + out_m * slope, j), np.where(inside, out_m, 0.0)
 

@@ -19,13 +19,15 @@ from generator.rendering.jmh import JMhParams, jmh_params, rgb_to_jmh
 from generator.rendering.tonescale import ToneScale
 
 #: The peaks (cd/m²) OpenColorIO's ACES2 fixed functions accept, whole numbers only
-#: (FixedFunctionOpData::validate, 2.4 to 2.6); the Academy designs the transform for 100
-#: to 10 000 (aces-core v2.0 CHANGELOG). Below :data:`PEAK_MIN` the algorithm itself fails
-#: (see ACES2Params).
+#: (FixedFunctionOpData::validate, 2.4 to 2.6).
 OCIO_PEAK_RANGE = (1.0, 10000.0)
-#: Lowest peak whose rendering holds together: below it the tone scale's roof r_hit nears
-#: 0 (it is 0 at 46.4 cd/m²) and the chroma compression's exponent turns negative.
-PEAK_MIN = 50.0
+#: The peaks the Academy designs the transform for (aces-core v2.0 CHANGELOG: "any peak
+#: luminance between 100-10000 nits"); a dimmer display takes the 100 cd/m² rendering
+#: scaled down, as the 48 cd/m² cinema presets do. Below it the algorithm degrades and then
+#: fails: the chroma compression's strength turns negative below 49.8 cd/m² and the tone
+#: scale's roof r_hit below 46.4, where the AP1 clamp's upper limit 8 r_hit turns every
+#: colour black.
+PEAK_RANGE = (100.0, OCIO_PEAK_RANGE[1])
 #: Smallest xy area of a triangle of primaries, or of the triangle the white makes with two
 #: of them: the RGB to XYZ matrix is then singular in practice (generator.tolerances'
 #: GAMUT_MIN_XY_AREA for specs).
@@ -90,9 +92,8 @@ def _check_number(value, name: str) -> float:
 class ACES2Params:
     """An ACES 2.0 Output Transform; checked on construction (ValueError names the field).
 
-    ``peak_luminance``: cd/m², a whole number from :data:`PEAK_MIN` to 10 000 (OpenColorIO takes
-    whole numbers from 1, but below about 50 the tone scale's roof and the chroma compression
-    break down). ``limiting_primaries`` (3x2 xy, red, green, blue), ``limiting_white`` (xy):
+    ``peak_luminance``: cd/m², a whole number in :data:`PEAK_RANGE`, 100 to 10 000 (OpenColorIO
+    takes whole numbers only). ``limiting_primaries`` (3x2 xy, red, green, blue), ``limiting_white`` (xy):
     a triangle and a white inside it (:func:`check_gamut`) whose six cube corners keep the hue
     order red, yellow, green, cyan, blue, magenta in JMh (:func:`corner_hues_in_order`).
     ``encoding_primaries``, ``encoding_white``: the limiting ones when omitted. ``scale_white``:
@@ -113,9 +114,9 @@ class ACES2Params:
     def validate(self) -> None:
         """Check every field and store the limiting and encoding gamuts as tuples of floats."""
         peak = _check_number(self.peak_luminance, "peak_luminance")
-        if not PEAK_MIN <= peak <= OCIO_PEAK_RANGE[1] or peak != round(peak):
-            raise ValueError(f"peak_luminance must be a whole number of cd/m² from {PEAK_MIN:g} to "
-                             f"{OCIO_PEAK_RANGE[1]:g}, got {self.peak_luminance!r}")
+        if not PEAK_RANGE[0] <= peak <= PEAK_RANGE[1] or peak != round(peak):
+            raise ValueError(f"peak_luminance must be a whole number of cd/m² from {PEAK_RANGE[0]:g} to "
+                             f"{PEAK_RANGE[1]:g}, got {self.peak_luminance!r}")
         primaries, white = check_gamut(self.limiting_primaries, self.limiting_white, "limiting")
         encoding = check_gamut(
             primaries if self.encoding_primaries is None else self.encoding_primaries,

@@ -10,7 +10,8 @@ A Michaelis-Menten curve ``f = m_2 (x / (x + s_2))^g`` followed by a flare term
   peak above 100 (``c_t``);
 * the scene value that "hits the roof", ``r_hit``, grows with log peak from 128 (100
   cd/m²) to 896 (10 000 cd/m²): the curve reaches the peak there and goes on towards
-  its asymptote, 0.8% to 2.7% above (the output transform clamps to the peak).
+  its asymptote, 0.9% (100 cd/m²) to 5.1% (10 000 cd/m²) above (the output transform clamps
+  to the peak; the inverse takes luminance up to ``inverse_limit``, just below the asymptote).
 
 At a 100 cd/m² peak scene 0.18 gives 9.99993 cd/m² (the derivation aims ``c_d`` at the
 flare-free curve) and scene 1.0 gives 45.7566 cd/m², the figures the Academy publishes as
@@ -51,7 +52,8 @@ class ToneScale:
     m_2: float
     #: Upper limit of the AP1 clamp before the transform: 8 r_hit.
     forward_limit: float
-    #: Largest normalised output the inverse takes: the curve's asymptote, peak / (u_2 100).
+    #: Largest normalised output the inverse takes, peak / (u_2 100): just below the curve's
+    #: asymptote m_2^2 / (m_2 + t_1) (by 0.03% of peak at 100 cd/m²).
     inverse_limit: float
     #: log10(peak / 100).
     log_peak: float
@@ -89,8 +91,8 @@ def tonescale_forward(x, ts: ToneScale):
 
 
 def tonescale_inverse(y, ts: ToneScale):
-    """Display luminance in cd/m² to scene-linear luminance; luminance beyond the curve's
-    asymptote is taken as the asymptote (aces-core v2.0 ``tonescale_inv``)."""
+    """Display luminance in cd/m² to scene-linear luminance; luminance beyond ``inverse_limit``
+    is taken as it (aces-core v2.0 ``tonescale_inv``)."""
     z = np.clip(np.asarray(y, dtype=np.float64) / NORMALISED_WHITE, 0.0, ts.inverse_limit)
     h = (z + np.sqrt(z * (4.0 * FLARE + z))) / 2.0
     with np.errstate(divide="ignore"):
