@@ -151,49 +151,73 @@ def _glow_gain(saturation: np.ndarray) -> np.ndarray:
     return GLOW_GAIN * sigmoid_shaper((saturation - 0.4) / 0.2)
 
 
+def glow_module(aces, saturation: np.ndarray | None = None) -> np.ndarray:
+    """The glow module: dark saturated colours (YC under 0.16) brightened by up to 5%.
+
+    ``saturation`` is the colour's (computed when not given).
+    """
+    aces = np.asarray(aces, dtype=np.float64)
+    saturation = rgb_to_saturation(aces) if saturation is None else saturation
+    return aces * (1.0 + glow_forward(rgb_to_yc(aces), _glow_gain(saturation), GLOW_MID))[..., np.newaxis]
+
+
+def glow_module_inverse(aces) -> np.ndarray:
+    """The inverse glow module (``inv_rrt_sweeteners``), saturation taken at the glowed colour."""
+    aces = np.asarray(aces, dtype=np.float64)
+    gain = _glow_gain(rgb_to_saturation(aces))
+    return aces * (1.0 + glow_inverse(rgb_to_yc(aces), gain, GLOW_MID))[..., np.newaxis]
+
+
 def _red_weight(aces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The red modifier's hue weight, and the hue centred on red."""
     centred = center_hue(rgb_to_hue(aces), RED_HUE)
     return cubic_basis_shaper(centred, RED_WIDTH), centred
 
 
-def rrt_sweeteners(aces) -> np.ndarray:
-    """ACES2065-1 to the RRT's AP1 rendering space, before its tone scale (``rrt_sweeteners``).
+def red_weight(aces) -> np.ndarray:
+    """The red modifier's hue weight: 1 at red (hue 0), 0 from 67.5° either side on."""
+    return _red_weight(np.asarray(aces, dtype=np.float64))[0]
 
-    Glow (dark saturated colours brightened up to 5%), red modifier (red channel of
-    reds pulled toward 0.03), clamp negative ACES, AP0 -> AP1, clamp to
-    [0, HALF_MAX], desaturate to 96%.
-    """
+
+def red_modifier(aces, saturation: np.ndarray) -> np.ndarray:
+    """The red channel of reds (±67.5° of hue) pulled toward 0.03 by up to 18%, weighted by
+    hue and by ``saturation`` (RRT.ctl: the colour's before the glow)."""
     aces = np.asarray(aces, dtype=np.float64)
-    saturation = rgb_to_saturation(aces)
-    glow = 1.0 + glow_forward(rgb_to_yc(aces), _glow_gain(saturation), GLOW_MID)
-    aces = aces * glow[..., np.newaxis]
     weight, _ = _red_weight(aces)
     red = aces[..., 0] + weight * saturation * (RED_PIVOT - aces[..., 0]) * (1.0 - RED_SCALE)
-    aces = np.concatenate([red[..., np.newaxis], aces[..., 1:]], axis=-1)
-    rgb = np.clip(apply3x3(AP0_TO_AP1, np.maximum(aces, 0.0)), 0.0, HALF_MAX)
-    return apply3x3(RRT_SAT_MATRIX, rgb)
+    return np.concatenate([red[..., np.newaxis], aces[..., 1:]], axis=-1)
 
 
-def _red_inverse(aces: np.ndarray) -> np.ndarray:
-    """The red channel before the red modifier: the root of the CTL's quadratic."""
+def red_modifier_inverse(aces) -> np.ndarray:
+    """The CTL's inverse red modifier: red from the root of a quadratic that weighs hue at
+    the modified colour and takes saturation as (r - min) / r."""
+    aces = np.asarray(aces, dtype=np.float64)
     weight, centred = _red_weight(aces)
     smallest = np.where(centred < 0.0, aces[..., 1], aces[..., 2])
     k = 1.0 - RED_SCALE
     a = weight * k - 1.0
     b = aces[..., 0] - weight * (RED_PIVOT + smallest) * k
     c = weight * RED_PIVOT * smallest * k
-    return (-b - np.sqrt(np.maximum(b * b - 4.0 * a * c, 0.0))) / (2.0 * a)
+    red = (-b - np.sqrt(np.maximum(b * b - 4.0 * a * c, 0.0))) / (2.0 * a)
+    return np.concatenate([red[..., np.newaxis], aces[..., 1:]], axis=-1)
+
+
+def rrt_sweeteners(aces) -> np.ndarray:
+    """ACES2065-1 to the RRT's AP1 rendering space, before its tone scale (``rrt_sweeteners``):
+    glow, red modifier, clamp negative ACES, AP0 -> AP1, clamp to [0, HALF_MAX], desaturate
+    to 96%."""
+    aces = np.asarray(aces, dtype=np.float64)
+    saturation = rgb_to_saturation(aces)
+    aces = red_modifier(glow_module(aces, saturation), saturation)
+    rgb = np.clip(apply3x3(AP0_TO_AP1, np.maximum(aces, 0.0)), 0.0, HALF_MAX)
+    return apply3x3(RRT_SAT_MATRIX, rgb)
 
 
 def rrt_sweeteners_inverse(rgb) -> np.ndarray:
     """AP1 rendering space back to ACES2065-1 (``inv_rrt_sweeteners``)."""
     rgb = apply3x3(np.linalg.inv(RRT_SAT_MATRIX), np.asarray(rgb, dtype=np.float64))
     aces = np.clip(apply3x3(AP1_TO_AP0, np.clip(rgb, 0.0, HALF_MAX)), 0.0, HALF_MAX)
-    aces = np.concatenate([_red_inverse(aces)[..., np.newaxis], aces[..., 1:]], axis=-1)
-    saturation = rgb_to_saturation(aces)
-    glow = 1.0 + glow_inverse(rgb_to_yc(aces), _glow_gain(saturation), GLOW_MID)
-    return aces * glow[..., np.newaxis]
+    return glow_module_inverse(red_modifier_inverse(aces))
 
 
 def rrt_tonescale(aces) -> np.ndarray:

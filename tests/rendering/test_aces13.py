@@ -85,7 +85,7 @@ def test_display_colours_come_back_where_the_ctl_inverts(view):
     aces = inverse13(xyz, view)
     again = forward13(aces, view)
     error = np.abs(again - xyz).max(axis=-1) / np.abs(xyz).max(axis=-1)
-    weight = rrt.cubic_basis_shaper(rrt.center_hue(rrt.rgb_to_hue(aces), rrt.RED_HUE), rrt.RED_WIDTH)
+    weight = rrt.red_weight(aces)
     kept = ~clamped_by_inverse(xyz, view)
     exact = kept & (weight == 0.0) & (aces.max(axis=-1) >= 1e-2)
     assert exact.mean() > 0.3
@@ -99,7 +99,7 @@ def test_aces_comes_back_where_nothing_clips(view):
     inside the limiting gamut: forward then inverse gives it back."""
     rng = np.random.default_rng(14)
     aces = rrt.apply3x3(rrt.AP1_TO_AP0, 10.0 ** rng.uniform(-2.0, 0.9, (20000, 3)))
-    weight = rrt.cubic_basis_shaper(rrt.center_hue(rrt.rgb_to_hue(aces), rrt.RED_HUE), rrt.RED_WIDTH)
+    weight = rrt.red_weight(aces)
     aces = aces[(weight == 0.0) & (aces.min(axis=-1) >= 0.0)]
     xyz = forward13(aces, view)
     if PRESETS13[view].odt.limiting is not None:

@@ -111,10 +111,8 @@ def red_modifier_departs(aces: np.ndarray) -> np.ndarray:
     takes saturation after the glow (RRT.ctl, before), which differs where the largest
     channel is under the saturation's noise floor (1e-2)."""
     saturation = rrt.rgb_to_saturation(aces)
-    glow = 1.0 + rrt.glow_forward(rrt.rgb_to_yc(aces), rrt.GLOW_GAIN * rrt.sigmoid_shaper((saturation - 0.4) / 0.2),
-                                  rrt.GLOW_MID)
-    glowed = aces * glow[..., None]
-    weight = rrt.cubic_basis_shaper(rrt.center_hue(rrt.rgb_to_hue(glowed), rrt.RED_HUE), rrt.RED_WIDTH)
+    glowed = rrt.glow_module(aces, saturation)
+    weight = rrt.red_weight(glowed)
     return (weight > 0.0) & (np.abs(rrt.rgb_to_saturation(glowed) - saturation) > 1e-9)
 
 

@@ -47,15 +47,14 @@ def test_mid_grey_luminance(view, expected):
 
 @pytest.mark.parametrize("view", [v for v, p in PRESETS13.items() if p.kind == "sdr"])
 def test_cinema_stops_are_black_and_peak_and_the_inverse_clamps_to_them(view):
-    """0.18·2^-6.5 and below give black, 0.18·2^6.5 the display's peak (its white scale, in
-    a white simulation); the inverse of black is 0.18·2^-6.5, of peak and above 0.18·2^6.5."""
+    """0.18·2^-6.5 and below give black, 0.18·2^6.5 the display's peak (less in a white
+    simulation); the inverse of black is 0.18·2^-6.5, of peak and above 0.18·2^6.5."""
     preset = PRESETS13[view]
-    scale = preset.odt.white_scale * (preset.odt.roll_white or 1.0)
     greys = np.array([CINEMA_BLACK_ACES / 4.0, CINEMA_BLACK_ACES, CINEMA_WHITE_ACES])[:, None] * np.ones(3)
     luminance = forward13(greys, view)[:, 1]
     assert luminance[:2] == pytest.approx([0.0, 0.0], abs=FLOAT64)
-    if preset.odt.encoding_white is None and preset.odt.adapt_to_d65:
-        assert luminance[2] == pytest.approx(scale, rel=1e-9)
+    if preset.odt.white_scale == 1.0:
+        assert luminance[2] == pytest.approx(1.0, rel=1e-9)
     peak = forward13(greys[2], view)
     back = inverse13(np.stack([np.zeros(3), peak, 4.0 * peak]), view)
     assert back == pytest.approx(np.array([[CINEMA_BLACK_ACES] * 3] + [[CINEMA_WHITE_ACES] * 3] * 2), rel=1e-9)
