@@ -53,6 +53,7 @@ def command(inputs, output, config, src, dst, display, view, frames, fmt, depth,
     plan, sources = plan_run(inputs, output, config, src, dst, display, view, frames, fmt, depth, compression,
                              verify, sample, skip_existing, force, memory << 20,
                              announce=lambda text: click.echo(text, err=True))
+    made = not os.path.isdir(output)
     os.makedirs(output, exist_ok=True)
     with _progress(len(sources)) as advance:
         def report(result):
@@ -64,6 +65,8 @@ def command(inputs, output, config, src, dst, display, view, frames, fmt, depth,
         try:
             results = runner.run(plan, sources, report, jobs or os.cpu_count() or 1, scheduler or "", fail_fast)
         except runner.SchedulerError as error:
+            if made:  # the folder this run made, still empty
+                os.rmdir(output)
             raise SpecError("--scheduler", scheduler, str(error)) from None
     say(_summary(results, len(sources), time.perf_counter() - started, verify))
     if not all(r.ok for r in results) or len(results) < len(sources):
@@ -94,8 +97,8 @@ def _summary(results, total: int, seconds: float, verify: bool) -> str:
 
 
 class _progress:
-    """A progress bar on stderr (frames done of all, rate, time left) where stderr is a terminal;
-    redrawn as each frame ends, by no thread of its own (the pool's processes are forked)."""
+    """A progress bar on stderr (frames done of all, rate, time left) where stderr is a terminal,
+    redrawn as each frame ends."""
 
     def __init__(self, total: int):
         self.total = total

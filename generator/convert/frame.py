@@ -207,9 +207,13 @@ def _converted(cpu, band: np.ndarray, rgb: tuple[int, ...]) -> np.ndarray:
 
 
 def _place(staged: str, output: str, force: bool) -> None:
-    """Rename the complete file onto ``output`` (keeping the permissions of a file it replaces)."""
+    """Rename the complete file onto ``output`` (keeping the permissions of a file it replaces).
+    Without ``force`` an output was absent when the run began: one there now is this frame's own,
+    written by a worker that died before saying so (the same bytes), or another's, refused."""
+    import filecmp
+
     if os.path.lexists(output):
-        if not force:
+        if not force and not (os.path.isfile(output) and filecmp.cmp(staged, output, shallow=False)):
             raise FrameError(f"{output} appeared during the run; allowed: --force to replace it, or --skip-existing")
         os.chmod(staged, os.stat(output).st_mode & 0o7777)
     os.replace(staged, output)

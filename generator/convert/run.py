@@ -18,7 +18,7 @@ from generator.convert.frames import Source
 Report = Callable[[FrameResult], None]
 
 #: Seconds to wait for a Dask scheduler to answer.
-CONNECT_SECONDS = 10
+CONNECT_SECONDS = 5
 
 
 class SchedulerError(Exception):
@@ -107,7 +107,7 @@ def _on_cluster(plan, sources, report, scheduler, fail_fast) -> list[FrameResult
     except ImportError:
         raise SchedulerError("--scheduler needs Dask: pip install 'ocioforge[dask]'") from None
     try:
-        client = Client(scheduler, timeout=CONNECT_SECONDS, set_as_default=False)
+        client = Client(scheduler, timeout=CONNECT_SECONDS)
     except (OSError, TimeoutError, ValueError) as error:
         raise SchedulerError(f"--scheduler {scheduler}: cannot reach it ({error}); allowed: the address of a "
                              "running Dask scheduler, such as tcp://host:8786") from None
