@@ -89,6 +89,11 @@ def tables(params: ACES2Params) -> ACES2Tables:
     )
 
 
+#: Colours per pass: a pass's few dozen temporaries then stay in the processor's cache
+#: (measured on 65³ colours: 0.21 s in passes of this size, 0.46 s in one).
+CHUNK = 16384
+
+
 def _colours(values) -> tuple[np.ndarray, tuple[int, ...]]:
     values = np.asarray(values, dtype=np.float64)
     if values.shape[-1:] != (3,):
@@ -96,23 +101,26 @@ def _colours(values) -> tuple[np.ndarray, tuple[int, ...]]:
     return values.reshape(-1, 3), values.shape
 
 
-def output_rgb(aces, t: ACES2Tables) -> np.ndarray:
-    """ACES2065-1 (..., 3) to limiting-primaries display-linear RGB, 1.0 = 100 cd/m²
-    (aces-core v2.0 ``outputTransform_fwd`` without its AP1 clamp, as OpenColorIO's fixed function)."""
-    rgb, shape = _colours(aces)
+def _in_passes(rows, values, t: ACES2Tables) -> np.ndarray:
+    """``rows`` (a function of (n, 3) colours and ``t``) over ``values`` (..., 3), CHUNK colours at a time."""
+    flat, shape = _colours(values)
+    out = np.empty_like(flat)
+    for start in range(0, flat.shape[0], CHUNK):
+        out[start:start + CHUNK] = rows(flat[start:start + CHUNK], t)
+    return out.reshape(shape)
+
+
+def _output_rows(rgb: np.ndarray, t: ACES2Tables) -> np.ndarray:
     aab = rgb_to_aab(rgb, t.input)
     jmh, direction = aab_to_jmh(aab), hue_direction(aab)
     j, m, h = jmh[:, 0], jmh[:, 1], jmh[:, 2]
     j_ts = y_to_j(tonescale_forward(j_to_y(j, t.input) / 100.0, t.tone), t.input)
     norm = chroma_compress_norm(*direction, t.chroma_compress_scale)
     toned = np.stack([j_ts, chroma_compress(j, j_ts, m, h, norm, t), h], axis=-1)
-    return aab_to_rgb(jmh_to_aab(gamut_compress(toned, t), direction), t.limit).reshape(shape)
+    return aab_to_rgb(jmh_to_aab(gamut_compress(toned, t), direction), t.limit)
 
 
-def output_rgb_inverse(rgb, t: ACES2Tables) -> np.ndarray:
-    """Limiting-primaries display-linear RGB (..., 3) back to ACES2065-1 (aces-core v2.0
-    ``outputTransform_inv``, as OpenColorIO's inverse fixed function)."""
-    rgb, shape = _colours(rgb)
+def _output_inverse_rows(rgb: np.ndarray, t: ACES2Tables) -> np.ndarray:
     aab = rgb_to_aab(rgb, t.limit)
     direction = hue_direction(aab)
     toned = gamut_compress(aab_to_jmh(aab), t, invert=True)
@@ -120,7 +128,7 @@ def output_rgb_inverse(rgb, t: ACES2Tables) -> np.ndarray:
     j = y_to_j(tonescale_inverse(j_to_y(j_ts, t.input), t.tone) * 100.0, t.input)
     norm = chroma_compress_norm(*direction, t.chroma_compress_scale)
     jmh = np.stack([j, chroma_compress(j, j_ts, m, h, norm, t, invert=True), h], axis=-1)
-    return aab_to_rgb(jmh_to_aab(jmh, direction), t.input).reshape(shape)
+    return aab_to_rgb(jmh_to_aab(jmh, direction), t.input)
 
 
 def _clamp_ap1(aces: np.ndarray, t: ACES2Tables) -> np.ndarray:
@@ -128,15 +136,33 @@ def _clamp_ap1(aces: np.ndarray, t: ACES2Tables) -> np.ndarray:
     return ap1 @ t.ap1_to_ap0.T
 
 
+def _forward_rows(aces: np.ndarray, t: ACES2Tables) -> np.ndarray:
+    display = np.clip(_output_rows(_clamp_ap1(aces, t), t), 0.0, t.params.peak_luminance / 100.0)
+    return (display * t.display_scale) @ t.limit_to_xyz.T
+
+
+def _inverse_rows(xyz: np.ndarray, t: ACES2Tables) -> np.ndarray:
+    display = np.clip((xyz @ t.xyz_to_limit.T) / t.display_scale, 0.0, t.params.peak_luminance / 100.0)
+    return _clamp_ap1(_output_inverse_rows(display, t), t)
+
+
+def output_rgb(aces, t: ACES2Tables) -> np.ndarray:
+    """ACES2065-1 (..., 3) to limiting-primaries display-linear RGB, 1.0 = 100 cd/m²
+    (aces-core v2.0 ``outputTransform_fwd`` without its AP1 clamp, as OpenColorIO's fixed function)."""
+    return _in_passes(_output_rows, aces, t)
+
+
+def output_rgb_inverse(rgb, t: ACES2Tables) -> np.ndarray:
+    """Limiting-primaries display-linear RGB (..., 3) back to ACES2065-1 (aces-core v2.0
+    ``outputTransform_inv``, as OpenColorIO's inverse fixed function)."""
+    return _in_passes(_output_inverse_rows, rgb, t)
+
+
 def forward(aces, t: ACES2Tables) -> np.ndarray:
     """ACES2065-1 (..., 3) to CIE XYZ of the display's light, 1.0 = 100 cd/m² (the whole view)."""
-    rgb, shape = _colours(aces)
-    display = np.clip(output_rgb(_clamp_ap1(rgb, t), t), 0.0, t.params.peak_luminance / 100.0)
-    return ((display * t.display_scale) @ t.limit_to_xyz.T).reshape(shape)
+    return _in_passes(_forward_rows, aces, t)
 
 
 def inverse(xyz, t: ACES2Tables) -> np.ndarray:
     """CIE XYZ of the display's light (..., 3), 1.0 = 100 cd/m², back to ACES2065-1."""
-    values, shape = _colours(xyz)
-    display = np.clip((values @ t.xyz_to_limit.T) / t.display_scale, 0.0, t.params.peak_luminance / 100.0)
-    return _clamp_ap1(output_rgb_inverse(display, t), t).reshape(shape)
+    return _in_passes(_inverse_rows, xyz, t)
