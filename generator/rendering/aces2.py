@@ -13,8 +13,12 @@ whole view as OpenColorIO 2.6's builtin ``ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D6
 <preset>_2.0`` runs it: AP0 to AP1, clamp to [0, 8 r_hit] (the CTL's ``clamp_AP0_to_AP1``),
 back to AP0, :func:`output_rgb`, clamp to [0, peak / 100], the white scaling where it applies,
 the linear scale, limiting RGB to CIE XYZ (1.0 = 100 cd/m²). The inverses run the same steps
-back; the inverse white scaling is followed by a clamp to [0, peak / 100] as in OpenColorIO
-(the CTL clamps to [0, 1] there, which would cut an HDR preset's highlights).
+back; the inverse white scaling is followed by a clamp to [0, peak / 100] as in OpenColorIO.
+
+The CTL is followed step by step, in float64, except where it slips and OpenColorIO does not:
+the inverse white scaling's clamp (the CTL's is [0, 1], which would cut an HDR preset's
+highlights), the upper hull's interpolation by hue (``aces2_compress.hue_dependent``) and the
+rotation of the limiting gamut's corners (``aces2_tables``). NaN in gives NaN out.
 """
 
 from __future__ import annotations
@@ -74,13 +78,15 @@ def tables(params: ACES2Params) -> ACES2Tables:
     lower_hull_gamma_inv = 1.0 / (LOWER_HULL_GAMMA[0] + LOWER_HULL_GAMMA[1] * tone.log_peak)
     hues, cusp_j, cusp_m = _hue_tables(params, reach, limit, j_max, tone.forward_limit)
     gamma = upper_hull_gamma_table(hues, cusp_j, cusp_m, limit, peak, j_max, mid_j, focus_dist, lower_hull_gamma_inv)
-    ap0, ap1 = normalised_primary_matrix(AP0_PRIMARIES, ACES_WHITE), normalised_primary_matrix(AP1_PRIMARIES, ACES_WHITE)
+    ap0 = normalised_primary_matrix(AP0_PRIMARIES, ACES_WHITE)
+    ap1 = normalised_primary_matrix(AP1_PRIMARIES, ACES_WHITE)
     limit_to_xyz = normalised_primary_matrix(params.limiting_primaries, params.limiting_white)
     return ACES2Tables(
         params=params, input=source, reach=reach, limit=limit, tone=tone, limit_j_max=j_max, mid_j=mid_j,
         focus_dist=focus_dist, lower_hull_gamma_inv=lower_hull_gamma_inv,
         sat=max(CHROMA_EXPAND_MIN, CHROMA_EXPAND - CHROMA_EXPAND * CHROMA_EXPAND_FACT * tone.log_peak),
-        sat_thr=CHROMA_EXPAND_THR / peak, compr=CHROMA_COMPRESS + CHROMA_COMPRESS * CHROMA_COMPRESS_FACT * tone.log_peak,
+        sat_thr=CHROMA_EXPAND_THR / peak,
+        compr=CHROMA_COMPRESS + CHROMA_COMPRESS * CHROMA_COMPRESS_FACT * tone.log_peak,
         chroma_compress_scale=(NORM_SCALE[0] * peak) ** NORM_SCALE[1] - NORM_SCALE[2],
         reach_m=reach_m_table(reach, j_max), hues=hues, cusp_j=cusp_j, cusp_m=cusp_m, gamma_top_inv=gamma,
         ap0_to_ap1=np.linalg.solve(ap1, ap0), ap1_to_ap0=np.linalg.solve(ap0, ap1),

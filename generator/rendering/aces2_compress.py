@@ -110,7 +110,7 @@ def focus_gain(j, threshold, j_max: float, focus_dist: float):
 
 def solve_j_intersect(j, m, focus: np.ndarray, j_max: float, slope_gain):
     """J where the compression line through (J, M) meets the J axis (aces-core v2.0
-    ``solve_J_intersect``): the lines are parabolas in J, so a quadratic's stable root."""
+    ``solve_J_intersect``): the root of a quadratic, in its numerically stable form."""
     m_scaled = m / slope_gain
     a = m_scaled / focus
     below = j < focus
@@ -168,14 +168,18 @@ def remap_m(m, gamut_m, reach_m, invert: bool = False):
 
 def hue_dependent(h, t: ACES2Tables) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cusp J, cusp M and the upper hull's inverse gamma at hue ``h`` in [0, 360) (aces-core
-    v2.0 ``init_HueDependentGamutParams``): the interval of the hue table holding ``h``, as the
-    CTL's bisection finds it, and linear interpolation in it.
+    v2.0 ``init_HueDependentGamutParams``): the interval of the hue table holding ``h`` and
+    linear interpolation in it, by the hue's share of the interval.
 
-    The gamma's weight is the hue's share of the interval, as for the cusp and as in
-    OpenColorIO. The CTL's ``interpolation_weight`` returns the hue's distance from the
-    interval's start in degrees, ignoring the width it is given, a remnant of the earlier
-    uniform tables: with v2.0's hue table (intervals 0.09 to 1.27 degrees) the hull's gamma
+    The CTL finds the cusp's interval by bisecting the whole table (``cusp_from_table``), as
+    here, but the gamma's by a search narrowed to a window around the hue's entry
+    (``lookup_hue_interval``), which misses the interval for a fifth to a half of hues (its window
+    is set one entry too high), and weighs the gamma by the hue's distance from the interval's
+    start in degrees (``interpolation_weight`` ignores the width it is given, a remnant of the
+    earlier uniform tables; v2.0's intervals are 0.09 to 1.27 degrees wide): the hull's gamma
     then jumps at every entry, and the rendering with it (up to 9e-4 of peak, measured).
+    OpenColorIO weighs both by the share, as here, and narrows its search correctly but in
+    slivers of the Rec.2020 presets' hue circle.
     """
     i = np.clip(np.searchsorted(t.hues, h, side="left"), 1, t.hues.size - 1)
     lo, hi = t.hues[i - 1], t.hues[i]

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator.rendering.jmh import JMhParams, jmh_params, rgb_to_jmh
+from generator.tolerances import GAMUT_MIN_XY_AREA
 from generator.rendering.tonescale import ToneScale
 
 #: The peaks (cd/m²) OpenColorIO's ACES2 fixed functions accept, whole numbers only
@@ -28,10 +29,6 @@ OCIO_PEAK_RANGE = (1.0, 10000.0)
 #: scale's roof r_hit below 46.4, where the AP1 clamp's upper limit 8 r_hit turns every
 #: colour black.
 PEAK_RANGE = (100.0, OCIO_PEAK_RANGE[1])
-#: Smallest xy area of a triangle of primaries, or of the triangle the white makes with two
-#: of them: the RGB to XYZ matrix is then singular in practice (generator.tolerances'
-#: GAMUT_MIN_XY_AREA for specs).
-MIN_XY_AREA = 1e-3
 #: The RGB cube's corners around its hue circle, red, yellow, green, cyan, blue, magenta
 #: (aces-core v2.0 ``generate_unit_cube_cusp_corners``): the limiting gamut's cusps lie on
 #: the edges between them.
@@ -57,18 +54,19 @@ def _triangle_area(a, b, c) -> float:
 def check_gamut(primaries, white, name: str) -> tuple[tuple[tuple[float, float], ...], tuple[float, float]]:
     """``primaries`` (3x2 xy) and ``white`` (xy) as tuples, or ValueError naming ``name``:
     finite, the white's y above 0, the primaries a triangle of xy area at least
-    :data:`MIN_XY_AREA` in either orientation, and the white inside it by that margin."""
+    :data:`GAMUT_MIN_XY_AREA` in either orientation, and the white inside it by that margin."""
     p = _xy_array(primaries, (3, 2), f"{name}_primaries")
     w = _xy_array(white, (2,), f"{name}_white")
     if w[1] <= 0.0:
         raise ValueError(f"{name}_white must have y > 0, got {tuple(w)}")
     area = _triangle_area(*p)
-    if abs(area) < MIN_XY_AREA:
-        raise ValueError(f"{name}_primaries must span an xy triangle of area at least {MIN_XY_AREA}, got {abs(area):.3g}")
+    if abs(area) < GAMUT_MIN_XY_AREA:
+        raise ValueError(f"{name}_primaries must span an xy triangle of area at least {GAMUT_MIN_XY_AREA}, "
+                         f"got {abs(area):.3g}")
     weights = [_triangle_area(w, p[(i + 1) % 3], p[(i + 2) % 3]) / area for i in range(3)]
-    if min(weights) * abs(area) < MIN_XY_AREA:
+    if min(weights) * abs(area) < GAMUT_MIN_XY_AREA:
         raise ValueError(f"{name}_white must lie inside the triangle of {name}_primaries, at least "
-                         f"{MIN_XY_AREA} of xy area from each edge, got {tuple(w)}")
+                         f"{GAMUT_MIN_XY_AREA} of xy area from each edge, got {tuple(w)}")
     return tuple(tuple(float(v) for v in row) for row in p), (float(w[0]), float(w[1]))
 
 

@@ -25,8 +25,8 @@ import math
 
 import numpy as np
 
-from generator.rendering.aces2_compress import compression_slope, focus_gain, focus_j, gamut_boundary_m, solve_j_intersect
-from generator.rendering.aces2_compress import FOCUS_GAIN_BLEND
+from generator.rendering.aces2_compress import (FOCUS_GAIN_BLEND, compression_slope, focus_gain, focus_j,
+                                                gamut_boundary_m, solve_j_intersect)
 from generator.rendering.aces2_params import CUBE_CORNERS
 from generator.rendering.jmh import JMhParams, j_to_achromatic, jmh_to_rgb, rgb_to_aab, rgb_to_jmh
 
