@@ -125,6 +125,12 @@ def _judging(out: paths.Endpoint | None, display: Display | None, baked_src: pat
              view: str = "") -> dict:
     """Metric, tolerance, scale and target for an output kind (a baked source, a view)."""
     method = paths.view_method(view) if view else None
+    if view and paths.is_aces13(view):
+        # OCIO's ACES 1.x builtins depart from the CTL (black's offset, the red modifier's
+        # saturation, rescaled tone-curve slopes): held to what was measured against them.
+        return dict(metric=ITP if display.is_hdr else CODES, target=display,
+                    tolerance=tolerances.ACES13_OCIO_RED_DARK_DELTA_E_ITP if display.is_hdr
+                    else tolerances.ACES13_OCIO_CODES)
     if method is not None and method not in paths.ANALYTIC_METHODS:
         return dict(metric=ITP if display.is_hdr else CODES, tolerance=view_lut_tolerance(display),
                     target=display)

@@ -239,6 +239,14 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
     return mapped
 
 
+def is_aces13(view: str) -> bool:
+    """Whether ``view`` names an ACES 1.3 studio view (OCIO's builtins run them from 2.1)."""
+    from generator.rendering.views import catalogue
+
+    found = catalogue().get(view)
+    return found is not None and found.version == "1.3"
+
+
 def aces_baked(spec: Spec, display: Display, view: str) -> bool:
     """Whether the config of ``spec`` runs ACES view ``view`` as its baked lattice."""
     from generator.ocio.capabilities import aces_analytic
@@ -297,21 +305,21 @@ def display_view_spaces(spec: Spec) -> list[Endpoint]:
     into the scene, a view the config inverts as Colorimetric (clip, and
     :data:`~generator.ocio.emit.INVERTED_AS_COLORIMETRIC`) decodes as its display does;
     RGC's analytic inverse has no evaluation here (no decode: checked forward only)."""
-    from generator.ocio.emit import INVERTED_AS_COLORIMETRIC
-
     if not spec.display_view_spaces:
         return []
-    out = []
-    for display in spec.displays:
-        shown = _display_endpoint(spec, display)
-        for view in display.views:
-            if view == RAW:
-                continue
-            colorimetric = view_method(view) in ("clip", *INVERTED_AS_COLORIMETRIC)
-            out.append(Endpoint(display_view_space(view, display.name), shown.decode if colorimetric else None,
-                                view_function(spec, display, view), (0.0, 1.0), DISPLAY, display, matrix=shown.matrix,
-                                linear=shown.linear if colorimetric else None, view=view))
-    return out
+    return [display_view_endpoint(spec, display, view) for display in spec.displays for view in display.views
+            if view != RAW]
+
+
+def display_view_endpoint(spec: Spec, display: Display, view: str) -> Endpoint:
+    """The "<view> - <display>" space of :func:`display_view_spaces`."""
+    from generator.ocio.emit import INVERTED_AS_COLORIMETRIC
+
+    shown = _display_endpoint(spec, display)
+    colorimetric = view_method(view) in ("clip", *INVERTED_AS_COLORIMETRIC)
+    return Endpoint(display_view_space(view, display.name), shown.decode if colorimetric else None,
+                    view_function(spec, display, view), (0.0, 1.0), DISPLAY, display, matrix=shown.matrix,
+                    linear=shown.linear if colorimetric else None, view=view)
 
 
 def endpoints(spec: Spec) -> dict[str, Endpoint]:
@@ -321,3 +329,30 @@ def endpoints(spec: Spec) -> dict[str, Endpoint]:
     out += [_display_endpoint(spec, d) for d in spec.displays]
     out += display_view_spaces(spec)
     return {e.name: e for e in out}
+
+
+class LazyEndpoints(dict):
+    """:func:`endpoints`, each built when first looked up: a conversion needs two or three of them,
+    and building every view's lattice takes seconds."""
+
+    def __init__(self, spec: Spec):
+        super().__init__()
+        self.spec = spec
+        self.makers = {s.name: (lambda s=s: _scene_endpoint(spec, s)) for s in spec.colour_spaces}
+        self.makers[DISPLAY_REFERENCE] = lambda: _xyz_endpoint(spec)
+        self.makers.update({d.name: (lambda d=d: _display_endpoint(spec, d)) for d in spec.displays})
+        if spec.display_view_spaces:
+            self.makers.update({display_view_space(v, d.name): (lambda d=d, v=v: display_view_endpoint(spec, d, v))
+                                for d in spec.displays for v in d.views if v != RAW})
+
+    def __missing__(self, name: str) -> Endpoint:
+        if name not in self.makers:
+            raise KeyError(name)
+        self[name] = self.makers[name]()
+        return self[name]
+
+    def __contains__(self, name) -> bool:
+        return name in self.makers
+
+    def get(self, name, default=None):
+        return self[name] if name in self.makers else default
