@@ -93,10 +93,10 @@ def _processor(config: str, src: str, dst: str, display: str, view: str):
 def _spec(config: str):
     """The spec stored beside ``config`` and its endpoints (costly: built once per process)."""
     from generator.spec import resolved
-    from generator.verify.paths import endpoints
+    from generator.verify.paths import LazyEndpoints
 
     spec = resolved.read_beside(config)
-    return spec, endpoints(spec)
+    return spec, LazyEndpoints(spec)
 
 
 def source_space(config: str, path: str, part_spec, asked: str | None) -> str:
@@ -189,7 +189,9 @@ def _write(plan, source, inp, frame_parts, fmt, depth, compression, route) -> No
                 band = pixels.read_rows(inp, part, y0, y1)
                 if part.rgb:
                     band = _converted(cpu, band, part.rgb)
-                pixels.write_rows(out, spec, y0, y1, np.ascontiguousarray(formats.quantised(band[..., list(channels)], depth)))
+                if channels != tuple(range(band.shape[-1])):
+                    band = band[..., list(channels)]
+                pixels.write_rows(out, spec, y0, y1, np.ascontiguousarray(formats.quantised(band, depth)))
         if not out.close():
             raise FrameError(f"cannot write: {out.geterror()}")
         _place(staged, source.output, plan.force)
@@ -198,10 +200,14 @@ def _write(plan, source, inp, frame_parts, fmt, depth, compression, route) -> No
 
 
 def _converted(cpu, band: np.ndarray, rgb: tuple[int, ...]) -> np.ndarray:
-    """``band`` with its colour channels through the CPU processor (float32, as OCIO runs)."""
-    colours = np.ascontiguousarray(band[..., list(rgb)], dtype=np.float32).reshape(-1, 3)
+    """``band`` with its colour channels through the CPU processor (float32, as OCIO runs); in
+    place where the band is R, G, B alone."""
+    band = np.ascontiguousarray(band, dtype=np.float32)
+    if rgb == (0, 1, 2) and band.shape[-1] == 3:
+        cpu.applyRGB(band.reshape(-1, 3))
+        return band
+    colours = np.ascontiguousarray(band[..., list(rgb)]).reshape(-1, 3)
     cpu.applyRGB(colours)
-    band = np.array(band, dtype=np.float32)
     band[..., list(rgb)] = colours.reshape(band.shape[:-1] + (3,))
     return band
 
