@@ -80,13 +80,12 @@ def mirrored_power(x, exponent: float) -> np.ndarray:
 def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view``, sampled from the float64 reference."""
     t = views.tables(view)
-    upper = float(t.tone.forward_limit)
     gamma = HDR_GAMMA if view.is_hdr else SDR_GAMMA
-    axis = axis_value(np.linspace(0.0, 1.0, size), upper, ACES_LATTICE_TOE)
+    axis = axis_value(np.linspace(0.0, 1.0, size), upper(view), ACES_LATTICE_TOE)
     ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
     rgb = views.output_rgb(view, ap1 @ t.ap1_to_ap0.T) / (view.peak / 100.0)
     cube = mirrored_power(rgb, 1.0 / gamma).reshape(size, size, size, 3)
-    return AcesLattice(view, upper, ACES_LATTICE_TOE, gamma, cube)
+    return AcesLattice(view, upper(view), ACES_LATTICE_TOE, gamma, cube)
 
 
 def evaluate(lat: AcesLattice, aces) -> np.ndarray:
@@ -99,14 +98,14 @@ def evaluate(lat: AcesLattice, aces) -> np.ndarray:
     nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (lat.size - 1)), lat.size)
     encoded = interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T
     rgb = np.clip(mirrored_power(encoded, lat.gamma), 0.0, 1.0)
-    return (rgb @ to_xyz(lat).T).reshape(aces.shape)
+    return (rgb @ to_xyz(lat.view).T).reshape(aces.shape)
 
 
-def to_xyz(lat: AcesLattice) -> np.ndarray:
+def to_xyz(view: ACESView) -> np.ndarray:
     """Normalised limiting RGB (1 = the peak) to CIE XYZ, 1.0 = 100 cd/m² (with the white
     scaling of a white simulation)."""
-    t = views.tables(lat.view)
-    return t.limit_to_xyz * (lat.view.peak / 100.0) * t.display_scale
+    t = views.tables(view)
+    return t.limit_to_xyz * (view.peak / 100.0) * t.display_scale
 
 
 def ocio_file(lat: AcesLattice) -> bytes:
@@ -120,6 +119,9 @@ def ocio_file(lat: AcesLattice) -> bytes:
     cube = ocio.Lut3DTransform(gridSize=lat.size)
     cube.setInterpolation(ocio.INTERP_TETRAHEDRAL)
     cube.setData(np.ascontiguousarray(lat.cube, dtype=np.float32).ravel())
+    # Written as 16-bit integer codes (OCIO keeps six digits, 1.5e-6 of the range, and values
+    # beyond it): two thirds of the text of float32 values.
+    cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
     power = ocio.ExponentTransform(value=[lat.gamma] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_MIRROR)
     group = ocio.GroupTransform([log, cube, power])
     group.getFormatMetadata().setID(f"ocioforge:{file_name(lat.view)[:-4]}")
@@ -134,3 +136,42 @@ def file_name(view: ACESView) -> str:
     from generator.luts.names import slug
 
     return f"{slug(view.name)}_{ACES_LATTICE_SIZE}.clf"
+
+
+def _baked_file(view: ACESView) -> bytes:
+    return ocio_file(bake(view))
+
+
+class Bakes:
+    """The files of ACES 2.0 views baked in worker processes while the rest of a build goes
+    on (a 65³ bake and its text take about a second; a config may hold a dozen):
+    :meth:`file` waits for one. Forked workers inherit numpy's pinned settings, so the bytes
+    are those of a bake in this process."""
+
+    def __init__(self, views_to_bake) -> None:
+        import multiprocessing
+        import os
+        from concurrent.futures import ProcessPoolExecutor
+
+        unique = list(dict.fromkeys(views_to_bake))
+        self._pool = None
+        self._futures = {}
+        if unique:
+            workers = max(1, min(len(unique), os.cpu_count() or 1))
+            self._pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"))
+            self._futures = {view: self._pool.submit(_baked_file, view) for view in unique}
+
+    def file(self, view: ACESView) -> bytes:
+        """The CLF of ``view`` (baked here if it was not handed to a worker)."""
+        future = self._futures.get(view)
+        return future.result() if future is not None else _baked_file(view)
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(cancel_futures=True)
+            self._pool = None
+
+
+def upper(view: ACESView) -> float:
+    """The view's AP1 clamp, where its lattice's axis ends: the tone scale's forward limit."""
+    return float(views.tables(view).tone.forward_limit)

@@ -13,6 +13,7 @@ import PyOpenColorIO as ocio
 
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import settled
+from generator.luts.aces_lattice import Bakes
 from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
 from generator.ocio import curves
@@ -170,11 +171,12 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     return vt
 
 
-def aces_view_transform(spec: Spec, view, view_luts: dict) -> ocio.ViewTransform:
+def aces_view_transform(spec: Spec, view, view_luts: dict, bakes=None) -> ocio.ViewTransform:
     """The view transform of an ACES view (scene reference -> CIE XYZ-D65, as the studio
     configs'): OCIO's builtin where the target version has it, FixedFunction
     ACES_OUTPUT_TRANSFORM_20 for a custom display's own ACES 2.0 view, else its baked
-    lattice (:mod:`generator.luts.aces_lattice`), whose file joins ``view_luts``."""
+    lattice (:mod:`generator.luts.aces_lattice`), whose file (from ``bakes``, an
+    :class:`~generator.luts.aces_lattice.Bakes`, when given) joins ``view_luts``."""
     from generator.luts import aces_lattice
     from generator.ocio.capabilities import aces_analytic
     from generator.rendering import views
@@ -183,14 +185,13 @@ def aces_view_transform(spec: Spec, view, view_luts: dict) -> ocio.ViewTransform
     if aces_analytic(view.version, spec.ocio_version):
         steps += [ocio.BuiltinTransform(view.style)] if view.style else _aces2_fixed_function(view)
     else:
-        lat = aces_lattice.bake(view)
-        name = aces_lattice.file_name(view)
-        add_file(view_luts, name, aces_lattice.ocio_file(lat))
+        name, upper = aces_lattice.file_name(view), aces_lattice.upper(view)
+        add_file(view_luts, name, bakes.file(view) if bakes is not None else aces_lattice.ocio_file(aces_lattice.bake(view)))
         steps += [matrix_transform(views.tables(view).ap0_to_ap1),
-                  ocio.RangeTransform(minInValue=0.0, maxInValue=lat.upper, minOutValue=0.0, maxOutValue=lat.upper),
+                  ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
                   ocio.FileTransform(name, interpolation=ocio.INTERP_TETRAHEDRAL),
                   ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
-                  matrix_transform(aces_lattice.to_xyz(lat))]
+                  matrix_transform(aces_lattice.to_xyz(view))]
     family = f"ACES {view.version}"
     vt = ocio.ViewTransform(SCENE, name=view.name, family=family,
                             description=f"{view.name}: the Academy's output transform to CIE XYZ-D65 display light")
@@ -215,7 +216,15 @@ def _aces2_fixed_function(view) -> list:
             matrix_transform(t.limit_to_xyz * t.display_scale)]
 
 
-def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict) -> None:
+def baked_aces_views(spec: Spec) -> list:
+    """The ACES views ``spec``'s target version runs as baked lattices, each once, in order."""
+    from generator.ocio.capabilities import aces_analytic
+
+    found = (reference.aces_view_of(d, v) for d in spec.displays for v in d.views)
+    return list(dict.fromkeys(a for a in found if a is not None and not aces_analytic(a.version, spec.ocio_version)))
+
+
+def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict, aces_bakes=None) -> None:
     vt = ocio.ViewTransform(SCENE, name=COLORIMETRIC, family="Colorimetric",
                             description="Scene reference to CIE XYZ-D65, no tone or gamut mapping; displays clip per channel")
     vt.setTransform(matrix_transform(reference.scene_to_display_reference(spec)), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
@@ -230,7 +239,8 @@ def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict) -> None:
                 cfg.addDisplayView(display.name, view, COLORIMETRIC, display.name, "", "", "")
             elif reference.aces_view_of(display, view) is not None:
                 if view not in aces_added:
-                    cfg.addViewTransform(aces_view_transform(spec, reference.aces_view_of(display, view), view_luts))
+                    cfg.addViewTransform(aces_view_transform(spec, reference.aces_view_of(display, view), view_luts,
+                                                             aces_bakes))
                     aces_added.add(view)
                 cfg.addDisplayView(display.name, view, view, display.name, "", "", "")
             else:
@@ -277,6 +287,14 @@ def _file_rules(spec: Spec) -> ocio.FileRules:
 
 def emit(spec: Spec) -> Emitted:
     """The OCIO config for ``spec`` (validated) and the 1D LUTs it references."""
+    aces_bakes = Bakes(baked_aces_views(spec))  # in worker processes while the rest is emitted
+    try:
+        return _emit(spec, aces_bakes)
+    finally:
+        aces_bakes.close()
+
+
+def _emit(spec: Spec, aces_bakes: Bakes) -> Emitted:
     cfg = ocio.Config()
     cfg.setMajorVersion(spec.ocio_version[0])
     cfg.setMinorVersion(spec.ocio_version[1])
@@ -290,7 +308,7 @@ def emit(spec: Spec) -> Emitted:
     for display in spec.displays:
         cfg.addColorSpace(_display_space(spec, display, bakes))
     view_luts: dict[str, bytes] = {}
-    _views(spec, cfg, bakes, view_luts)
+    _views(spec, cfg, bakes, view_luts, aces_bakes)
     if spec.display_view_spaces:
         for space in _display_view_spaces(spec):
             cfg.addColorSpace(space)
