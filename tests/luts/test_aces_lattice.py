@@ -26,7 +26,7 @@ def test_ocio_runs_the_file_as_its_float64_evaluation():
         cfg.setSearchPath(folder)
         group = ocio.GroupTransform([*steps, ocio.FileTransform("v.clf", interpolation=ocio.INTERP_TETRAHEDRAL),
                                      ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
-                                     matrix_transform(aces_lattice.to_xyz(lat))])
+                                     matrix_transform(aces_lattice.to_xyz(view))])
         rgb = np.random.default_rng(3).random((4000, 3)) * np.array([[1.0], [8.0]]).repeat(2000, 0)
         out = rgb.astype(np.float32)
         cfg.getProcessor(group).getDefaultCPUProcessor().applyRGB(out)
