@@ -10,7 +10,7 @@ CONFIG := configs/ocioforge-studio
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[test]'
+	$(BIN)/pip install --quiet -e '.[test,dask]'
 	touch $(STAMP)
 
 run: $(STAMP)
@@ -27,6 +27,7 @@ bench: $(STAMP)
 	$(BIN)/python bench/lut_accuracy.py
 	$(BIN)/python bench/lut_bake.py
 	$(BIN)/python bench/aces_views.py
+	$(BIN)/python bench/convert.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache
