@@ -7,10 +7,12 @@ The view runs, in the config::
 
 where the clamp is the view's own AP1 clamp (upper: the tone scale's forward limit) and
 the CLF holds a Log shaper (``log2(x + toe)`` per channel, exact in every OCIO), a 3D
-table (tetrahedral) of the rendering's limiting RGB over its peak, mirrored-power encoded
-(sign(x)|x|^(1/gamma)), and the Exponent undoing that encoding. What is linear (the
-matrices) and what is a clamp stays outside the table, so the table holds the smooth
-part of the rendering unclamped. One file per view, whatever displays show it.
+table (tetrahedral) of the rendering's limiting RGB over its peak, encoded by a mirrored
+power with a linear toe (CLF's monCurve: sRGB's curve for SDR views), and the Exponent
+undoing that encoding. What is linear (the matrices) and what is a clamp stays outside the
+table, so the table holds the rendering unclamped; the toe keeps a channel crossing zero
+smooth, where a pure power's infinite slope was not (max 76 against 32 ten-bit codes on
+AP0 0..1). One file per view, whatever displays show it.
 """
 
 from __future__ import annotations
@@ -32,20 +34,25 @@ ACES_LATTICE_SIZE = 65
 #: the darkest decades keep nodes (bench/aces_views.py measured 2^-13 to 2^-10 alike).
 ACES_LATTICE_TOE = 2.0 ** -10
 
-#: The table's output encoding exponent: SDR code values follow about a 2.4 power; PQ's
-#: steeper toe takes 4.
-SDR_GAMMA, HDR_GAMMA = 2.4, 4.0
+#: The table's output encoding (gamma, offset of CLF's monCurve): sRGB's curve for SDR views;
+#: for HDR views a steeper power, as PQ is, whose toe measured best in ΔE ITP (bench/aces_views.py).
+SDR_CURVE, HDR_CURVE = (2.4, 0.055), (3.0, 0.02)
+
+#: The table's values are whole 16-bit codes of the encoded range, as the file holds them:
+#: 0.008 ten-bit codes at most, in two fifths of the text of float32 values.
+CODE_STEPS = 65535.0
 
 
 @dataclass(frozen=True)
 class AcesLattice:
     """A baked ACES 2.0 view: the table (n, n, n, 3) indexed [r, g, b] over the log axis of
-    AP1 in [0, ``upper``], holding ``sign(v)|v|^(1/gamma)`` of limiting RGB over the peak."""
+    AP1 in [0, ``upper``], holding the ``curve`` (gamma, offset) encoding of limiting RGB over
+    the peak."""
 
     view: ACESView
     upper: float
     toe: float
-    gamma: float
+    curve: tuple[float, float]
     cube: np.ndarray
 
     @property
@@ -70,22 +77,40 @@ def axis_value(u, upper: float, toe: float) -> np.ndarray:
     return np.exp2(np.asarray(u) * span + np.log2(toe)) - toe
 
 
-def mirrored_power(x, exponent: float) -> np.ndarray:
-    """sign(x)|x|^exponent, as CLF's basicMirror Exponent."""
-    x = np.asarray(x, dtype=np.float64)
-    return np.sign(x) * np.abs(x) ** exponent
+def _toe(gamma: float, offset: float) -> tuple[float, float]:
+    """Where CLF's monCurve (S-2014-006) turns from its line to its power (in code), and the
+    line's slope (linear per code)."""
+    code = offset / (gamma - 1.0)
+    return code, ((code + offset) / (1.0 + offset)) ** gamma / code
+
+
+def mon_decode(code, curve: tuple[float, float]) -> np.ndarray:
+    """Code to linear as CLF's monCurveMirrorFwd: ((c + offset) / (1 + offset))^gamma above its
+    break, a line below, mirrored for negative codes."""
+    gamma, offset = curve
+    brk, slope = _toe(gamma, offset)
+    c = np.abs(np.asarray(code, dtype=np.float64))
+    return np.sign(code) * np.where(c >= brk, ((c + offset) / (1.0 + offset)) ** gamma, c * slope)
+
+
+def mon_encode(linear, curve: tuple[float, float]) -> np.ndarray:
+    """Linear to code, :func:`mon_decode`'s inverse (CLF's monCurveMirrorRev)."""
+    gamma, offset = curve
+    brk, slope = _toe(gamma, offset)
+    x = np.abs(np.asarray(linear, dtype=np.float64))
+    return np.sign(linear) * np.where(x >= brk * slope, (1.0 + offset) * x ** (1.0 / gamma) - offset, x / slope)
 
 
 @lru_cache(maxsize=32)
 def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view``, sampled from the float64 reference."""
     t = views.tables(view)
-    gamma = HDR_GAMMA if view.is_hdr else SDR_GAMMA
+    curve = HDR_CURVE if view.is_hdr else SDR_CURVE
     axis = axis_value(np.linspace(0.0, 1.0, size), upper(view), ACES_LATTICE_TOE)
     ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
     rgb = views.output_rgb(view, ap1 @ t.ap1_to_ap0.T) / (view.peak / 100.0)
-    cube = mirrored_power(rgb, 1.0 / gamma).reshape(size, size, size, 3)
-    return AcesLattice(view, upper(view), ACES_LATTICE_TOE, gamma, cube)
+    cube = np.round(mon_encode(rgb, curve) * CODE_STEPS) / CODE_STEPS
+    return AcesLattice(view, upper(view), ACES_LATTICE_TOE, curve, cube.reshape(size, size, size, 3))
 
 
 def evaluate(lat: AcesLattice, aces) -> np.ndarray:
@@ -97,7 +122,7 @@ def evaluate(lat: AcesLattice, aces) -> np.ndarray:
     u = axis_coordinate(flat @ t.ap0_to_ap1.T, lat.upper, lat.toe)
     nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (lat.size - 1)), lat.size)
     encoded = interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T
-    rgb = np.clip(mirrored_power(encoded, lat.gamma), 0.0, 1.0)
+    rgb = np.clip(mon_decode(encoded, lat.curve), 0.0, 1.0)
     return (rgb @ to_xyz(lat.view).T).reshape(aces.shape)
 
 
@@ -109,7 +134,8 @@ def to_xyz(view: ACESView) -> np.ndarray:
 
 
 def ocio_file(lat: AcesLattice) -> bytes:
-    """The CLF of the lattice, written by PyOpenColorIO: Log shaper, LUT3D, Exponent."""
+    """The CLF of the lattice, written by PyOpenColorIO: Log shaper, LUT3D (16-bit codes),
+    Exponent (monCurveMirrorFwd)."""
     import PyOpenColorIO as ocio
 
     span = lat.span
@@ -122,12 +148,15 @@ def ocio_file(lat: AcesLattice) -> bytes:
     # Written as 16-bit integer codes (OCIO keeps six digits, 1.5e-6 of the range, and values
     # beyond it): two thirds of the text of float32 values.
     cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
-    power = ocio.ExponentTransform(value=[lat.gamma] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_MIRROR)
-    group = ocio.GroupTransform([log, cube, power])
+    gamma, offset = lat.curve
+    decode = ocio.ExponentWithLinearTransform(gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0],
+                                              negativeStyle=ocio.NEGATIVE_MIRROR)
+    group = ocio.GroupTransform([log, cube, decode])
     group.getFormatMetadata().setID(f"ocioforge:{file_name(lat.view)[:-4]}")
     group.getFormatMetadata().addChildElement(
         "Description", f"ocioforge ACES view LUT: {lat.view.name}; AP1 clamped to [0, {lat.upper:g}] to limiting "
-        f"RGB over the peak, {lat.size}^3 on a log2(x + {lat.toe:g}) axis, mirrored power {lat.gamma:g} undone.")
+        f"RGB over the peak, {lat.size}^3 on a log2(x + {lat.toe:g}) axis, encoded by a monCurve of gamma "
+        f"{lat.curve[0]:g} and offset {lat.curve[1]:g}, which the last operator undoes.")
     return group.write("Academy/ASC Common LUT Format", ocio.Config.CreateRaw()).encode("utf-8")
 
 
@@ -138,38 +167,9 @@ def file_name(view: ACESView) -> str:
     return f"{slug(view.name)}_{ACES_LATTICE_SIZE}.clf"
 
 
-def _baked_file(view: ACESView) -> bytes:
+def baked_file(view: ACESView) -> bytes:
+    """The CLF of ``view``'s lattice (what a build's workers bake)."""
     return ocio_file(bake(view))
-
-
-class Bakes:
-    """The files of ACES 2.0 views baked in worker processes while the rest of a build goes
-    on (a 65³ bake and its text take about a second; a config may hold a dozen):
-    :meth:`file` waits for one. Forked workers inherit numpy's pinned settings, so the bytes
-    are those of a bake in this process."""
-
-    def __init__(self, views_to_bake) -> None:
-        import multiprocessing
-        import os
-        from concurrent.futures import ProcessPoolExecutor
-
-        unique = list(dict.fromkeys(views_to_bake))
-        self._pool = None
-        self._futures = {}
-        if unique:
-            workers = max(1, min(len(unique), os.cpu_count() or 1))
-            self._pool = ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("fork"))
-            self._futures = {view: self._pool.submit(_baked_file, view) for view in unique}
-
-    def file(self, view: ACESView) -> bytes:
-        """The CLF of ``view`` (baked here if it was not handed to a worker)."""
-        future = self._futures.get(view)
-        return future.result() if future is not None else _baked_file(view)
-
-    def close(self) -> None:
-        if self._pool is not None:
-            self._pool.shutdown(cancel_futures=True)
-            self._pool = None
 
 
 def upper(view: ACESView) -> float:

@@ -13,7 +13,8 @@ import PyOpenColorIO as ocio
 
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import settled
-from generator.luts.aces_lattice import Bakes
+from generator.luts import aces_lattice
+from generator.luts.pool import Pool
 from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
 from generator.ocio import curves
@@ -136,7 +137,8 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
 INVERTED_AS_COLORIMETRIC = ("scale", "desaturate", "perceptual")
 
 
-def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict, view_luts: dict) -> ocio.ViewTransform:
+def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict, view_luts: dict,
+                           pool: Pool | None = None) -> ocio.ViewTransform:
     """Scene reference -> display RGB (1 = peak) -> gamut mapping -> CIE XYZ-D65.
 
     RGC is analytic (OCIO's FixedFunction ACES_GAMUT_COMP_13, in the display's RGB);
@@ -145,7 +147,7 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     exactly; for an HDR display (PQ, HLG, extended range) the file ends in display
     light and the display space encodes it."""
     from generator.luts import hsv
-    from generator.luts.view import bake_view_lut_cached, lut_steps
+    from generator.luts.view import lut_steps
 
     method = VIEW_METHODS[view]
     to_display = reference.normalised_display_matrix(spec, display)
@@ -155,7 +157,7 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
                  ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, spec.rgc.as_ocio_params()),
                  matrix_transform(to_xyz)]
     else:
-        lut = bake_view_lut_cached(spec, display, method)
+        lut = (pool or Pool()).result(("view", display.name, method), _view_file, spec, display, method)
         add_file(view_luts, lut.filename, lut.data)
         if lut.hsv:
             add_file(view_luts, hsv.SHARED_FILE, hsv.shared_clf())
@@ -171,13 +173,12 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     return vt
 
 
-def aces_view_transform(spec: Spec, view, view_luts: dict, bakes=None) -> ocio.ViewTransform:
+def aces_view_transform(spec: Spec, view, view_luts: dict | None = None) -> ocio.ViewTransform:
     """The view transform of an ACES view (scene reference -> CIE XYZ-D65, as the studio
     configs'): OCIO's builtin where the target version has it, FixedFunction
     ACES_OUTPUT_TRANSFORM_20 for a custom display's own ACES 2.0 view, else its baked
-    lattice (:mod:`generator.luts.aces_lattice`), whose file (from ``bakes``, an
-    :class:`~generator.luts.aces_lattice.Bakes`, when given) joins ``view_luts``."""
-    from generator.luts import aces_lattice
+    lattice (:mod:`generator.luts.aces_lattice`), whose file joins ``view_luts`` when given
+    (a build adds the files its workers bake at its end instead)."""
     from generator.ocio.capabilities import aces_analytic
     from generator.rendering import views
 
@@ -186,7 +187,8 @@ def aces_view_transform(spec: Spec, view, view_luts: dict, bakes=None) -> ocio.V
         steps += [ocio.BuiltinTransform(view.style)] if view.style else _aces2_fixed_function(view)
     else:
         name, upper = aces_lattice.file_name(view), aces_lattice.upper(view)
-        add_file(view_luts, name, bakes.file(view) if bakes is not None else aces_lattice.ocio_file(aces_lattice.bake(view)))
+        if view_luts is not None:
+            add_file(view_luts, name, aces_lattice.ocio_file(aces_lattice.bake(view)))
         steps += [matrix_transform(views.tables(view).ap0_to_ap1),
                   ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
                   ocio.FileTransform(name, interpolation=ocio.INTERP_TETRAHEDRAL),
@@ -224,7 +226,7 @@ def baked_aces_views(spec: Spec) -> list:
     return list(dict.fromkeys(a for a in found if a is not None and not aces_analytic(a.version, spec.ocio_version)))
 
 
-def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict, aces_bakes=None) -> None:
+def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict, pool: Pool | None = None) -> None:
     vt = ocio.ViewTransform(SCENE, name=COLORIMETRIC, family="Colorimetric",
                             description="Scene reference to CIE XYZ-D65, no tone or gamut mapping; displays clip per channel")
     vt.setTransform(matrix_transform(reference.scene_to_display_reference(spec)), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
@@ -239,12 +241,11 @@ def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict, aces_bake
                 cfg.addDisplayView(display.name, view, COLORIMETRIC, display.name, "", "", "")
             elif reference.aces_view_of(display, view) is not None:
                 if view not in aces_added:
-                    cfg.addViewTransform(aces_view_transform(spec, reference.aces_view_of(display, view), view_luts,
-                                                             aces_bakes))
+                    cfg.addViewTransform(aces_view_transform(spec, reference.aces_view_of(display, view)))
                     aces_added.add(view)
                 cfg.addDisplayView(display.name, view, view, display.name, "", "", "")
             else:
-                mapped = _mapped_view_transform(spec, display, view, bakes, view_luts)
+                mapped = _mapped_view_transform(spec, display, view, bakes, view_luts, pool)
                 cfg.addViewTransform(mapped)
                 cfg.addDisplayView(display.name, view, mapped.getName(), display.name, "", "", "")
     cfg.setActiveDisplays(", ".join(d.name for d in spec.displays))
@@ -287,14 +288,57 @@ def _file_rules(spec: Spec) -> ocio.FileRules:
 
 def emit(spec: Spec) -> Emitted:
     """The OCIO config for ``spec`` (validated) and the 1D LUTs it references."""
-    aces_bakes = Bakes(baked_aces_views(spec))  # in worker processes while the rest is emitted
-    try:
-        return _emit(spec, aces_bakes)
-    finally:
-        aces_bakes.close()
+    with Pool() as pool:
+        _submit_bakes(spec, pool)  # the view files, in workers while the spaces are emitted
+        try:
+            return _emit(spec, pool)
+        finally:
+            _BUILDING.remove(spec)
 
 
-def _emit(spec: Spec, aces_bakes: Bakes) -> Emitted:
+def _baked_methods(spec: Spec) -> list[tuple[Display, str]]:
+    """Each display and gamut-mapping method whose view is a baked file, in config order."""
+    return [(d, VIEW_METHODS[v]) for d in spec.displays for v in d.views if VIEW_METHODS.get(v) not in (None, "clip", "rgc")]
+
+
+#: The spec a build's forked workers bake from (a spec holds functions, which do not pickle:
+#: the workers find it here, as it was when they were forked).
+_BUILDING: list[Spec] = []
+
+
+@dataclass(frozen=True)
+class _ViewFile:
+    """What the config needs of a gamut-mapping view's baked file."""
+
+    filename: str
+    data: bytes
+    matrix: tuple
+    light: bool
+    hsv: bool
+
+
+def _view_file(spec: Spec, display: Display, method: str) -> _ViewFile:
+    from generator.luts.view import bake_view_lut_cached
+
+    lut = bake_view_lut_cached(spec, display, method)
+    return _ViewFile(lut.filename, lut.data, lut.matrix, lut.light, lut.hsv)
+
+
+def _worker_view_file(index: int, method: str) -> _ViewFile:
+    spec = _BUILDING[-1]
+    return _view_file(spec, spec.displays[index], method)
+
+
+def _submit_bakes(spec: Spec, pool: Pool) -> None:
+    """Hand every view file of ``spec``'s config to ``pool``: the ACES 2.0 lattices, heaviest, first."""
+    _BUILDING.append(spec)
+    for view in baked_aces_views(spec):
+        pool.submit(("aces", view), aces_lattice.baked_file, view)
+    for display, method in _baked_methods(spec):
+        pool.submit(("view", display.name, method), _worker_view_file, spec.displays.index(display), method)
+
+
+def _emit(spec: Spec, pool: Pool) -> Emitted:
     cfg = ocio.Config()
     cfg.setMajorVersion(spec.ocio_version[0])
     cfg.setMinorVersion(spec.ocio_version[1])
@@ -308,7 +352,7 @@ def _emit(spec: Spec, aces_bakes: Bakes) -> Emitted:
     for display in spec.displays:
         cfg.addColorSpace(_display_space(spec, display, bakes))
     view_luts: dict[str, bytes] = {}
-    _views(spec, cfg, bakes, view_luts, aces_bakes)
+    _views(spec, cfg, bakes, view_luts, pool)
     if spec.display_view_spaces:
         for space in _display_view_spaces(spec):
             cfg.addColorSpace(space)
@@ -318,4 +362,6 @@ def _emit(spec: Spec, aces_bakes: Bakes) -> Emitted:
     if spec.inactive:
         cfg.setInactiveColorSpaces(", ".join(spec.inactive))
     cfg.validate()
+    for view in baked_aces_views(spec):
+        add_file(view_luts, aces_lattice.file_name(view), pool.result(("aces", view), aces_lattice.baked_file, view))
     return Emitted(cfg, dict(sorted(bakes.items())), dict(sorted(view_luts.items())))

@@ -1,0 +1,49 @@
+"""Baking a build's view files in worker processes while the build goes on.
+
+A config's view files (gamut-mapping lattices, ACES 2.0 lattices) are pure functions of the
+spec: a build submits them all first, emits its colour spaces meanwhile and collects each
+file where it writes it. Workers are forked, so they inherit numpy's pinned settings and
+the modules already loaded: their bytes are those of a bake in the build's own process.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+from concurrent.futures import Future, ProcessPoolExecutor
+from typing import Callable, Hashable
+
+
+class Pool:
+    """Pure bakes by key: :meth:`submit` hands one to a worker, :meth:`result` waits for it
+    (or, for a key never submitted, calls the function here)."""
+
+    def __init__(self, workers: int | None = None) -> None:
+        self._workers = workers or os.cpu_count() or 1
+        self._executor: ProcessPoolExecutor | None = None
+        self._futures: dict[Hashable, Future] = {}
+
+    def submit(self, key: Hashable, fn: Callable, *args) -> None:
+        """Start ``fn(*args)`` in a worker, once per ``key``."""
+        if key in self._futures:
+            return
+        if self._executor is None:
+            self._executor = ProcessPoolExecutor(self._workers, mp_context=multiprocessing.get_context("fork"))
+        self._futures[key] = self._executor.submit(fn, *args)
+
+    def result(self, key: Hashable, fn: Callable, *args):
+        """The result of the bake submitted as ``key``, else ``fn(*args)`` computed here."""
+        future = self._futures.get(key)
+        return future.result() if future is not None else fn(*args)
+
+    def close(self) -> None:
+        """Stop the workers (a bake still running is cancelled)."""
+        if self._executor is not None:
+            self._executor.shutdown(cancel_futures=True)
+            self._executor = None
+
+    def __enter__(self) -> "Pool":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
