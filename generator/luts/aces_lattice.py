@@ -113,16 +113,21 @@ def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     return AcesLattice(view, upper(view), ACES_LATTICE_TOE, curve, cube.reshape(size, size, size, 3))
 
 
+def file_output(lat: AcesLattice, ap1) -> np.ndarray:
+    """The file alone, in float64: AP1 (m, 3; clamped to [0, upper] as the config does before
+    it) to limiting RGB over the peak, unclamped."""
+    u = axis_coordinate(np.asarray(ap1, dtype=np.float64), lat.upper, lat.toe)
+    nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (lat.size - 1)), lat.size)
+    return mon_decode(interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T, lat.curve)
+
+
 def evaluate(lat: AcesLattice, aces) -> np.ndarray:
     """ACES2065-1 (..., 3) through the baked view as OCIO runs it, in float64: CIE XYZ,
     1.0 = 100 cd/m² (the display then encodes)."""
     t = views.tables(lat.view)
     aces = np.asarray(aces, dtype=np.float64)
     flat = np.nan_to_num(aces.reshape(-1, 3), nan=0.0)
-    u = axis_coordinate(flat @ t.ap0_to_ap1.T, lat.upper, lat.toe)
-    nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (lat.size - 1)), lat.size)
-    encoded = interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T
-    rgb = np.clip(mon_decode(encoded, lat.curve), 0.0, 1.0)
+    rgb = np.clip(file_output(lat, flat @ t.ap0_to_ap1.T), 0.0, 1.0)
     return (rgb @ to_xyz(lat.view).T).reshape(aces.shape)
 
 

@@ -361,7 +361,8 @@ def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
     if LUT in kinds:
         from generator.verify import lut_checks  # it builds on this module
 
-        out += lut_checks.lut_checks(spec, sizes) + lut_checks.view_lut_checks(spec, scene, sizes)
+        out += (lut_checks.lut_checks(spec, sizes) + lut_checks.view_lut_checks(spec, scene, sizes)
+                + lut_checks.aces_lut_checks(spec, sizes))
     return out
 
 

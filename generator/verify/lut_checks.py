@@ -84,6 +84,32 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
     return out
 
 
+def aces_lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
+    """Every baked ACES 2.0 file (AP1, clamped, to limiting RGB over the peak) against its
+    float64 evaluation: on the axis's nodes and between them on greys and on each channel
+    alone, and on random AP1 colours along the axis."""
+    from generator.luts import aces_lattice
+    from generator.ocio.emit import LUT_FOLDER, baked_aces_views
+
+    out = []
+    for view in baked_aces_views(spec):
+        lat = aces_lattice.bake(view)
+        halves = np.arange(2 * (lat.size - 1) + 1) / (2.0 * (lat.size - 1))
+        axis = aces_lattice.axis_value(halves, lat.upper, lat.toe)
+        single = np.zeros((3, axis.size, 3))
+        for channel in range(3):
+            single[channel, :, channel] = axis
+        rng = np.random.default_rng(21)
+        random = aces_lattice.axis_value(rng.random((sizes.random, 3)), lat.upper, lat.toe)
+        inputs = Probes((Family("AP1 greys on and between nodes", np.repeat(axis[:, None], 3, axis=1)),
+                         Family("AP1 single channels", single.reshape(-1, 3)), Family("AP1 random", random)))
+        name = f"{LUT_FOLDER}/{aces_lattice.file_name(view)}"
+        out.append(Check(LUT, name, src=view.name, lut=name, interpolation="tetrahedral", probes=inputs,
+                         expected=aces_lattice.file_output(lat, inputs.values), output=paths.LINEAR,
+                         tolerance=tolerances.ACES_LATTICE_FILE_RELATIVE))
+    return out
+
+
 def _output_table_greys(spec: Spec, display: Display, method: str) -> tuple[Family, ...]:
     """Greys reading every entry of a view file's output table (a :class:`~generator.luts.axes.
     LogAxis` lattice's 1D table from the mapped grey's coordinate to its code) and the middle
