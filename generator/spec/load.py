@@ -60,9 +60,12 @@ DEFAULT_VIEWS = ("Colorimetric", "Desaturate", "Perceptual", "Scale", "RGC", "Ra
 DEFAULT_HDR_VIEWS = ("Colorimetric", "Scale", "RGC", "Raw")
 
 
-def default_views(encoding: str) -> tuple[str, ...]:
-    """The views a display of ``encoding`` offers when its spec names none."""
-    return DEFAULT_VIEWS if encoding == "sdr-video" else DEFAULT_HDR_VIEWS
+def default_views(encoding: str, name: str = "") -> tuple[str, ...]:
+    """The views a display of ``encoding`` offers when its spec names none: a library display
+    (``name``) first the ACES views the ACES studio configs give it, its ACES 2.0 view the
+    default, and Un-tone-mapped, as there."""
+    studio = (*aces_views.STUDIO_VIEWS[name], *COLORIMETRIC_ALIASES) if name in aces_views.STUDIO_VIEWS else ()
+    return studio + (DEFAULT_VIEWS if encoding == "sdr-video" else DEFAULT_HDR_VIEWS)
 
 
 #: Roles a config must set so hosts load it without warnings, with their default targets.
@@ -401,7 +404,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                             "another name with gamut (or primaries) and eotf")
         d = known[name.lower()]
         gamut = gamuts()[d.gamut]
-        views = _aces(views or default_views(d.encoding), d.name, gamut, d.peak, d.encoding != "sdr-video",
+        views = _aces(views or default_views(d.encoding, d.name), d.name, gamut, d.peak, d.encoding != "sdr-video",
                       source, field)
         return Display(d.name, gamut, CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
