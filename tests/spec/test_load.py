@@ -174,6 +174,20 @@ def test_a_custom_spaces_encoding_follows_its_transfer_unless_given(transfer, en
     ("[rgc]\nlimits = [1.5, 1.4]", "rgc.limits", "expected three numbers [cyan, magenta, yellow]"),
     ("[rgc]\nlimit = 1.5", "rgc.limit", "allowed: limits, thresholds, power"),
     ("rgc = 3", "rgc", "expected a table"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['ACES 2.0 - HDR 1000 nits (P3 D65)']", "display[0].views[0]",
+     "cannot show 'ACES 2.0 - HDR 1000 nits (P3 D65)': it is an HDR view"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['ACES 2.0 - SDR 100 nits (P3 D65)']", "display[0].views[0]",
+     "limiting red and green primaries lie outside the display's gamut"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['ACES 2.0 - SDR 100 nits (Rec.7090)']", "display[0].views[0]",
+     "unknown ACES view 'ACES 2.0 - SDR 100 nits (Rec.7090)'"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['ACES 9']", "display[0].views[0]", "unknown view 'ACES 9'"),
+    ("[[display]]\nname = 'sRGB - Display'\nviews = ['ACES 2.0', 'ACES 2.0 - SDR 100 nits (Rec.709)']",
+     "display[0].views[1]", "listed twice"),
+    ("[[display]]\nname = 'Dim'\ngamut = 'Rec.709'\neotf = 'Gamma 2.4'\nabsolute_luminance = true\n"
+     "peak_luminance = 48\nviews = ['ACES 2.0']", "display[0].views[0]",
+     "own ACES 2.0 view cannot be made: peak_luminance must be a whole number"),
+    ("[[display]]\nname = 'Swapped'\nprimaries = [[0.15, 0.06], [0.3, 0.6], [0.64, 0.33]]\nwhite = 'D65'\n"
+     "eotf = 'ST 2084'\nviews = ['ACES 2.0']", "display[0].views[0]", "limiting_primaries must be red, green and blue"),
 ])
 def test_bad_specs_name_the_field_and_what_is_allowed(text, field, words):
     with pytest.raises(SpecError) as error:
