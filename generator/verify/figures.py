@@ -62,12 +62,21 @@ def _triangle(axes, primaries, label: str, colour=None, style="-") -> None:
 
 
 def _mapped(spec: Spec, display: Display, scene: np.ndarray) -> dict[str, np.ndarray]:
-    """Display-linear RGB of ``scene`` colours after each mapping method, in [0, 1] of peak."""
+    """Display-linear RGB of ``scene`` colours after each mapping method and each ACES view
+    the display offers, in [0, 1] of peak."""
     from generator.gamut import METHODS, DisplayGamut
+    from generator.rendering import views
 
     gamut = DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
     linear = apply_matrix(reference.display_matrix(spec, display) @ reference.scene_to_display_reference(spec), scene)
-    return {name: method(linear / display.clip_high, gamut) for name, method in METHODS.items()}
+    out = {name: method(linear / display.clip_high, gamut) for name, method in METHODS.items()}
+    aces = apply_matrix(reference.to_aces_matrix(spec), scene)
+    for name in display.views:
+        view = reference.aces_view_of(display, name)
+        if view is not None:
+            shown = apply_matrix(reference.display_matrix(spec, display), views.evaluate(view, aces))
+            out[name] = np.clip(shown / display.clip_high, 0.0, 1.0)
+    return out
 
 
 def chromaticity(spec: Spec, display: Display | None = None, spaces: bool = False):
@@ -91,7 +100,7 @@ def chromaticity(spec: Spec, display: Display | None = None, spaces: bool = Fals
         axes.scatter(source[:, 0], source[:, 1], s=8, c="black", label="probe colours")
         for index, (name, rgb) in enumerate(_mapped(spec, display, scene).items()):
             xy = _xy(apply_matrix(display.gamut.rgb_to_xyz, rgb))
-            axes.scatter(xy[:, 0], xy[:, 1], s=10, marker="osD^v"[index % 5], label=f"{name} on {display.name}")
+            axes.scatter(xy[:, 0], xy[:, 1], s=10, marker="osD^vP*Xph"[index % 10], label=f"{name} on {display.name}")
     axes.set_xlim(-0.1, 0.9)
     axes.set_ylim(-0.1, 0.95)
     axes.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7)
