@@ -1,4 +1,4 @@
-"""ocioforge list: the library's colour spaces, displays and curves."""
+"""ocioforge list: the library's colour spaces, displays, curves and ACES views."""
 
 from __future__ import annotations
 
@@ -16,6 +16,11 @@ def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
     if what == "displays":
         return (("display", "gamut", "EOTF", "peak cd/m²", "aliases"),
                 [(d.name, d.gamut, d.eotf, f"{d.peak:g}", ", ".join(d.aliases)) for d in library.DISPLAYS])
+    if what == "views":
+        from generator.rendering.views import catalogue
+
+        return (("ACES view", "ACES", "peak cd/m²", "OCIO builtin"),
+                [(v.name, v.version, f"{v.peak:g}", v.style.rsplit(" - ", 1)[-1]) for v in catalogue().values()])
     if what == "curves":
         from generator.colorimetry.curves import CURVES
 
@@ -24,18 +29,20 @@ def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
             [(s.name, s.family, s.gamut or "-", s.curve, ", ".join(s.aliases)) for s in library.SPACES])
 
 
-@click.command(cls=Command, help="List the library's colour spaces (default), displays or curves; piped, one tab-separated "
-                    "line per row.")
+@click.command(cls=Command, help="List the library's colour spaces (default), displays, curves or ACES views; piped, "
+                    "one tab-separated line per row.")
 @click.option("--displays", is_flag=True, help="List displays.")
 @click.option("--curves", is_flag=True, help="List transfer functions.")
+@click.option("--views", is_flag=True, help="List the ACES views a display's views may name.")
 @click.option("--spaces", is_flag=True, help="List colour spaces (the default).")
-def command(displays, curves, spaces):
+def command(displays, curves, views, spaces):
     from generator.spec.schema import SpecError
 
-    chosen = [name for name, given in (("spaces", spaces), ("displays", displays), ("curves", curves)) if given]
+    given = (("spaces", spaces), ("displays", displays), ("curves", curves), ("views", views))
+    chosen = [name for name, flag in given if flag]
     if len(chosen) > 1:
         raise SpecError("ocioforge list", f"--{chosen[1]}", f"given with --{chosen[0]}; allowed: one of --spaces, "
-                        "--displays, --curves")
+                        "--displays, --curves, --views")
     header, rows = _rows(chosen[0] if chosen else "spaces")
     if not sys.stdout.isatty():  # piped (grep, a script): never wrapped
         for row in (header, *rows):

@@ -108,7 +108,7 @@ def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     curve = HDR_CURVE if view.is_hdr else SDR_CURVE
     axis = axis_value(np.linspace(0.0, 1.0, size), upper(view), ACES_LATTICE_TOE)
     ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
-    rgb = views.output_rgb(view, ap1 @ t.ap1_to_ap0.T) / (view.peak / 100.0)
+    rgb = views.output_rgb(view, ap1 @ t.ap1_to_ap0.T) / (view.render_peak / 100.0)
     cube = np.round(mon_encode(rgb, curve) * CODE_STEPS) / CODE_STEPS
     return AcesLattice(view, upper(view), ACES_LATTICE_TOE, curve, cube.reshape(size, size, size, 3))
 
@@ -135,7 +135,7 @@ def to_xyz(view: ACESView) -> np.ndarray:
     """Normalised limiting RGB (1 = the peak) to CIE XYZ, 1.0 = 100 cd/m² (with the white
     scaling of a white simulation)."""
     t = views.tables(view)
-    return t.limit_to_xyz * (view.peak / 100.0) * t.display_scale
+    return t.limit_to_xyz * (view.render_peak / 100.0) * t.display_scale
 
 
 def ocio_file(lat: AcesLattice) -> bytes:

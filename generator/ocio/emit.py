@@ -208,8 +208,8 @@ def _aces2_fixed_function(view) -> list:
     from generator.rendering import views
 
     t = views.tables(view)
-    upper, peak = float(t.tone.forward_limit), view.peak / 100.0
-    params = [view.peak, *np.ravel(view.limiting), *view.white]
+    upper, peak = float(t.tone.forward_limit), view.render_peak / 100.0
+    params = [view.render_peak, *np.ravel(view.limiting), *view.white]
     return [matrix_transform(t.ap0_to_ap1),
             ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
             matrix_transform(t.ap1_to_ap0),

@@ -29,7 +29,8 @@ OWN_ACES2 = "ACES 2.0"
 @dataclass(frozen=True)
 class ACESView:
     """An ACES view: its name, ACES version ("2.0" or "1.3"), OCIO builtin style ("" for a
-    custom display's own view), peak luminance (cd/m²), limiting primaries and white (xy)."""
+    custom display's own view), peak luminance (cd/m²: as named; the cinema presets render at
+    a higher peak, scaled), limiting primaries and white (xy)."""
 
     name: str
     version: str
@@ -38,6 +39,11 @@ class ACESView:
     limiting: tuple[tuple[float, float], ...]
     white: tuple[float, float]
     params: ACES2Params | None = None
+
+    @property
+    def render_peak(self) -> float:
+        """An ACES 2.0 view's rendering peak (cd/m²), its limiting RGB's largest value times 100."""
+        return float(self.params.peak_luminance)
 
     @property
     def is_hdr(self) -> bool:
@@ -68,7 +74,7 @@ def catalogue() -> dict[str, ACESView]:
     out = {}
     for name, preset in PRESETS.items():
         p = preset.params
-        out[name] = ACESView(name, "2.0", preset.style, float(p.peak_luminance), tuple(p.limiting_primaries),
+        out[name] = ACESView(name, "2.0", preset.style, float(p.peak_luminance * p.linear_scale), tuple(p.limiting_primaries),
                              tuple(p.limiting_white), p)
     for name, preset in aces13.PRESETS13.items():
         limiting, white = _limit13(preset)

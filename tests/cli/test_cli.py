@@ -315,6 +315,9 @@ def test_info_and_list(capsys):
     assert "Rec.2100-PQ - Display" in out
     _, out, _ = run(capsys, "list", "--curves")
     assert "LogCamera" in out and "T-LogE" in out
+    _, out, _ = run(capsys, "list", "--views")
+    assert "ACES 2.0 - HDR 108 nits (P3 D65)\t2.0\t108\tHDR-108nit-P3-D65_2.0" in out
+    assert "ACES 1.1 - HDR Cinema (108 nits & P3 lim)\t1.3\t108" in out
 
 
 def test_list_piped_gives_one_unwrapped_line_a_row(capsys):
