@@ -18,24 +18,12 @@ from generator.rendering import aces13_rrt as rrt
 from generator.rendering.aces13 import PRESETS13, forward13, inverse13
 from generator.rendering.aces13_odt import ODT_48NITS_SPLINE
 from generator.rendering.aces13_spline import spline_forward
+from tests.rendering.aces2_cases import builtin, ocio_apply
 
 STUDIO = "ocio://studio-config-v2.2.0_aces-v1.3_ocio-v2.4"
 CAMERAS = ("ARRI Wide Gamut 3", "S-Gamut3")
 EXPOSURES = (0.01, 0.05, 0.18, 0.5, 1.0, 2.0, 8.0)
 
-
-def ocio_apply(transform, colours) -> np.ndarray:
-    """``colours`` (..., 3) through an OCIO transform on the CPU (float32), back in float64."""
-    cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
-    pixels = np.ascontiguousarray(colours, dtype=np.float32).reshape(-1, 3).copy()
-    cpu.applyRGB(pixels)
-    return pixels.astype(np.float64).reshape(np.shape(colours))
-
-
-def builtin(style: str, inverse: bool = False) -> ocio.BuiltinTransform:
-    transform = ocio.BuiltinTransform(style)
-    transform.setDirection(ocio.TRANSFORM_DIR_INVERSE if inverse else ocio.TRANSFORM_DIR_FORWARD)
-    return transform
 
 
 def cube_edges(samples: int = 33) -> np.ndarray:
