@@ -30,6 +30,9 @@ DEFAULT_METHOD = "scale"
 
 DEFAULT_SIZE = 33
 
+#: Nodes a side of an ACES view's lattice by default: the plain recipe's (bench/aces_views.py).
+ACES_SIZE = 65
+
 
 @dataclass(frozen=True)
 class Format:
@@ -66,6 +69,8 @@ class Request:
     fmt: str
     size: int
     shaper: str | ColourSpace
+    #: An ACES view (:class:`~generator.rendering.views.ACESView`) baked instead of a gamut mapping.
+    view: object | None = None
 
 
 def find_display(spec: Spec, name: str, field: str) -> Display:
@@ -127,15 +132,18 @@ def format_for(fmt: str | None, output: str) -> str:
     return fmt
 
 
-def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: int, shaper: str = "auto") -> Request:
-    """Validate a bake's parameters (SpecError naming the option otherwise)."""
+def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: int, shaper: str = "auto",
+            view: str | None = None) -> Request:
+    """Validate a bake's parameters (SpecError naming the option otherwise). With ``view`` (an
+    ACES view's name) the bake is that view and ``method`` is not used."""
     from generator.gamut import METHODS
 
     if fmt not in FORMATS:
         raise SpecError(WHERE, "--format", f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
-    if method not in METHODS:
+    if view is None and method not in METHODS:
         raise SpecError(WHERE, "--gamut-map", f"unknown method {method!r}; allowed: {', '.join(METHODS)}")
     src, dst = find_source(spec, source, "--from"), find_display(spec, display, "--to")
+    aces = None if view is None else find_view(dst, view)
     chosen: str | ColourSpace = shaper.lower() if shaper.lower() in SHAPER_KEYWORDS else shaper
     if chosen not in SHAPER_KEYWORDS:
         if not FORMATS[fmt].shaper:
@@ -143,10 +151,56 @@ def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: 
         chosen = _shaper_space(spec, shaper)
     _refuse_linear_without_shaper(src, fmt, chosen)
     top = FORMATS[fmt].max_size
-    smallest = _smallest_size(spec, dst, src, method, fmt, chosen)
+    smallest = ACES_SMALLEST if aces is not None else _smallest_size(spec, dst, src, method, fmt, chosen)
     if not smallest <= size <= top:
         raise SpecError(WHERE, "--size", f"{size} is outside what {fmt} allows here: {smallest} to {top}")
-    return Request(spec, src, dst, method, fmt, size, chosen)
+    return Request(spec, src, dst, aces.name if aces is not None else method, fmt, size, chosen, aces)
+
+
+#: Fewest nodes a side of an ACES view's lattice (its source layout puts 0 on a node with two
+#: intervals above it at least).
+ACES_SMALLEST = 4
+
+
+def find_view(display: Display, name: str):
+    """The ACES view called ``name`` that ``display`` can show (SpecError naming ``--view``
+    otherwise): a studio view, or the display's own ACES 2.0 view; "ACES 2.0" is the display's
+    first ACES 2.0 studio view, or its own."""
+    from generator.colorimetry import reference
+    from generator.rendering import views
+
+    shown = [v for v in (*views.catalogue(), _own_name(display)) if v and _shows(display, v)]
+    if name == views.OWN_ACES2:
+        studio = [v for v in views.STUDIO_VIEWS.get(display.name, ()) if v.startswith(views.OWN_ACES2 + " - ")]
+        name = studio[0] if studio else _own_name(display) or name
+    found = reference.aces_view_of(display, name)
+    if found is None:
+        raise SpecError(WHERE, "--view", f"unknown ACES view {name!r} for {display.name!r}; allowed: "
+                        f"{views.OWN_ACES2!r} or one it can show: {', '.join(shown)}")
+    why = views.cannot_show(found, display.gamut.primaries, display.peak, display.is_hdr or display.absolute)
+    if why:
+        raise SpecError(WHERE, "--view", f"{display.name!r} cannot show {name!r}: {why}; allowed: "
+                        f"{', '.join(shown)}")
+    return found
+
+
+def _own_name(display: Display) -> str:
+    """The display's own ACES 2.0 view's name ("" where the algorithm cannot take the display)."""
+    from generator.rendering import views
+
+    try:
+        return views.own_view(display.name, display.peak, display.gamut.primaries, display.gamut.whitepoint).name
+    except ValueError:
+        return ""
+
+
+def _shows(display: Display, name: str) -> bool:
+    from generator.colorimetry import reference
+    from generator.rendering import views
+
+    found = reference.aces_view_of(display, name)
+    return found is not None and not views.cannot_show(found, display.gamut.primaries, display.peak,
+                                                       display.is_hdr or display.absolute)
 
 
 #: ``--shaper`` words that name no colour space (matched in any case, before space names).
@@ -202,6 +256,13 @@ def _smallest_size(spec: Spec, display: Display, source: ColourSpace, method: st
 
 
 def build_lattice(req: Request) -> lattice.Lattice:
+    if req.view is not None:
+        from generator.luts import aces_bake
+
+        if req.fmt == "clf" and req.shaper == "auto":
+            return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size)
+        shaper = "none" if not FORMATS[req.fmt].shaper else req.shaper
+        return aces_bake.source_lattice(req.spec, req.source, req.display, req.view, req.size, shaper)
     if req.fmt == "clf" and req.shaper == "auto":
         return lattice.display_lattice(req.spec, req.display, req.method, req.size, source=req.source)
     shaper = "none" if not FORMATS[req.fmt].shaper else req.shaper
@@ -209,6 +270,8 @@ def build_lattice(req: Request) -> lattice.Lattice:
 
 
 def describe(req: Request) -> str:
+    if req.view is not None:
+        return f"{req.source.name} to {req.display.name}, view {req.view.name}, {req.size}^3 lattice"
     return f"{req.source.name} to {req.display.name}, gamut mapping {req.method}, {req.size}^3 lattice"
 
 
@@ -216,6 +279,10 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     """Comment lines: what the file does and what its input is."""
     from generator.colorimetry import reference
 
+    if req.view is not None:
+        from generator.luts import aces_bake
+
+        return [f"ocioforge: {describe(req)}.", *aces_bake.notes(req.spec, lat, req.view, req.shaper)]
     lo, hi = lat.domain
     top = float(reference.display_encode(req.display, np.full(3, req.display.clip_high))[0])
     output = f"Output: {req.display.name} code values (full range, 0 to {top:.6g})."
@@ -259,7 +326,7 @@ def bake(req: Request) -> dict[str, bytes]:
 def identifier(req: Request) -> str:
     from generator.luts.names import slug
 
-    return f"ocioforge:{slug(req.source.name)}_to_{slug(req.display.name)}_{req.method}_{req.size}"
+    return f"ocioforge:{slug(req.source.name)}_to_{slug(req.display.name)}_{slug(req.method)}_{req.size}"
 
 
 def _beside(output: str | Path) -> Path:

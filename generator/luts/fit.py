@@ -115,15 +115,16 @@ def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
                    weights[:, touching] * ~reached[:, touching], rest)
 
 
-def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
+def reweighted_fit(lat: Lattice, colours: dict, zero: int | None, rtol: float = FIT_RTOL) -> np.ndarray:
     """:func:`fit` with each set's weight (:data:`FIT_IN_GAMUT_WEIGHT` for in-gamut
     colours, 1 for the others), then :data:`FIT_REWEIGHTS` times with every colour's
     weight scaled by its error in the probes' metric (ten-bit codes, ΔE ITP for HDR)
-    relative to its set's 99th percentile (see :data:`FIT_REWEIGHT_FLOOR`)."""
+    relative to its set's 99th percentile (see :data:`FIT_REWEIGHT_FLOOR`); ``rtol`` as
+    :func:`fit`'s."""
     base = {name: np.full(len(code), FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
             for name, (code, _) in colours.items()}
     system = _system(lat, colours, zero)
-    cube = fit(lat, colours, zero, base, system)
+    cube = fit(lat, colours, zero, base, system, rtol)
     for _ in range(FIT_REWEIGHTS):
         actual = solve.interpolate(system.nodes, system.weights, np.ascontiguousarray(cube.reshape(-1, 3).T))
         weights = {}
@@ -133,7 +134,7 @@ def reweighted_fit(lat: Lattice, colours: dict, zero: int | None) -> np.ndarray:
             u = np.minimum(error / max(_percentile_99(error) if error.size else 1.0, 1e-12), 2 * FIT_REWEIGHT_CUTOFF)
             scale = np.where(u > FIT_REWEIGHT_CUTOFF, FIT_REWEIGHT_TAIL, FIT_REWEIGHT_FLOOR + u**2)
             weights[name] = base[name] * scale
-        cube = fit(lat, colours, zero, weights, system)
+        cube = fit(lat, colours, zero, weights, system, rtol)
     return cube
 
 
@@ -160,13 +161,15 @@ def _kept(size: int, zero: int | None) -> np.ndarray:
     return kept
 
 
-def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _System | None = None) -> np.ndarray:
+def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _System | None = None,
+        rtol: float = FIT_RTOL) -> np.ndarray:
     """Node values minimising the weighted squared error of tetrahedral interpolation
     on ``colours`` (set name to (input values, expected codes); ``weights``, set name
     to a weight per colour; ``system``, :func:`_system` if already built), plus
     :data:`FIT_REGULARISATION` times the squared change of each node. The
     diagonal's nodes (greys) and, with ``zero``, the nodes of a zero channel are
-    kept at their sampled values; the others solve the normal equations."""
+    kept at their sampled values; the others solve the normal equations, to a residual of
+    ``rtol`` (:data:`FIT_RTOL`) relative to the right-hand side."""
     system = system or _system(lat, colours, zero)
     scale = np.sqrt(np.concatenate([weights[name] for name in system.sets]))
     free, columns, unknown = system.free * scale, system.columns, system.unknown
@@ -184,6 +187,6 @@ def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _S
         return solve.accumulate(columns, free, solve.interpolate(columns, free, v), count) + FIT_REGULARISATION * v
 
     values = start.copy()
-    values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, FIT_RTOL * whole,
+    values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, rtol * whole,
                                                   FIT_MAXITER)
     return numbers.rounded(values.T.reshape(lat.cube.shape), CUBE_DECIMALS)

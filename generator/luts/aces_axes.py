@@ -1,0 +1,199 @@
+"""Where a baked ACES view's lattice puts its nodes.
+
+An ACES view clamps its input in AP1 before anything else (:func:`basis`): ACES 2.0 to [0, its
+tone scale's forward limit]; ACES 1.3's RRT to [0, half float's largest value], after its glow
+and red modifier, which act on ACES2065-1 (a lattice clamping AP1 first leaves them out for a
+colour outside AP1). Nodes are uniform in ``log2(x + toe)`` of the clamped AP1 values
+(:class:`ViewAxis`), so the tone scale's toe and shoulder get nodes alike, less dense above
+the brightest colours measured; a source layout's axis is the same over decoded source values,
+mirrored below 0 where the source's gamut is not AP1 (:class:`SourceLogAxis`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from generator.colorimetry import reference
+from generator.colorimetry.transfer import Linear
+from generator.luts import numbers
+from generator.luts.axes import LogAxis
+from generator.luts.lattice import SHAPER_DECIMALS
+from generator.spec.schema import ColourSpace, Display, Spec
+
+#: The axis's toe in the basis's linear values: it is uniform in log2(x + toe) below
+#: :data:`ACES_BEND_LIGHT`, the toe moved a little so that 1.0 falls on an entry of the display
+#: layout's 1D table (measured at 65³ with the fit, SDR Rec.709 on sRGB, p99 / max in ten-bit
+#: codes: toe 2^-9: AP0 0..1 4.1 / 38, dark 0.9 / 8.0; 2^-7: 3.8 / 32, 1.0 / 8.8; 2^-5: 3.6 /
+#: 27, 2.3 / 14).
+ACES_TOE = 2.0**-7
+
+#: Above this basis value (the brightest probes' 64) the axis's nodes are :data:`ACES_BEND_DENSITY`
+#: times as dense per stop as below, up to the view's clamp (1024 in SDR, 4096 at 1000 cd/m²): the
+#: tone scale's shoulder is smooth there, and the nodes go where colours are (measured at 65³ with
+#: the fit, p99 of the six probe kinds, three toes near 2^-7 each: SDR Rec.709 on sRGB, AP0 0..1
+#: 5.7 to 6.5 ten-bit codes with a uniform axis, 3.8 to 4.9 with a third; bright 22 to 26 and 17
+#: to 20; camera 35 to 38 and 33 to 34; HDR 1000 cd/m² P3 on PQ, ΔE ITP in gamut 0.70 to 0.75
+#: and 0.56 to 0.58, bright 1.7 to 1.9 and 1.6 to 1.8).
+ACES_BEND_LIGHT = 64.0
+ACES_BEND_DENSITY = 1.0 / 3.0
+
+#: Entries of the display layout's 1D table from the Log operator's value to the lattice
+#: coordinate (two straight pieces meeting on an entry: the table is exact).
+ACES_BEND_ENTRIES = 1025
+
+#: Largest share of a source layout's intervals below 0, where a source whose gamut is smaller
+#: than AP1 holds the view's saturated colours (measured at 65³, Linear Rec.709 to sRGB, SDR
+#: Rec.709, p99 / max in ten-bit codes, with :data:`LINEAR_FLOOR` at -1: AP0 0..1 14 / 64,
+#: bright 513 / 705 (clamped); at -64, shares 0.15, 0.25, 0.35: AP0 0..1 33 / 83, 23 / 57, 19 /
+#: 76; bright 72 / 238, 59 / 203, 55 / 207; in gamut 1.6 / 4.6, 1.4 / 3.4, 1.5 / 4.1).
+ACES_NEGATIVE_SHARE = 0.25
+
+#: Half float's largest value: where ACES 1.3's RRT clamps AP1.
+HALF_MAX = 65504.0
+
+#: A linear source's values below this are clamped (in a source layout, whose 1D table is
+#: uniform in light): AP1's cube reaches -720 in Linear Rec.709, the brightest probes (64)
+#: about -40.
+LINEAR_FLOOR = -64.0
+
+
+@dataclass(frozen=True, eq=False)
+class Basis:
+    """The RGB a view clamps its input in: ``from_aces`` (ACES2065-1 to it), [0, ``upper``]."""
+
+    name: str
+    from_aces: np.ndarray
+    upper: float
+
+
+def basis(view) -> Basis:
+    """Where ``view`` (an :class:`~generator.rendering.views.ACESView`) clamps its input."""
+    from generator.rendering import views
+
+    if view.version == "2.0":
+        t = views.tables(view)
+        return Basis("AP1", t.ap0_to_ap1, float(t.tone.forward_limit))
+    t = views.tables(views.catalogue()["ACES 2.0 - SDR 100 nits (Rec.709)"])
+    return Basis("AP1", t.ap0_to_ap1, HALF_MAX)
+
+
+def basis_matrix(spec: Spec, space: ColourSpace, view) -> np.ndarray:
+    """Linear RGB of ``space`` to ``view``'s basis."""
+    return basis(view).from_aces @ reference.to_aces_matrix(spec) @ reference.space_matrix(spec, space)
+
+
+def _toe_for(upper: float, share: float) -> float:
+    """The toe with 1.0 ``share`` of the way from 0 to ``upper`` in ``log2(x + toe)`` (bisection in log2(toe))."""
+    low, high = -60.0, np.log2(upper)
+    for _ in range(200):
+        middle = (low + high) / 2.0
+        toe = 2.0**middle
+        if np.log2(1.0 / toe + 1.0) / np.log2(upper / toe + 1.0) > share:
+            low = middle
+        else:
+            high = middle
+    return float(2.0 ** ((low + high) / 2.0))
+
+
+@dataclass(frozen=True)
+class ViewAxis:
+    """Lattice coordinate of values ``x`` from 0 to ``high``: two straight pieces in
+    ``log2(x + toe)``, 0 to ``bend`` up to ``light``, ``bend`` to 1 above."""
+
+    toe: float
+    light: float
+    high: float
+    bend: float
+
+    @classmethod
+    def layout(cls, toe: float, high: float, light: float = ACES_BEND_LIGHT) -> ViewAxis:
+        """``light`` at the share of the coordinate :data:`ACES_BEND_DENSITY` gives it (all of it,
+        when ``high`` is below ``light``)."""
+        if high <= light:
+            return cls(toe, high, high, 1.0)
+        below, above = (np.log2((light + toe) / toe), np.log2((high + toe) / (light + toe)))
+        return cls(toe, light, high, float(below / (below + ACES_BEND_DENSITY * above)))
+
+    def _log(self, x) -> np.ndarray:
+        return np.log2(np.asarray(x, dtype=np.float64) / self.toe + 1.0)
+
+    def coordinate(self, x) -> np.ndarray:
+        """Coordinate in [0, 1] of ``x`` (clamped to [0, ``high``])."""
+        level = self._log(np.clip(np.asarray(x, dtype=np.float64), 0.0, self.high))
+        light, high = float(self._log(self.light)), float(self._log(self.high))
+        if self.bend >= 1.0:
+            return level / high
+        return np.where(level <= light, level / light * self.bend,
+                        self.bend + (level - light) / (high - light) * (1.0 - self.bend))
+
+
+def view_axes(view) -> tuple[LogAxis, ViewAxis, np.ndarray]:
+    """The display layout's Log operator (a :class:`~generator.luts.axes.LogAxis` from 0 to the
+    view's clamp over :data:`ACES_BEND_ENTRIES` entries, 1.0 on one, toe near :data:`ACES_TOE`),
+    the :class:`ViewAxis` of the same toe bending on an entry, and the 1D table between them
+    (lattice coordinates at the entries, as written)."""
+    upper, n = basis(view).upper, ACES_BEND_ENTRIES - 1
+    share = np.log2(1.0 / ACES_TOE + 1.0) / np.log2(upper / ACES_TOE + 1.0)
+    log = LogAxis(ACES_BEND_ENTRIES, int(round(share * n)), _toe_for(upper, round(share * n) / n))
+    wanted = ViewAxis.layout(log.toe, upper)
+    light = float(log.position(np.round(log.coordinate(wanted.light) * n) / n))
+    axis = ViewAxis.layout(log.toe, upper, light)
+    return log, axis, numbers.rounded(axis.coordinate(log.position(np.linspace(0.0, 1.0, n + 1))), SHAPER_DECIMALS)
+
+
+@dataclass(frozen=True)
+class SourceLogAxis:
+    """A source layout's axis over decoded source values ``x`` from ``low`` (<= 0) up: the
+    :class:`ViewAxis` ``positive`` above 0, mirrored ``log2(-x / toe + 1)`` below, 0 on node ``zero``."""
+
+    size: int
+    zero: int
+    low: float
+    positive: ViewAxis
+
+    @classmethod
+    def layout(cls, size: int, low: float, high: float, toe: float = ACES_TOE) -> SourceLogAxis:
+        """Nodes below 0 in proportion to the bits of the mirrored log there (none when ``low`` is 0)."""
+        positive = ViewAxis.layout(toe, high)
+        bits_below, bits_above = (np.log2(max(-low, 0.0) / toe + 1.0), np.log2(high / toe + 1.0))
+        share = min(bits_below / (bits_below + bits_above), ACES_NEGATIVE_SHARE)
+        zero = 0 if low >= 0.0 else int(np.clip(round(share * (size - 1)), 1, size - 3))
+        return cls(size, zero, min(low, 0.0), positive)
+
+    def coordinate(self, x) -> np.ndarray:
+        """Lattice coordinate in [0, 1] of decoded source values ``x`` (clamped to the axis)."""
+        x = np.clip(np.asarray(x, dtype=np.float64), self.low, self.positive.high)
+        n, zero, toe = self.size - 1, self.zero, self.positive.toe
+        above = zero + (n - zero) * self.positive.coordinate(x)
+        if not zero:
+            return above / n
+        below = zero * (1.0 - np.log2(np.maximum(-x, 0.0) / toe + 1.0) / np.log2(-self.low / toe + 1.0))
+        return np.where(x >= 0.0, above, below) / n
+
+
+def source_range(spec: Spec, source: ColourSpace, display: Display, view) -> tuple[float, float]:
+    """Decoded source values the source layout covers: those of the view's basis cube, within the
+    source's code range (and :data:`LINEAR_FLOOR` for a linear source); 0 from below where the
+    source's gamut is the basis (its lower faces are the view's clamp)."""
+    from generator.luts.source_axes import code_range
+
+    corners = np.indices((2, 2, 2)).reshape(3, -1).T * basis(view).upper
+    linear = corners @ np.linalg.inv(basis_matrix(spec, source, view)).T
+    low, high = float(linear.min()), float(linear.max())
+    low = 0.0 if low > -1e-9 * high else low
+    if isinstance(source.curve, Linear):
+        return max(low, LINEAR_FLOOR), high
+    code_low, code_high, capped = code_range(source, display)
+    with np.errstate(all="ignore"):
+        floor, top = (float(v) for v in source.curve.decode(np.array([code_low, code_high])))
+    return max(low, floor), (min(high, top) if capped else high)
+
+
+def same_basis(spec: Spec, source: ColourSpace, view) -> bool:
+    """Whether ``source``'s linear RGB is ``view``'s basis (the matrix is the identity as written):
+    its domain's clamp is then the view's own."""
+    from generator.colorimetry.matrices import settled
+
+    return bool(np.array_equal(settled(basis_matrix(spec, source, view)), np.eye(3)))
