@@ -245,6 +245,24 @@ LUT_CUBE_GREY_CODES = 0.3
 #: the issue's target).
 LUT_CLF_EVERY_SET_CODES = 1.0
 
+#: ``ocioforge bake --view``'s files read through OCIO as written (lossless flags) against the
+#: float64 evaluation of the same file (generator.luts.aces_bake.file_output), in display code
+#: values: float32 reading of the decoding, Log operator and tables (measured 1.5e-6 at 17³,
+#: ACEScct and ACEScg to sRGB and to Rec.2100-PQ, every format).
+LUT_ACES_FILE_ABSOLUTE = 5e-6
+
+#: ``ocioforge bake --view`` at its default 65³ from ACEScct, read through OCIO, against the
+#: reference: p99 of each kind of colour of generator.luts.aces_probes (2048 of each), ten-bit
+#: codes for the SDR view (ACES 2.0 Rec.709 on sRGB) as a CLF, ΔE ITP for the HDR view (ACES
+#: 2.0 1000 cd/m² P3 D65 on Rec.2100-PQ) as a Resolve .cube: the figures measured, rounded up
+#: to two digits (docs/aces-views.md gives them beside the plain recipe's and ociobakelut's).
+LUT_ACES_P99 = {
+    ("clf", "sRGB - Display"): {"in_gamut": 2.1, "ap0": 3.3, "dark": 0.70, "bright": 22.0, "greys": 0.45,
+                                "camera": 24.0},
+    ("resolve_cube", "Rec.2100-PQ - Display"): {"in_gamut": 0.42, "ap0": 0.36, "dark": 0.56, "bright": 1.4,
+                                                "greys": 0.59, "camera": 0.79},
+}
+
 #: Least share of white's luminance each of a display's primaries must give for a Desaturate
 #: view (the other views take any primaries). The desaturate view's lattice follows ``1 / h_Y``, the
 #: inverse luminance of a hue's saturated colour, which grows steep near a primary of

@@ -177,10 +177,11 @@ def source_range(spec: Spec, source: ColourSpace, display: Display, view) -> tup
     """Decoded source values the source layout covers: those of the view's basis cube, within the
     source's code range (and :data:`LINEAR_FLOOR` for a linear source); 0 from below where the
     source's gamut is the basis (its lower faces are the view's clamp)."""
+    from generator.colorimetry.matrices import settled
     from generator.luts.source_axes import code_range
 
     corners = np.indices((2, 2, 2)).reshape(3, -1).T * basis(view).upper
-    linear = corners @ np.linalg.inv(basis_matrix(spec, source, view)).T
+    linear = corners @ np.linalg.inv(settled(basis_matrix(spec, source, view))).T
     low, high = float(linear.min()), float(linear.max())
     low = 0.0 if low > -1e-9 * high else low
     if isinstance(source.curve, Linear):

@@ -51,18 +51,20 @@ def _training(spec: Spec, source: ColourSpace, display: Display, view, domain=No
             for name, colours in aces.items()}
 
 
-def _fitted(lat: Lattice, colours: dict) -> np.ndarray:
+def _fitted(lat: Lattice, colours: dict, decimals: int) -> np.ndarray:
     from generator.luts.fit import reweighted_fit  # fit.py builds on lattice.py, as this module does
 
-    return reweighted_fit(lat, colours, None, ACES_FIT_RTOL)
+    return numbers.rounded(reweighted_fit(lat, colours, None, ACES_FIT_RTOL), decimals)
 
 
-def display_lattice(spec: Spec, source: ColourSpace, display: Display, view, size: int) -> Lattice:
+def display_lattice(spec: Spec, source: ColourSpace, display: Display, view, size: int,
+                    decimals: int = CUBE_DECIMALS) -> Lattice:
     """The display layout (a CLF): decoding and the matrix to the basis exact, the Log operator of
     :func:`view_axes` and its Range (the view's clamp), its 1D table, a lattice of fitted display
     codes; or, where the view's last clamp is the display's (:func:`light_before_clamp`), of
     the display's codes of the light before that clamp, which a 1D table of two entries
-    after the lattice applies exactly (the clamp bends the codes where the lattice cannot)."""
+    after the lattice applies exactly (the clamp bends the codes where the lattice cannot). The
+    lattice's values are written with ``decimals`` decimals."""
     from generator.colorimetry.matrices import settled
 
     log, _, table = view_axes(view)
@@ -81,7 +83,8 @@ def display_lattice(spec: Spec, source: ColourSpace, display: Display, view, siz
     for name, (code, expected) in _training(spec, source, display, view).items():
         target = expected if post is None else values(reference.to_reference(spec, source, code))
         colours[name] = (_log_coordinate(lat, code), target)
-    return Lattice(source, display, view.name, source.curve, matrix, log, (0.0, 1.0), table, _fitted(lat, colours), post)
+    return Lattice(source, display, view.name, source.curve, matrix, log, (0.0, 1.0), table,
+                   _fitted(lat, colours, decimals), post, decimals)
 
 
 def light_before_clamp(spec: Spec, display: Display, view):
@@ -142,10 +145,13 @@ def _display_codes(spec: Spec, display: Display, view, rgb: np.ndarray, to_aces:
 
 
 def source_lattice(spec: Spec, source: ColourSpace, display: Display, view, size: int,
-                   shaper: str | ColourSpace = "auto") -> Lattice:
+                   shaper: str | ColourSpace = "auto", decimals: int = CUBE_DECIMALS,
+                   entries: int | None = None) -> Lattice:
     """The source layout: a 1D table uniform in source values (``shaper`` "auto": to the
     :class:`SourceLogAxis` coordinate; a colour space: its curve over its codes 0 to 1; "none":
-    no table, the lattice uniform in source values), a lattice of fitted display codes."""
+    no table, the lattice uniform in source values), a lattice of fitted display codes, written
+    with ``decimals`` decimals; the table has ``entries`` entries (default
+    :data:`ACES_SHAPER_SIZES`)."""
     from generator.luts.source_axes import shaper_domain
 
     low, high = source_range(spec, source, display, view)
@@ -153,7 +159,7 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, view, size
         domain = tuple(float(v) for v in source.curve.encode(np.array([low, high])))
     if isinstance(shaper, ColourSpace):
         domain = shaper_domain(source, shaper, display)
-    table = None if shaper == "none" else _table(source, shaper, size, domain, (low, high))
+    table = None if shaper == "none" else _table(source, shaper, size, domain, (low, high), entries)
     codes = preimages(size, table, domain)
     with np.errstate(all="ignore"):
         linear = source.curve.decode(codes)
@@ -164,12 +170,12 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, view, size
     # Beyond the domain the file clamps each channel: the view's own clamp where the source is its basis.
     held = None if same_basis(spec, source, view) and shaper == "auto" else domain
     return Lattice(source, display, view.name, None, None, None, domain, table,
-                   _fitted(lat, _training(spec, source, display, view, held)))
+                   _fitted(lat, _training(spec, source, display, view, held), decimals), decimals=decimals)
 
 
-def _table(source: ColourSpace, shaper, size: int, domain, reach) -> np.ndarray:
-    """The 1D table: lattice coordinates at entries uniform over ``domain`` (source values)."""
-    count = ACES_SHAPER_SIZES[isinstance(source.curve, Linear)]
+def _table(source: ColourSpace, shaper, size: int, domain, reach, entries: int | None) -> np.ndarray:
+    """The 1D table: lattice coordinates at ``entries`` entries uniform over ``domain`` (source values)."""
+    count = entries or ACES_SHAPER_SIZES[isinstance(source.curve, Linear)]
     with np.errstate(all="ignore"):
         linear = source.curve.decode(np.linspace(domain[0], domain[1], count))
         if isinstance(shaper, ColourSpace):

@@ -164,15 +164,16 @@ ACES_SMALLEST = 4
 
 def find_view(display: Display, name: str):
     """The ACES view called ``name`` that ``display`` can show (SpecError naming ``--view``
-    otherwise): a studio view, or the display's own ACES 2.0 view; "ACES 2.0" is the display's
-    first ACES 2.0 studio view, or its own."""
+    otherwise), in any case: a studio view, or the display's own ACES 2.0 view; "ACES 2.0" is the
+    display's first ACES 2.0 studio view, or its own."""
     from generator.colorimetry import reference
     from generator.rendering import views
 
     shown = [v for v in (*views.catalogue(), _own_name(display)) if v and _shows(display, v)]
-    if name == views.OWN_ACES2:
+    if name.lower() == views.OWN_ACES2.lower():
         studio = [v for v in views.STUDIO_VIEWS.get(display.name, ()) if v.startswith(views.OWN_ACES2 + " - ")]
         name = studio[0] if studio else _own_name(display) or name
+    name = next((v for v in (*views.catalogue(), _own_name(display)) if v and v.lower() == name.lower()), name)
     found = reference.aces_view_of(display, name)
     if found is None:
         raise SpecError(WHERE, "--view", f"unknown ACES view {name!r} for {display.name!r}; allowed: "
@@ -306,7 +307,11 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
 
 def bake(req: Request) -> dict[str, bytes]:
     """The files of a bake: suffix ("" for the main file) to bytes."""
-    lat = build_lattice(req)
+    return lattice_files(req, build_lattice(req))
+
+
+def lattice_files(req: Request, lat: lattice.Lattice) -> dict[str, bytes]:
+    """The files of ``req``'s format holding ``lat`` (built for ``req``): suffix to bytes."""
     title = describe(req)
     if req.fmt == "resolve_cube":
         return {"": formats.resolve_cube(lat, title, notes(req, lat))}

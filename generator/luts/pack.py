@@ -2,7 +2,9 @@
 
 Every pair is baked as a Resolve .cube (1D shaper + 3D, source axes, 33³) and a
 CLF (exact decoding and matrix, lattice in display axes, 17³), with
-:data:`~generator.luts.bake.DEFAULT_METHOD`; each file is read back through
+:data:`~generator.luts.bake.DEFAULT_METHOD`; and every source through the ACES 2.0
+SDR and HDR views (:data:`ACES_VIEWS`, :mod:`generator.luts.aces_bake`) as a CLF and,
+from an encoded source, a Resolve .cube (:data:`ACES_SIZE`); each file is read back through
 OpenColorIO and measured on :mod:`generator.luts.probes`, and README.md lists
 the figures, labelled as what they are: maxima over those random probe sets, not
 bounds over the gamut. The folder is built in a temporary sibling and renamed
@@ -29,6 +31,27 @@ FORMATS = ("resolve_cube", "clf")
 #: same size: it measures as 33³ does (0.011 ten-bit codes at most, ACEScg to sRGB and to
 #: Rec.2100-PQ) in a seventh of the bytes, which keeps the pack under 30 MB.
 SIZES = {"resolve_cube": 33, "clf": LOG_VIEW_SIZE}
+
+#: ACES views in the pack, each baked from every source for the display it is named on.
+ACES_VIEWS = (("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
+              ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"))
+
+#: The ACES views' lattices: nodes a side, decimals of their values (a tenth of a ten-bit code),
+#: entries of an encoded source's .cube shaper table. The pack's other files leave 6.75 MB of
+#: LUT_PACK_BYTES for 12 views; at 25³ a CLF takes 335 KB and a .cube 274 KB (65³: 5 MB), and
+#: measures within twice the 65³ plain recipe's p99 (ten-bit codes, SDR Rec.709 from ACEScct, CLF
+#: 25³ and plain 65³: AP0 0..1 15 and 6.3, bright 56 and 27; HDR within 1.3 times).
+ACES_SIZE, ACES_DECIMALS, ACES_SHAPER_ENTRIES = 25, 4, 1024
+
+
+def aces_formats(source) -> tuple[str, ...]:
+    """The pack's formats for an ACES view from ``source``: a CLF, and a Resolve .cube from an encoded
+    source. A linear source's .cube needs a 1D table uniform in light up to the view's clamp (1024,
+    4096 in HDR), whose steps the pack cannot afford to make fine: at 8192 entries (410 KB) greys
+    came out 12 ten-bit codes and 28 ΔE ITP off (``ocioforge bake --view`` writes 65536)."""
+    from generator.colorimetry.transfer import Linear
+
+    return ("clf",) if isinstance(source.curve, Linear) else ("clf", "resolve_cube")
 
 README_HEAD = """# ocioforge standalone LUTs
 
@@ -106,6 +129,38 @@ LogC4: 1.9 codes on Gamma 2.6; exactly 0 read as written).
 | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |
 """
 
+ACES_HEAD = """
+## ACES 2.0 views
+
+Each file takes a source colour space's values through an ACES 2.0 Output Transform to the
+display's code values: `ocioforge bake --view` (see docs/aces-views.md, "Standalone LUTs"), at
+{size}³ with values of {decimals} decimals to fit the pack (the command's default, 65³, is four to
+eight times as accurate: docs/aces-views.md gives its figures). The lattice's nodes are spaced
+in log2 of AP1, the view's own input (clamped as the view clamps it), and its values fitted by
+least squares to colours of six kinds; greys keep the sampled values.
+
+* `.clf`: the source's curve and the matrix to AP1 exact, then the view's clamp and a log2
+  shaper (exact Log and Range operators), a 1D table and the lattice; where the display's
+  primaries are the view's limiting primaries (the SDR view on sRGB), the lattice holds the
+  codes before the view's final clamp, which a 1D table after it applies exactly.
+* `.cube` (encoded sources only): DaVinci Resolve format, a {entries}-entry 1D shaper uniform in
+  the source's code values, then the lattice. A linear source has none here: its shaper would
+  be uniform in light up to the view's clamp (1024 scene-linear in SDR, 4096 in HDR), too coarse
+  near black at a size the pack holds; `ocioforge bake --view ... --format resolve_cube` writes
+  one with 65536 entries.
+
+Errors: read through OpenColorIO {ocio} (default flags, tetrahedral) against the reference on
+{count} colours of each kind (`generator.luts.aces_probes`, fixed seed): the display's gamut,
+ACES2065-1 0 to 1, dark (1e-4 to 0.1) and bright (1 to 64) hues, greys from 1e-4 to 100, and
+ARRI Wide Gamut 4 colours with a zero channel (0.01 to 10), those the source's codes hold;
+p99 / max in ten-bit codes (SDR) or ΔE ITP (HDR). Colours outside AP1 are clamped to its faces
+by the view itself, where the rendering bends sharply: the bright and camera kinds err most.
+
+| File | Source | View | Destination | Size | {labels} | Unit |
+| --- | --- | --- | --- | --- |{rule} --- |
+"""
+
+
 def pack_name(source: str, display: str, fmt: str) -> str:
     return f"{slug(source)}_to_{slug(display)}{bake.FORMATS[fmt].suffix}"
 
@@ -134,6 +189,55 @@ def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: 
             f"{inside:.3f} | {p99:.3f} | {worst:.3f} | {fast:.3f} | {unit} | {other} |\n")
 
 
+def aces_name(source: str, view: str, display: str, fmt: str) -> str:
+    return f"{slug(source)}_{slug(view)}_{slug(display)}{bake.FORMATS[fmt].suffix}"
+
+
+def write_aces(spec: Spec, folder: Path) -> list[str]:
+    """Bake, write and measure the ACES views of every source into ``folder``; returns the README rows."""
+    from generator.luts import aces_bake
+
+    rows = []
+    for source in SOURCES:
+        for view, display in ACES_VIEWS:
+            for fmt in aces_formats(spec.space(source)):
+                req = bake.request(spec, source, display, "", fmt, ACES_SIZE, "auto", view)
+                if fmt == "clf":
+                    lat = aces_bake.display_lattice(spec, req.source, req.display, req.view, ACES_SIZE, ACES_DECIMALS)
+                else:
+                    lat = aces_bake.source_lattice(spec, req.source, req.display, req.view, ACES_SIZE, "auto",
+                                                   ACES_DECIMALS, ACES_SHAPER_ENTRIES)
+                name = aces_name(source, view, display, fmt)
+                (folder / name).write_bytes(bake.lattice_files(req, lat)[""])
+                rows.append(_aces_row(name, req, _aces_measure(req, folder / name)))
+    return rows
+
+
+def _aces_measure(req: bake.Request, path: Path) -> dict:
+    """Set name to (p99, max) of the file read through OCIO (default flags, tetrahedral) on
+    :mod:`generator.luts.aces_probes`' sets, against the reference."""
+    import numpy as np
+    import PyOpenColorIO as ocio
+
+    from generator.luts import aces_probes
+
+    apply = probes.ocio_apply(ocio.FileTransform(str(path), interpolation=ocio.INTERP_TETRAHEDRAL))
+    out = {}
+    for name, aces in aces_probes.sets(req.display, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT).items():
+        code, expected = aces_probes.in_source(req.spec, req.source, req.display, req.view.name, aces)
+        error = probes.errors(req.display, apply(code), expected)[0]
+        out[name] = (float(np.percentile(error, 99)), float(error.max()))
+    return out
+
+
+def _aces_row(name: str, req: bake.Request, figures: dict) -> str:
+    from generator.luts import aces_probes
+
+    unit = "ΔE ITP" if req.display.is_hdr else "10-bit codes"
+    cells = " | ".join(f"{figures[kind][0]:.2f} / {figures[kind][1]:.1f}" for kind in aces_probes.SETS)
+    return f"| {name} | {req.source.name} | {req.view.name} | {req.display.name} | {req.size}³ | {cells} | {unit} |\n"
+
+
 def write_pack(spec: Spec, folder: Path, method: str = bake.DEFAULT_METHOD) -> list[str]:
     """Bake, write and measure every file of the pack into ``folder``; returns the README rows."""
     rows = []
@@ -157,12 +261,20 @@ def build_pack(folder: str | Path, spec: Spec | None = None) -> Path:
 
     spec = spec or load.load()
     folder = Path(folder).absolute()
+    from generator.luts import aces_probes
+
     with staged_folder(folder) as staging:
         rows = write_pack(spec, staging)
+        aces = write_aces(spec, staging)
         head = README_HEAD.format(method=bake.DEFAULT_METHOD, cube_size=SIZES["resolve_cube"], clf_size=SIZES["clf"],
                                  ocio=ocio.__version__, count=probes.COUNT,
                                  shaper_steps=SOURCE_SHAPER_SIZES[1] - 1)
-        (staging / "README.md").write_text(head + "".join(rows), encoding="utf-8")
+        aces_head = ACES_HEAD.format(size=ACES_SIZE, decimals=ACES_DECIMALS, entries=ACES_SHAPER_ENTRIES,
+                                     count=aces_probes.PROBE_COUNT, ocio=ocio.__version__,
+                                     labels=" | ".join(f"{aces_probes.LABELS[k]} p99 / max" for k in aces_probes.SETS),
+                                     rule=" --- |" * len(aces_probes.SETS))
+        text = head + "".join(rows) + (aces_head + "".join(aces) if aces else "")
+        (staging / "README.md").write_text(text, encoding="utf-8")
     return folder
 
 

@@ -595,3 +595,28 @@ def test_a_full_standard_output_is_named_and_loses_no_file(tmp_path):
         assert done.stderr.startswith("error: standard output: No space left on device (files the command wrote")
     assert sorted(p.name for p in (tmp_path / "show").iterdir()) == ["config.ocio", "luts", "ocioforge-spec.json"]
     assert sorted(p.name for p in (tmp_path / "report").iterdir()) == ["report.html", "summary.json"]
+
+
+def test_bake_view_writes_the_displays_aces_view_in_any_case(tmp_path, capsys):
+    """``--view ACES 2.0`` is the display's first ACES 2.0 studio view, as in a spec; names are
+    matched in any case, and the report says which view was baked."""
+    out = tmp_path / "a.cube"
+    code, printed, err = run(capsys, "bake", "--from", "acescct", "--to", "srgb_display", "--view", "aces 2.0",
+                             "--size", "9", "-o", str(out))
+    assert code == 0 and "view ACES 2.0 - SDR 100 nits (Rec.709), 9^3" in printed and out.exists(), err
+    again = tmp_path / "b.cube"
+    code, _, err = run(capsys, "bake", "--from", "ACEScct", "--to", "sRGB - Display", "--view",
+                       "ACES 2.0 - SDR 100 nits (rec.709)", "--size", "9", "-o", str(again))
+    assert code == 0 and again.read_bytes() == out.read_bytes(), err
+
+
+@pytest.mark.parametrize("args, words", [
+    (("--view", "ACES 2.0 - HDR 1000 nits (P3 D65)"), "cannot show 'ACES 2.0 - HDR 1000 nits (P3 D65)': it is an HDR view"),
+    (("--view", "ACES 3.0"), "unknown ACES view 'ACES 3.0'"),
+    (("--view", "ACES 2.0", "--gamut-map", "scale"), "--view and --gamut-map exclude each other"),
+])
+def test_bake_view_refuses_in_one_line_and_writes_nothing(tmp_path, capsys, args, words):
+    code, out, err = run(capsys, "bake", "--from", "ACEScct", "--to", "sRGB - Display", *args,
+                         "-o", str(tmp_path / "a.clf"))
+    assert code == 2 and err.startswith("error: ") and err.count("\n") == 1 and words in err and out == "", err
+    assert list(tmp_path.iterdir()) == []

@@ -74,6 +74,17 @@ BAD = {
     "linear shaper": ["--from", "ACEScct", "--to", "sRGB - Display", "--shaper", "ACEScg"],
     "display shaper": ["--from", "ACEScct", "--to", "sRGB - Display", "--shaper", "Rec.1886 Rec.709 - Display"],
     "suffix of another format": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "spi3d"],
+    "unknown view": ["--from", "ACEScct", "--to", "sRGB - Display", "--view", "ACES 2.0 - SDR 100 nits (Rec.7O9)"],
+    "HDR view on an SDR display": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
+                                   "ACES 2.0 - HDR 1000 nits (P3 D65)"],
+    "view with a gamut mapping": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
+                                  "ACES 2.0 - SDR 100 nits (Rec.709)", "--gamut-map", "clip"],
+    "view limited beyond the display": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
+                                        "ACES 2.0 - SDR 100 nits (P3 D65)"],
+    "view in iridas from linear": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube",
+                                   "--view", "ACES 2.0 - SDR 100 nits (Rec.709)"],
+    "view size too large": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
+                            "ACES 2.0 - SDR 100 nits (Rec.709)", "--size", "130"],
 }
 #: A name whose suffix no host reads as the format asked for (the case below writes to "out.cube").
 BAD_NAMES = {

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from generator import tolerances
-from generator.luts import pack, probes
+from generator.luts import aces_probes, pack, probes
 from generator.luts.view import bake_view_lut, view_filename, view_transform
 from generator.verify.metrics import delta_e_itp
 
@@ -90,14 +90,23 @@ def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
     monkeypatch.setattr(pack, "SOURCES", ("ACEScct",))
     monkeypatch.setattr(pack, "DISPLAYS", ("sRGB - Display",))
     monkeypatch.setattr(probes, "COUNT", 256)
+    monkeypatch.setattr(pack, "ACES_SIZE", 7)
+    monkeypatch.setattr(aces_probes, "PROBE_COUNT", 256)
     first = pack.build_pack(tmp_path / "a", default_spec)
     second = pack.build_pack(tmp_path / "b", default_spec)
     names = sorted(p.name for p in first.iterdir())
-    assert names == ["README.md", "acescct_to_srgb_display.clf", "acescct_to_srgb_display.cube"]
+    aces = [f"acescct_aces_2_0_{view}{suffix}" for view in ("hdr_1000_nits_p3_d65_rec_2100_pq_display",
+                                                            "sdr_100_nits_rec_709_srgb_display")
+            for suffix in (".clf", ".cube")]
+    assert names == ["README.md", *aces, "acescct_to_srgb_display.clf", "acescct_to_srgb_display.cube"]
     for name in names:
         assert (first / name).read_bytes() == (second / name).read_bytes()
     readme = (first / "README.md").read_text()
-    rows = [line for line in readme.splitlines() if line.startswith("| acescct")]
+    # the ACES views' table: p99 / max of each kind of colour, finite
+    views = [line.split("|") for line in readme.splitlines() if line.startswith("| acescct_aces")]
+    assert len(views) == 4 and "| in gamut p99 / max | AP0 0..1 p99 / max |" in readme
+    assert np.isfinite([float(part) for row in views for cell in row[6:12] for part in cell.split("/")]).all()
+    rows = [line for line in readme.splitlines() if line.startswith("| acescct_to")]
     assert len(rows) == 2 and all("scale" in row for row in rows)
     # the figures are maxima over the random probes, and say so
     assert "| In-gamut probes max | Worst set p99 | All probes max |" in readme and "not bounds" in readme
@@ -120,9 +129,11 @@ def test_committed_pack_is_what_the_build_gives_and_fits(default_spec, tmp_path)
     built = pack.build_pack(tmp_path / "luts", default_spec)
     files = {p.name: p.read_bytes() for p in sorted(built.iterdir())}
     assert files == {p.name: p.read_bytes() for p in sorted(committed.iterdir())}, "luts/ is stale: run make run"
-    assert len(files) == 1 + len(pack.SOURCES) * len(pack.DISPLAYS) * len(pack.FORMATS)
+    aces = sum(len(pack.aces_formats(default_spec.space(source))) for source in pack.SOURCES) * len(pack.ACES_VIEWS)
+    assert len(files) == 1 + len(pack.SOURCES) * len(pack.DISPLAYS) * len(pack.FORMATS) + aces
     assert sum(len(data) for data in files.values()) <= tolerances.LUT_PACK_BYTES
-    rows = [line for line in files["README.md"].decode().splitlines() if line.startswith("| ") and ".clf" in line]
+    rows = [line for line in files["README.md"].decode().splitlines()
+            if line.startswith("| ") and "_to_" in line and ".clf" in line]
     sdr = [line.split("|") for line in rows if "codes" in line.split("|")[10]]
     assert len(sdr) == 3 * len(pack.SOURCES)
     # read as written, every CLF meets the issue's in-gamut target on every probe set; with

@@ -1,0 +1,55 @@
+"""Where a baked ACES view's lattice puts its nodes."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from generator.luts import aces_axes
+from generator.luts.aces_axes import SourceLogAxis, ViewAxis
+from generator.rendering import views
+
+SDR = views.catalogue()["ACES 2.0 - SDR 100 nits (Rec.709)"]
+
+
+def test_the_basis_is_ap1_clamped_where_the_view_clamps():
+    assert aces_axes.basis(SDR).upper == views.tables(SDR).tone.forward_limit == 1024.0
+    assert aces_axes.basis(views.catalogue()["ACES 1.0 - SDR Video"]).upper == aces_axes.HALF_MAX
+
+
+def test_the_view_axis_is_two_pieces_in_log2_meeting_at_its_bend():
+    axis = ViewAxis.layout(aces_axes.ACES_TOE, 1024.0)
+    x = np.array([0.0, axis.light, 1024.0, 2048.0])
+    np.testing.assert_allclose(axis.coordinate(x), [0.0, axis.bend, 1.0, 1.0], rtol=0, atol=1e-15)
+    # per bit of log2(x + toe), the nodes above the bend are ACES_BEND_DENSITY times as dense
+    step = np.diff(axis.coordinate(np.array([1.0, 2.0, 256.0, 512.0])))
+    slope = np.log2((np.array([2.0, 512.0]) + axis.toe) / (np.array([1.0, 256.0]) + axis.toe))
+    np.testing.assert_allclose((step[2] / slope[1]) / (step[0] / slope[0]), aces_axes.ACES_BEND_DENSITY, rtol=1e-12)
+
+
+def test_the_display_layouts_table_is_exact_on_its_entries():
+    """1.0 falls on an entry of the Log operator, the bend on another: the table of two straight
+    pieces between them is the axis exactly (up to its written decimals)."""
+    log, axis, table = aces_axes.view_axes(SDR)
+    entries = np.linspace(0.0, 1.0, table.size)
+    assert np.isclose(log.position(entries[log.one]), 1.0, rtol=0, atol=0)
+    assert np.isclose(log.position(1.0), 1024.0, rtol=1e-9)
+    x = log.position(np.linspace(0.0, 1.0, 100001))
+    np.testing.assert_allclose(np.interp(log.coordinate(x), entries, table), axis.coordinate(x), rtol=0, atol=1e-6)
+
+
+def test_a_source_axis_puts_zero_on_a_node_and_mirrors_below():
+    axis = SourceLogAxis.layout(65, -64.0, 1746.0)
+    assert 0 < axis.zero <= round(aces_axes.ACES_NEGATIVE_SHARE * 64)
+    assert axis.coordinate(0.0) * 64 == axis.zero
+    assert axis.coordinate(-64.0) == 0.0 and axis.coordinate(1746.0) == 1.0
+    assert np.all(np.diff(axis.coordinate(np.linspace(-70.0, 1800.0, 10001))) >= 0)
+    assert SourceLogAxis.layout(65, 0.0, 1024.0).zero == 0
+
+
+def test_a_linear_source_is_held_from_the_floor_and_ap1_sources_from_zero(default_spec):
+    display = default_spec.displays[0]
+    low, high = aces_axes.source_range(default_spec, default_spec.space("Linear Rec.709 (sRGB)"), display, SDR)
+    assert low == aces_axes.LINEAR_FLOOR and high > 1024.0
+    assert aces_axes.source_range(default_spec, default_spec.space("ACEScg"), display, SDR) == (0.0, 1024.0)
+    assert aces_axes.same_basis(default_spec, default_spec.space("ACEScct"), SDR)
+    assert not aces_axes.same_basis(default_spec, default_spec.space("ARRI LogC4"), SDR)
