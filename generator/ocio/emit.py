@@ -157,7 +157,7 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
                  ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, spec.rgc.as_ocio_params()),
                  matrix_transform(to_xyz)]
     else:
-        lut = (pool or Pool()).result(("view", display.name, method), _view_file, spec, display, method)
+        lut = _baked(pool, ("view", spec, display, method), _view_file, spec, display, method)
         add_file(view_luts, lut.filename, lut.data)
         if lut.hsv:
             add_file(view_luts, hsv.SHARED_FILE, hsv.shared_clf())
@@ -333,9 +333,26 @@ def _submit_bakes(spec: Spec, pool: Pool) -> None:
     """Hand every view file of ``spec``'s config to ``pool``: the ACES 2.0 lattices, heaviest, first."""
     _BUILDING.append(spec)
     for view in baked_aces_views(spec):
-        pool.submit(("aces", view), aces_lattice.baked_file, view)
+        if ("aces", view) not in _DONE:
+            pool.submit(("aces", view), aces_lattice.baked_file, view)
     for display, method in _baked_methods(spec):
-        pool.submit(("view", display.name, method), _worker_view_file, spec.displays.index(display), method)
+        if ("view", spec, display, method) not in _DONE:
+            pool.submit(("view", spec, display, method), _worker_view_file, spec.displays.index(display), method)
+
+
+#: View files already baked in this process, by key: a process building one spec again (tests,
+#: an API user) takes them rather than baking them anew. Bounded: the oldest go first.
+_DONE: dict = {}
+_DONE_MAX = 64
+
+
+def _baked(pool: Pool | None, key, fn, *args):
+    """The view file ``key``: baked before in this process, else from ``pool``'s worker (or here)."""
+    if key not in _DONE:
+        _DONE[key] = (pool or Pool()).result(key, fn, *args)
+        while len(_DONE) > _DONE_MAX:
+            _DONE.pop(next(iter(_DONE)))
+    return _DONE[key]
 
 
 def _emit(spec: Spec, pool: Pool) -> Emitted:
@@ -363,5 +380,5 @@ def _emit(spec: Spec, pool: Pool) -> Emitted:
         cfg.setInactiveColorSpaces(", ".join(spec.inactive))
     cfg.validate()
     for view in baked_aces_views(spec):
-        add_file(view_luts, aces_lattice.file_name(view), pool.result(("aces", view), aces_lattice.baked_file, view))
+        add_file(view_luts, aces_lattice.file_name(view), _baked(pool, ("aces", view), aces_lattice.baked_file, view))
     return Emitted(cfg, dict(sorted(bakes.items())), dict(sorted(view_luts.items())))
