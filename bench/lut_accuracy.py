@@ -46,6 +46,8 @@ from pathlib import Path
 import generator  # noqa: F401  (before numpy: the numbers ocioforge itself gets, see generator/backends.py)
 import numpy as np
 
+from generator.colorimetry import reference
+
 PAIRS = (("ACEScg", "sRGB - Display"), ("ACEScct", "sRGB - Display"), ("ARRI LogC4", "Rec.1886 Rec.709 - Display"),
          ("Linear Rec.2020", "Gamma 2.6 P3-D65 - Display"), ("ACEScg", "Rec.2100-PQ - Display"))
 METHODS = ("clip", "scale", "desaturate", "rgc", "perceptual")
@@ -223,17 +225,131 @@ def gpu_desaturate(spec) -> None:
         print(f"  {display.name[:24]:24s} {_fmt(figures)}")
 
 
+#: ACES views baked by ``ocioforge bake --view``, each on a display that shows it, from these sources.
+ACES_VIEWS = (("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
+              ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"))
+ACES_SOURCES = ("ACEScct", "ACEScg")
+ACES_FORMATS = ("clf", "resolve_cube", "iridas_cube", "spi3d")
+#: The ACES studio config whose views ociobakelut bakes, and the shaper spaces it takes there
+#: (per channel from ACEScct and ACEScg: ACEScc's conversion has crosstalk), at two shaper sizes.
+STUDIO_CONFIG = "ocio://studio-config-v5.0.0_aces-v2.1_ocio-v2.6"
+STUDIO_SHAPERS = (None, "ACEScct", "sRGB Encoded AP1", "Gamma 2.2 Encoded AP1", "ACEScg")
+STUDIO_SHAPER_SIZES = (4096, 65536)
+ACES_CUBE_SIZE = 65
+
+
+def studio_bakes(source: str, view: str, display: str, folder: Path):
+    """ociobakelut's Resolve cubes of the studio config's view, one per accepted shaper and size:
+    (label, path)."""
+    tool = Path(sys.executable).with_name("ociobakelut")  # OCIO 2.6's, which has the studio config built in
+    for number, (shaper, count) in enumerate((s, n) for s in STUDIO_SHAPERS for n in STUDIO_SHAPER_SIZES):
+        if shaper is None and count != STUDIO_SHAPER_SIZES[0]:
+            continue
+        out = folder / f"studio_{number}.cube"
+        args = [str(tool if tool.exists() else "ociobakelut"), "--iconfig", STUDIO_CONFIG, "--inputspace", source,
+                "--displayview", display, view, "--format", "resolve_cube", "--cubesize", str(ACES_CUBE_SIZE), str(out)]
+        if shaper:
+            args[-1:-1] = ["--shaperspace", shaper, "--shapersize", str(count)]
+        if subprocess.run(args, capture_output=True, text=True).returncode == 0:
+            yield (f"{shaper}, {count}" if shaper else "none"), out
+
+
+def _aces_figures(spec, source, display, view: str, apply) -> dict:
+    """Set name to (p99, max) of ``apply`` (source codes to display codes) on bench/aces_views.py's
+    probe sets, against the reference."""
+    from aces_views import error, probe_sets
+
+    from generator.luts import aces_probes
+
+    out = {}
+    for name, aces in probe_sets(display).items():
+        code, expected = aces_probes.in_source(spec, source, display, view, aces)
+        e = error(spec, display, apply(code), expected)
+        out[name] = (float(np.percentile(e, 99)), float(e.max()))
+    return out
+
+
+def _pooled_p99(spec, source, display, view: str, apply) -> float:
+    from aces_views import error, probe_sets
+
+    from generator.luts import aces_probes
+
+    errors = []
+    for aces in probe_sets(display).values():
+        code, expected = aces_probes.in_source(spec, source, display, view, aces)
+        errors.append(error(spec, display, apply(code), expected))
+    return float(np.percentile(np.concatenate(errors), 99))
+
+
+def aces_views(spec, folder: Path) -> None:
+    """Every format of ``ocioforge bake --view`` at 65³ against the float64 reference, beside
+    ociobakelut's best bake of the studio config's view (the lowest p99 over the six sets pooled)
+    and the plain recipe of bench/aces_views.py, all read through OCIO (default flags,
+    tetrahedral), on bench/aces_views.py's probe sets. Prints a Markdown table."""
+    import time
+
+    import PyOpenColorIO as ocio
+    from aces_views import plain_recipe
+
+    from generator.luts import bake, probes
+    from generator.rendering import views
+
+    def read(paths):
+        steps = [ocio.FileTransform(str(p), interpolation=ocio.INTERP_TETRAHEDRAL) for p in reversed(paths)]
+        return probes.ocio_apply(steps[0] if len(steps) == 1 else ocio.GroupTransform(steps))
+
+    print(f"\n== ACES views, {ACES_CUBE_SIZE}^3, p99 / max per probe set (ten-bit codes; HDR: ΔE ITP)")
+    print("| view (display) | source | set | CLF | Resolve .cube | Iridas .cube | .spi3d | ociobakelut's best "
+          "| plain recipe |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for view, display_name in ACES_VIEWS:
+        for source_name in ACES_SOURCES:
+            ours, seconds = {}, {}
+            for fmt in ACES_FORMATS:
+                try:
+                    started = time.perf_counter()
+                    req = bake.request(spec, source_name, display_name, None, fmt, ACES_CUBE_SIZE, "auto", view)
+                    files = bake.paths(bake.bake(req), folder / f"aces{bake.FORMATS[fmt].suffix}")
+                    seconds[fmt] = time.perf_counter() - started
+                except ValueError:  # refused (a linear source's Iridas .cube)
+                    continue
+                bake.write(files, force=True)
+                ours[fmt] = _aces_figures(spec, req.source, req.display, view, read(list(files)))
+            source, display = spec.space(source_name), req.display
+            best, label = None, ""
+            for shaper, path in studio_bakes(source_name, view, display_name, folder):
+                p99 = _pooled_p99(spec, source, display, view, read([path]))
+                if best is None or p99 < best[0]:
+                    best = (p99, _aces_figures(spec, source, display, view, read([path])), shaper)
+            plain = plain_recipe(spec, display, views.catalogue()[view])
+            to_aces = reference.to_aces_matrix(spec) @ reference.space_matrix(spec, source)
+            plain_figures = _aces_figures(spec, source, display, view,
+                                          lambda code: plain(reference.apply_matrix(to_aces, source.curve.decode(code))))
+            for name in plain_figures:
+                cells = [f"{ours[f][name][0]:.2f} / {ours[f][name][1]:.1f}" if f in ours else "refused"
+                         for f in ACES_FORMATS]
+                theirs = f"{best[1][name][0]:.2f} / {best[1][name][1]:.1f}" if best else "none"
+                print(f"| {view} ({display_name}) | {source_name} | {name} | {' | '.join(cells)} | {theirs} | "
+                      f"{plain_figures[name][0]:.2f} / {plain_figures[name][1]:.1f} |")
+            label = best[2] if best else "none"
+            print(f"  (ociobakelut's best: shaper {label}; bake seconds: "
+                  + ", ".join(f"{f} {t:.2f}" for f, t in seconds.items()) + ")")
+
+
 def main(argv=None) -> None:
     from generator.spec import load
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--size", type=int, default=33)
+    parser.add_argument("--aces-only", action="store_true", help="only the ACES views (ocioforge bake --view)")
     args = parser.parse_args(argv)
     if shutil.which("ociobakelut") is None:
         sys.exit("ociobakelut is not installed")
     spec = load.load()
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
+        aces_views(spec, folder)
+        if args.aces_only:
+            return
         for source, display in PAIRS:
             compare(spec, source, display, args.size, folder)
             methods(spec, source, display, args.size, folder)

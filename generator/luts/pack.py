@@ -38,9 +38,10 @@ ACES_VIEWS = (("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
 
 #: The ACES views' lattices: nodes a side, decimals of their values (a tenth of a ten-bit code),
 #: entries of an encoded source's .cube shaper table. The pack's other files leave 6.75 MB of
-#: LUT_PACK_BYTES for 12 views; at 25³ a CLF takes 335 KB and a .cube 274 KB (65³: 5 MB), and
-#: measures within twice the 65³ plain recipe's p99 (ten-bit codes, SDR Rec.709 from ACEScct, CLF
-#: 25³ and plain 65³: AP0 0..1 15 and 6.3, bright 56 and 27; HDR within 1.3 times).
+#: LUT_PACK_BYTES for the 18 files; at 25³ a CLF takes 335 KB and a .cube 270 to 350 KB (65³:
+#: 5 MB). Its p99 is 3 to 7 times the 65³ bake's (SDR Rec.709 from ACEScct, CLF, ten-bit codes:
+#: AP0 0..1 14.6 and 3.1, bright 55 and 14, greys 3.2 and 0.45; HDR, ΔE ITP: in gamut 1.05 and
+#: 0.38, bright 4.8 and 1.45).
 ACES_SIZE, ACES_DECIMALS, ACES_SHAPER_ENTRIES = 25, 4, 1024
 
 
@@ -134,8 +135,8 @@ ACES_HEAD = """
 
 Each file takes a source colour space's values through an ACES 2.0 Output Transform to the
 display's code values: `ocioforge bake --view` (see docs/aces-views.md, "Standalone LUTs"), at
-{size}³ with values of {decimals} decimals to fit the pack (the command's default, 65³, is four to
-eight times as accurate: docs/aces-views.md gives its figures). The lattice's nodes are spaced
+{size}³ with values of {decimals} decimals to fit the pack. The command's default, 65³, has a p99 3
+to 7 times lower; docs/aces-views.md gives its figures. The lattice's nodes are spaced
 in log2 of AP1, the view's own input (clamped as the view clamps it), and its values fitted by
 least squares to colours of six kinds; greys keep the sampled values.
 
