@@ -44,6 +44,7 @@ ACES_FIT_RTOL = 1e-6
 #: to 65536): a linear source's table is uniform in light up to the view's clamp.
 ACES_SHAPER_SIZES = (4096, 65536)
 
+
 def _training(spec: Spec, source: ColourSpace, display: Display, view, domain=None) -> dict:
     """The fit's colours: per kind, the source's code values and the view's display codes."""
     aces = aces_probes.sets(display, aces_probes.TRAINING_SEED, ACES_FIT_COUNT)
@@ -201,7 +202,7 @@ def file_output(lat: Lattice, code) -> np.ndarray:
     return out if lat.post is None else np.interp(out, np.linspace(0.0, 1.0, lat.post.size), lat.post)
 
 
-def notes(spec: Spec, lat: Lattice, view, shaper) -> list[str]:
+def notes(lat: Lattice, view, shaper) -> list[str]:
     """Comment lines after the title: what the file's input is, what its lattice holds, its output."""
     b = basis(view)
     display, source = lat.display, lat.source
@@ -212,11 +213,11 @@ def notes(spec: Spec, lat: Lattice, view, shaper) -> list[str]:
               "Interpolate tetrahedrally.")
     if isinstance(lat.pre, LogAxis):
         log, axis, _ = view_axes(view)
-        held = (" The lattice holds the codes before the display's clamp, which the 1D table after it applies."
-                if lat.post is not None else "")
+        clamp = (" The lattice holds the codes before the display's clamp, which the 1D table after it applies."
+                 if lat.post is not None else "")
         return [f"Input: {source.name} values, decoded and taken to {b.name} exactly, clamped to [0, {b.upper:.9g}] "
                 f"(the view's own clamp); a 1D table spaces the nodes uniformly in log2({b.name} + {log.toe:.9g}), "
-                f"{ACES_BEND_DENSITY:.3g} times as densely above {axis.light:.6g}.{held}", output, fitted]
+                f"{ACES_BEND_DENSITY:.3g} times as densely above {axis.light:.6g}.{clamp}", output, fitted]
     lo, hi = lat.domain
     spacing = ("uniformly in the source's values" if lat.shaper is None else
                f"by {shaper.name}'s curve of the decoded values" if isinstance(shaper, ColourSpace) else

@@ -283,7 +283,7 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     if req.view is not None:
         from generator.luts import aces_bake
 
-        return [f"ocioforge: {describe(req)}.", *aces_bake.notes(req.spec, lat, req.view, req.shaper)]
+        return [f"ocioforge: {describe(req)}.", *aces_bake.notes(lat, req.view, req.shaper)]
     lo, hi = lat.domain
     top = float(reference.display_encode(req.display, np.full(3, req.display.clip_high))[0])
     output = f"Output: {req.display.name} code values (full range, 0 to {top:.6g})."
