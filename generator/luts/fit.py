@@ -115,7 +115,7 @@ def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
                    weights[:, touching] * ~reached[:, touching], rest)
 
 
-def reweighted_fit(lat: Lattice, colours: dict, zero: int | None, rtol: float = FIT_RTOL) -> np.ndarray:
+def reweighted_fit(lat: Lattice, colours: dict, zero: int | None, rtol: float | None = None) -> np.ndarray:
     """:func:`fit` with each set's weight (:data:`FIT_IN_GAMUT_WEIGHT` for in-gamut
     colours, 1 for the others), then :data:`FIT_REWEIGHTS` times with every colour's
     weight scaled by its error in the probes' metric (ten-bit codes, ΔE ITP for HDR)
@@ -162,7 +162,7 @@ def _kept(size: int, zero: int | None) -> np.ndarray:
 
 
 def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _System | None = None,
-        rtol: float = FIT_RTOL) -> np.ndarray:
+        rtol: float | None = None) -> np.ndarray:
     """Node values minimising the weighted squared error of tetrahedral interpolation
     on ``colours`` (set name to (input values, expected codes); ``weights``, set name
     to a weight per colour; ``system``, :func:`_system` if already built), plus
@@ -187,6 +187,7 @@ def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _S
         return solve.accumulate(columns, free, solve.interpolate(columns, free, v), count) + FIT_REGULARISATION * v
 
     values = start.copy()
+    rtol = FIT_RTOL if rtol is None else rtol  # read when called: FIT_RTOL is the one default
     values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, rtol * whole,
                                                   FIT_MAXITER)
     return numbers.rounded(values.T.reshape(lat.cube.shape), CUBE_DECIMALS)
