@@ -22,6 +22,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from generator.colorimetry.transfer import PiecewisePower
 from generator.luts.fit import tetrahedra
 from generator.luts.solve import interpolate
 from generator.rendering import views
@@ -77,28 +78,17 @@ def axis_value(u, upper: float, toe: float) -> np.ndarray:
     return np.exp2(np.asarray(u) * span + np.log2(toe)) - toe
 
 
-def _toe(gamma: float, offset: float) -> tuple[float, float]:
-    """Where CLF's monCurve (S-2014-006) turns from its line to its power (in code), and the
-    line's slope (linear per code)."""
-    code = offset / (gamma - 1.0)
-    return code, ((code + offset) / (1.0 + offset)) ** gamma / code
-
-
 def mon_decode(code, curve: tuple[float, float]) -> np.ndarray:
-    """Code to linear as CLF's monCurveMirrorFwd: ((c + offset) / (1 + offset))^gamma above its
-    break, a line below, mirrored for negative codes."""
-    gamma, offset = curve
-    brk, slope = _toe(gamma, offset)
-    c = np.abs(np.asarray(code, dtype=np.float64))
-    return np.sign(code) * np.where(c >= brk, ((c + offset) / (1.0 + offset)) ** gamma, c * slope)
+    """Code to linear as CLF's monCurveMirrorFwd: the piecewise power (gamma, offset), mirrored
+    for negative codes."""
+    code = np.asarray(code, dtype=np.float64)
+    return np.sign(code) * PiecewisePower(*curve).decode(np.abs(code))
 
 
 def mon_encode(linear, curve: tuple[float, float]) -> np.ndarray:
     """Linear to code, :func:`mon_decode`'s inverse (CLF's monCurveMirrorRev)."""
-    gamma, offset = curve
-    brk, slope = _toe(gamma, offset)
-    x = np.abs(np.asarray(linear, dtype=np.float64))
-    return np.sign(linear) * np.where(x >= brk * slope, (1.0 + offset) * x ** (1.0 / gamma) - offset, x / slope)
+    linear = np.asarray(linear, dtype=np.float64)
+    return np.sign(linear) * PiecewisePower(*curve).encode(np.abs(linear))
 
 
 @lru_cache(maxsize=32)
