@@ -173,12 +173,12 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     return vt
 
 
-def aces_view_transform(spec: Spec, view, view_luts: dict | None = None) -> ocio.ViewTransform:
+def aces_view_transform(spec: Spec, view) -> ocio.ViewTransform:
     """The view transform of an ACES view (scene reference -> CIE XYZ-D65, as the studio
     configs'): OCIO's builtin where the target version has it, FixedFunction
     ACES_OUTPUT_TRANSFORM_20 for a custom display's own ACES 2.0 view, else its baked
-    lattice (:mod:`generator.luts.aces_lattice`), whose file joins ``view_luts`` when given
-    (a build adds the files its workers bake at its end instead)."""
+    lattice (:mod:`generator.luts.aces_lattice`), whose file the build adds at its end
+    (its workers bake it meanwhile)."""
     from generator.ocio.capabilities import aces_analytic
     from generator.rendering import views
 
@@ -187,8 +187,6 @@ def aces_view_transform(spec: Spec, view, view_luts: dict | None = None) -> ocio
         steps += [ocio.BuiltinTransform(view.style)] if view.style else _aces2_fixed_function(view)
     else:
         name, upper = aces_lattice.file_name(view), aces_lattice.upper(view)
-        if view_luts is not None:
-            add_file(view_luts, name, aces_lattice.ocio_file(aces_lattice.bake(view)))
         steps += [matrix_transform(views.tables(view).ap0_to_ap1),
                   ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
                   ocio.FileTransform(name, interpolation=ocio.INTERP_TETRAHEDRAL),

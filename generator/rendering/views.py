@@ -14,9 +14,10 @@ from functools import lru_cache
 
 import numpy as np
 
+from generator.colorimetry.curves import HALF_MAX
 from generator.rendering import aces2, aces13
 from generator.rendering.aces2_params import ACES2Params
-from generator.rendering.aces2_presets import PRESETS
+from generator.rendering.aces2_presets import D65, P3, PRESETS, REC709, REC2020
 
 #: The studio configs' view with the meaning of our Colorimetric view (scene light to XYZ).
 UNTONEMAPPED = "Un-tone-mapped"
@@ -51,11 +52,7 @@ class ACESView:
 
 
 #: ACES 1.3 limiting gamuts by the name their builtins' styles give (xy, then white).
-_LIMITS13 = {
-    "REC709": ((0.64, 0.33), (0.30, 0.60), (0.15, 0.06)),
-    "P3": ((0.680, 0.320), (0.265, 0.690), (0.150, 0.060)),
-    "REC2020": ((0.708, 0.292), (0.170, 0.797), (0.131, 0.046)),
-}
+_LIMITS13 = {"REC709": REC709, "P3": P3, "REC2020": REC2020}
 
 
 def _limit13(preset) -> tuple[tuple[tuple[float, float], ...], tuple[float, float]]:
@@ -64,8 +61,8 @@ def _limit13(preset) -> tuple[tuple[tuple[float, float], ...], tuple[float, floa
     style = preset.style.rsplit(" - ", 1)[-1]
     for key in ("REC2020", "REC709", "P3"):
         if f"{key}lim" in style:
-            return _LIMITS13[key], (0.3127, 0.3290)
-    return _LIMITS13["P3" if "CINEMA" in style else "REC709"], (0.3127, 0.3290)
+            return _LIMITS13[key], D65
+    return _LIMITS13["P3" if "CINEMA" in style else "REC709"], D65
 
 
 @lru_cache(maxsize=1)
@@ -97,10 +94,6 @@ def _tables(params: ACES2Params):
     return aces2.tables(params)
 
 
-#: Half float's largest value: what an infinite channel is taken as.
-HALF_MAX = 65504.0
-
-
 def evaluate(view: ACESView, aces) -> np.ndarray:
     """ACES2065-1 (..., 3) through ``view`` to CIE XYZ of the display (1.0 = 100 cd/m², or an
     SDR view's display peak, as the studio configs' view transforms end). Infinite channels
@@ -114,13 +107,6 @@ def evaluate(view: ACESView, aces) -> np.ndarray:
         out = np.asarray(aces13.forward13(finite, aces13.PRESETS13[view.name]), dtype=np.float64)
     out[nan] = np.nan
     return out
-
-
-def evaluate_inverse(view: ACESView, xyz) -> np.ndarray:
-    """CIE XYZ (..., 3), 1.0 = 100 cd/m², back through ``view`` to ACES2065-1."""
-    if view.version == "2.0":
-        return aces2.inverse(xyz, _tables(view.params))
-    return aces13.inverse13(xyz, aces13.PRESETS13[view.name])
 
 
 def output_rgb(view: ACESView, aces) -> np.ndarray:
