@@ -19,6 +19,8 @@ run: $(STAMP)
 	$(BIN)/ocioforge verify $(CONFIG)/config.ocio --summary --report build/verify --force
 
 test: $(STAMP)
+	$(BIN)/ruff check generator tests bench
+	$(BIN)/ruff format --check --quiet generator tests bench
 	$(BIN)/pytest -n 2 -p no:warnings
 
 bench: $(STAMP)

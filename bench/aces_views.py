@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import time
 
-import generator  # noqa: F401  (numpy's settings first)
 import numpy as np
 
+import generator  # noqa: F401  (numpy's settings first)
 from generator.colorimetry import reference
 from generator.colorimetry.curves import CURVES
 from generator.colorimetry.gamuts import gamuts
@@ -26,11 +26,13 @@ from generator.spec.load import load
 from generator.verify.metrics import delta_e_itp
 
 #: The display each view is measured on.
-DISPLAYS = {"ACES 2.0 - SDR 100 nits (Rec.709)": "sRGB - Display",
-            "ACES 2.0 - SDR 100 nits (P3 D65)": "Display P3 - Display",
-            "ACES 2.0 - HDR 1000 nits (P3 D65)": "Rec.2100-PQ - Display",
-            "ACES 2.0 - HDR 500 nits (Rec.2020)": "Rec.2100-PQ - Display",
-            "ACES 2.0 - HDR 108 nits (P3 D65)": "ST2084-P3-D65 - Display"}
+DISPLAYS = {
+    "ACES 2.0 - SDR 100 nits (Rec.709)": "sRGB - Display",
+    "ACES 2.0 - SDR 100 nits (P3 D65)": "Display P3 - Display",
+    "ACES 2.0 - HDR 1000 nits (P3 D65)": "Rec.2100-PQ - Display",
+    "ACES 2.0 - HDR 500 nits (Rec.2020)": "Rec.2100-PQ - Display",
+    "ACES 2.0 - HDR 108 nits (P3 D65)": "ST2084-P3-D65 - Display",
+}
 
 
 def probe_sets(display, seed: int = 11, n: int = 20000) -> dict[str, np.ndarray]:
@@ -89,10 +91,14 @@ def main() -> None:
         unit = "ΔE ITP" if display.is_hdr else "10-bit codes"
         for set_name, aces in probe_sets(display).items():
             truth = reference.display_xyz_encode(spec, display, views.evaluate(view, aces))
-            ours = error(spec, display, reference.display_xyz_encode(spec, display, aces_lattice.evaluate(lat, aces)), truth)
+            ours = error(
+                spec, display, reference.display_xyz_encode(spec, display, aces_lattice.evaluate(lat, aces)), truth
+            )
             theirs = error(spec, display, plain(aces), truth)
-            print(f"{name:<36} {set_name:<9} {np.percentile(ours, 99):13.2f} {ours.max():7.1f} "
-                  f"{np.percentile(theirs, 99):10.2f} {theirs.max():7.1f}  {unit}")
+            print(
+                f"{name:<36} {set_name:<9} {np.percentile(ours, 99):13.2f} {ours.max():7.1f} "
+                f"{np.percentile(theirs, 99):10.2f} {theirs.max():7.1f}  {unit}"
+            )
         size_mb = len(aces_lattice.ocio_file(lat)) / 1e6
         print(f"{name:<36} bake {seconds:.2f} s, file {size_mb:.1f} MB ({lat.size}³ table, as the plain recipe's)")
 

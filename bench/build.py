@@ -40,12 +40,16 @@ def main() -> None:
             lut_mb = sum(p.stat().st_size for p in files if p.parent.name == "luts") / 1e6
             views = sum(len(cfg.getViews(d)) for d in cfg.getDisplays())
             target = f"{version[0]}.{version[1]}"
-            print(f"{target:>8} {len(cfg.getColorSpaceNames()):>7} {len(cfg.getDisplays()):>9} "
-                  f"{views:>6} {len(files):>6} {lut_mb:>7.2f} {seconds:>8.2f}")
+            print(
+                f"{target:>8} {len(cfg.getColorSpaceNames()):>7} {len(cfg.getDisplays()):>9} "
+                f"{views:>6} {len(files):>6} {lut_mb:>7.2f} {seconds:>8.2f}"
+            )
     help_seconds = wall([*ocioforge, "--help"], repeat=5)
     python_seconds = wall([sys.executable, "-c", "pass"], repeat=5)
-    print(f"ocioforge --help: {help_seconds:.3f} s (bare python start-up {python_seconds:.3f} s, "
-          f"ratio {help_seconds / python_seconds:.1f}x)")
+    print(
+        f"ocioforge --help: {help_seconds:.3f} s (bare python start-up {python_seconds:.3f} s, "
+        f"ratio {help_seconds / python_seconds:.1f}x)"
+    )
 
 
 if __name__ == "__main__":

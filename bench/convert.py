@@ -17,8 +17,9 @@ import tempfile
 import time
 from pathlib import Path
 
-import generator  # noqa: F401  (numpy's and OpenBLAS's fixed kernels: before numpy loads)
 import numpy as np
+
+import generator  # noqa: F401  (numpy's and OpenBLAS's fixed kernels: before numpy loads)
 
 FRAMES, WIDTH, HEIGHT = 6, 3840, 2160
 SRC, DST = "ARRI LogC4", "ACEScg"
@@ -67,8 +68,11 @@ def engines(config: Path, frame: Path) -> tuple[float, float]:
 
     buf = oiio.ImageBuf(str(frame))
     pixels = buf.get_pixels(oiio.FLOAT).reshape(-1, 3).copy()
-    cpu = ocio.Config.CreateFromFile(str(config)).getProcessor(SRC, DST).getOptimizedCPUProcessor(
-        ocio.OPTIMIZATION_LOSSLESS)
+    cpu = (
+        ocio.Config.CreateFromFile(str(config))
+        .getProcessor(SRC, DST)
+        .getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS)
+    )
     started = time.perf_counter()
     cpu.applyRGB(pixels)
     ours = time.perf_counter() - started
@@ -89,9 +93,26 @@ def main() -> None:
         wall([*ocioforge, "build", "-o", str(config.parent)])
         frames(tmp / "in")
         pattern = str(tmp / "in" / "plate.####.exr")
-        theirs = wall([oiiotool, "--frames", f"1-{FRAMES}", str(tmp / "in" / "plate.#.exr"), "--colorconfig",
-                       str(config), "--colorconvert", SRC, DST, "-d", "half", "--compression", "zip",
-                       "-o", str(tmp / "oiiotool" / "plate.#.exr")], tmp / "oiiotool")
+        theirs = wall(
+            [
+                oiiotool,
+                "--frames",
+                f"1-{FRAMES}",
+                str(tmp / "in" / "plate.#.exr"),
+                "--colorconfig",
+                str(config),
+                "--colorconvert",
+                SRC,
+                DST,
+                "-d",
+                "half",
+                "--compression",
+                "zip",
+                "-o",
+                str(tmp / "oiiotool" / "plate.#.exr"),
+            ],
+            tmp / "oiiotool",
+        )
         args = [*ocioforge, "convert", pattern, "--config", str(config), "--from", SRC, "--to", DST]
         ours = wall([*args, "-o", str(tmp / "ours")], tmp / "ours")
         verified = wall([*args, "-o", str(tmp / "verified"), "--verify"], tmp / "verified")
@@ -103,8 +124,9 @@ def main() -> None:
             seconds = wall([*args, "-o", str(tmp / f"jobs{jobs}"), "--jobs", str(jobs)], tmp / f"jobs{jobs}")
             print(f"ocioforge convert --jobs {jobs}:       {seconds:7.2f} s  {FRAMES / seconds:.2f} frames/s")
         cluster(args, tmp, cores, theirs)
-        same = all((tmp / "ours" / n).read_bytes() == (tmp / "cluster" / n).read_bytes()
-                   for n in os.listdir(tmp / "ours"))
+        same = all(
+            (tmp / "ours" / n).read_bytes() == (tmp / "cluster" / n).read_bytes() for n in os.listdir(tmp / "ours")
+        )
         print(f"cluster output the same bytes as local: {same}")
         ocio_s, iba_s = engines(config, tmp / "in" / "plate.0001.exr")
         print(f"one frame's pixels: PyOpenColorIO lossless {ocio_s:.2f} s, ImageBufAlgo.colorconvert {iba_s:.2f} s")
@@ -113,11 +135,13 @@ def main() -> None:
 def cluster(args: list[str], tmp: Path, cores: int, theirs: float) -> None:
     from distributed import LocalCluster
 
-    with LocalCluster(n_workers=cores, threads_per_worker=1, processes=True, host="127.0.0.1",
-                      dashboard_address=None) as local:
+    with LocalCluster(
+        n_workers=cores, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None
+    ) as local:
         seconds = wall([*args, "-o", str(tmp / "cluster"), "--scheduler", local.scheduler_address], tmp / "cluster")
-    print(f"ocioforge convert --scheduler (LocalCluster, {cores} workers): {seconds:7.2f} s  "
-          f"ratio {seconds / theirs:.2f}")
+    print(
+        f"ocioforge convert --scheduler (LocalCluster, {cores} workers): {seconds:7.2f} s  ratio {seconds / theirs:.2f}"
+    )
 
 
 if __name__ == "__main__":

@@ -43,13 +43,18 @@ import sys
 import tempfile
 from pathlib import Path
 
-import generator  # noqa: F401  (before numpy: the numbers ocioforge itself gets, see generator/backends.py)
 import numpy as np
 
+import generator  # noqa: F401  (before numpy: the numbers ocioforge itself gets, see generator/backends.py)
 from generator.colorimetry import reference
 
-PAIRS = (("ACEScg", "sRGB - Display"), ("ACEScct", "sRGB - Display"), ("ARRI LogC4", "Rec.1886 Rec.709 - Display"),
-         ("Linear Rec.2020", "Gamma 2.6 P3-D65 - Display"), ("ACEScg", "Rec.2100-PQ - Display"))
+PAIRS = (
+    ("ACEScg", "sRGB - Display"),
+    ("ACEScct", "sRGB - Display"),
+    ("ARRI LogC4", "Rec.1886 Rec.709 - Display"),
+    ("Linear Rec.2020", "Gamma 2.6 P3-D65 - Display"),
+    ("ACEScg", "Rec.2100-PQ - Display"),
+)
 METHODS = ("clip", "scale", "desaturate", "rgc", "perceptual")
 #: Displays whose CLF is also measured for every method (HLG has no ociobakelut comparison here).
 EXTRA_DISPLAYS = ("Rec.2100-HLG - Display",)
@@ -82,8 +87,15 @@ def shaper_spaces(spec, source) -> list[str]:
     """Per-channel encodings of ``source``'s primaries other than itself."""
     from generator.colorimetry.transfer import Linear
 
-    return [s.name for s in spec.colour_spaces if s.gamut is not None and s.gamut.name == source.gamut.name
-            and not isinstance(s.curve, Linear) and s.name != source.name and not s.special]
+    return [
+        s.name
+        for s in spec.colour_spaces
+        if s.gamut is not None
+        and s.gamut.name == source.gamut.name
+        and not isinstance(s.curve, Linear)
+        and s.name != source.name
+        and not s.special
+    ]
 
 
 def ocio_bakes(spec, source, display: str, size: int, folder: Path):
@@ -96,8 +108,20 @@ def ocio_bakes(spec, source, display: str, size: int, folder: Path):
         build(for_folder(dataclasses.replace(spec, scene_reference=twin.name), config, (2, 1)), config)
     for number, shaper in enumerate([None, *shaper_spaces(spec, source)]):
         out = folder / f"ociobakelut_{number}.cube"
-        args = ["ociobakelut", "--iconfig", str(config / "config.ocio"), "--inputspace", source.name,
-                "--outputspace", display, "--format", "resolve_cube", "--cubesize", str(size), str(out)]
+        args = [
+            "ociobakelut",
+            "--iconfig",
+            str(config / "config.ocio"),
+            "--inputspace",
+            source.name,
+            "--outputspace",
+            display,
+            "--format",
+            "resolve_cube",
+            "--cubesize",
+            str(size),
+            str(out),
+        ]
         if shaper:
             args[-1:-1] = ["--shaperspace", shaper]
         if subprocess.run(args, capture_output=True, text=True).returncode == 0:
@@ -118,19 +142,21 @@ def clamped_cube(path: Path, out: Path) -> Path:
     lines = path.read_text(encoding="ascii").splitlines(keepends=True)
     shaper = next((int(line.split()[1]) for line in lines if line.startswith("LUT_1D_SIZE")), 0)
     first = next(i for i, line in enumerate(lines) if line[:1] in "-0123456789.")
-    table = np.loadtxt(lines[first + shaper:], ndmin=2)
+    table = np.loadtxt(lines[first + shaper :], ndmin=2)
     body = "".join(f"{r:.5f} {g:.5f} {b:.5f}\n" for r, g, b in np.clip(table, 0.0, 1.0))
-    out.write_text("".join(lines[:first + shaper]) + body, encoding="ascii")
+    out.write_text("".join(lines[: first + shaper]) + body, encoding="ascii")
     return out
 
 
 def _ratios(ours: dict, theirs: dict[str, dict]) -> tuple[str, str]:
     """Lines of p99 ratios (theirs / ours) against the best bake and the per-set best."""
     best = min(theirs, key=lambda shaper: theirs[shaper][OVERALL][1])
-    against_best = "  ".join(f"{name} {theirs[best][name][1] / max(p99, 1e-12):6.2f}x"
-                             for name, (_, p99) in ours.items())
-    per_set = "  ".join(f"{name} {min(t[name][1] for t in theirs.values()) / max(p99, 1e-12):6.2f}x"
-                        for name, (_, p99) in ours.items())
+    against_best = "  ".join(
+        f"{name} {theirs[best][name][1] / max(p99, 1e-12):6.2f}x" for name, (_, p99) in ours.items()
+    )
+    per_set = "  ".join(
+        f"{name} {min(t[name][1] for t in theirs.values()) / max(p99, 1e-12):6.2f}x" for name, (_, p99) in ours.items()
+    )
     return f"vs best bake (shaper {best}): {against_best}", f"vs per-set best: {per_set}"
 
 
@@ -190,8 +216,10 @@ def config_views(spec) -> None:
     lattice (verify holds OCIO to that): its row is the lattice's departure from the mapping."""
     from generator.luts.view import bake_view_lut
 
-    print("\n== config views (as the config runs them) against the mapping, ten-bit codes (SDR) or ΔE ITP (HDR), "
-          "max/p99; perceptual: how far its lattice departs from the mapping")
+    print(
+        "\n== config views (as the config runs them) against the mapping, ten-bit codes (SDR) or ΔE ITP (HDR), "
+        "max/p99; perceptual: how far its lattice departs from the mapping"
+    )
     for display in spec.displays:
         for method in ("scale", "desaturate", "perceptual"):
             lut = bake_view_lut(spec, display, method)
@@ -210,8 +238,10 @@ def gpu_desaturate(spec) -> None:
     from generator.colorimetry import reference
     from generator.luts import hsv, hsv_axes, probes
 
-    print(f"\n== Desaturate views, trilinear weights rounded to {GPU_WEIGHT_BITS} bits (a GPU's texture "
-          "filtering, simulated), ten-bit codes max/p99")
+    print(
+        f"\n== Desaturate views, trilinear weights rounded to {GPU_WEIGHT_BITS} bits (a GPU's texture "
+        "filtering, simulated), ten-bit codes max/p99"
+    )
     for display in (d for d in spec.displays if "Desaturate" in d.views):
         lat, to_display = hsv.hsv_lattice(display), reference.scene_to_display_matrix(spec, display)
         figures = {}
@@ -219,15 +249,20 @@ def gpu_desaturate(spec) -> None:
             values = hsv_axes.ocio_rgb_to_hsv(reference.apply_matrix(to_display, ref) / display.clip_high)
             out = hsv.apply(lat, values, GPU_WEIGHT_BITS)
             light = np.clip(hsv_axes.ocio_hsv_to_rgb(out), 0.0, 1.0) * display.clip_high
-            error = probes.errors(display, reference.display_encode(display, light),
-                                  reference.mapped_view(spec, display, "desaturate", ref))[0]
+            error = probes.errors(
+                display,
+                reference.display_encode(display, light),
+                reference.mapped_view(spec, display, "desaturate", ref),
+            )[0]
             figures[name] = (float(error.max()), float(np.percentile(error, 99)))
         print(f"  {display.name[:24]:24s} {_fmt(figures)}")
 
 
 #: ACES views baked by ``ocioforge bake --view``, each on a display that shows it, from these sources.
-ACES_VIEWS = (("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
-              ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"))
+ACES_VIEWS = (
+    ("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
+    ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"),
+)
 ACES_SOURCES = ("ACEScct", "ACEScg")
 ACES_FORMATS = ("clf", "resolve_cube", "iridas_cube", "spi3d")
 #: The ACES studio config whose views ociobakelut bakes, and the shaper spaces it takes there
@@ -246,8 +281,21 @@ def studio_bakes(source: str, view: str, display: str, folder: Path):
         if shaper is None and count != STUDIO_SHAPER_SIZES[0]:
             continue
         out = folder / f"studio_{number}.cube"
-        args = [str(tool if tool.exists() else "ociobakelut"), "--iconfig", STUDIO_CONFIG, "--inputspace", source,
-                "--displayview", display, view, "--format", "resolve_cube", "--cubesize", str(ACES_CUBE_SIZE), str(out)]
+        args = [
+            str(tool if tool.exists() else "ociobakelut"),
+            "--iconfig",
+            STUDIO_CONFIG,
+            "--inputspace",
+            source,
+            "--displayview",
+            display,
+            view,
+            "--format",
+            "resolve_cube",
+            "--cubesize",
+            str(ACES_CUBE_SIZE),
+            str(out),
+        ]
         if shaper:
             args[-1:-1] = ["--shaperspace", shaper, "--shapersize", str(count)]
         if subprocess.run(args, capture_output=True, text=True).returncode == 0:
@@ -299,8 +347,10 @@ def aces_views(spec, folder: Path) -> None:
         return probes.ocio_apply(steps[0] if len(steps) == 1 else ocio.GroupTransform(steps))
 
     print(f"\n== ACES views, {ACES_CUBE_SIZE}^3, p99 / max per probe set (ten-bit codes; HDR: ΔE ITP)")
-    print("| view (display) | source | set | CLF | Resolve .cube | Iridas .cube | .spi3d | ociobakelut's best "
-          "| plain recipe |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    print(
+        "| view (display) | source | set | CLF | Resolve .cube | Iridas .cube | .spi3d | ociobakelut's best "
+        "| plain recipe |\n| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    )
     for view, display_name in ACES_VIEWS:
         for source_name in ACES_SOURCES:
             ours, seconds = {}, {}
@@ -322,17 +372,28 @@ def aces_views(spec, folder: Path) -> None:
                     best = (p99, _aces_figures(spec, source, display, view, read([path])), shaper)
             plain = plain_recipe(spec, display, views.catalogue()[view])
             to_aces = reference.to_aces_matrix(spec) @ reference.space_matrix(spec, source)
-            plain_figures = _aces_figures(spec, source, display, view,
-                                          lambda code: plain(reference.apply_matrix(to_aces, source.curve.decode(code))))
+            plain_figures = _aces_figures(
+                spec,
+                source,
+                display,
+                view,
+                lambda code: plain(reference.apply_matrix(to_aces, source.curve.decode(code))),  # noqa: B023 (called at once)
+            )
             for name in plain_figures:
-                cells = [f"{ours[f][name][0]:.2f} / {ours[f][name][1]:.1f}" if f in ours else "refused"
-                         for f in ACES_FORMATS]
+                cells = [
+                    f"{ours[f][name][0]:.2f} / {ours[f][name][1]:.1f}" if f in ours else "refused" for f in ACES_FORMATS
+                ]
                 theirs = f"{best[1][name][0]:.2f} / {best[1][name][1]:.1f}" if best else "none"
-                print(f"| {view} ({display_name}) | {source_name} | {name} | {' | '.join(cells)} | {theirs} | "
-                      f"{plain_figures[name][0]:.2f} / {plain_figures[name][1]:.1f} |")
+                print(
+                    f"| {view} ({display_name}) | {source_name} | {name} | {' | '.join(cells)} | {theirs} | "
+                    f"{plain_figures[name][0]:.2f} / {plain_figures[name][1]:.1f} |"
+                )
             label = best[2] if best else "none"
-            print(f"  (ociobakelut's best: shaper {label}; bake seconds: "
-                  + ", ".join(f"{f} {t:.2f}" for f, t in seconds.items()) + ")")
+            print(
+                f"  (ociobakelut's best: shaper {label}; bake seconds: "
+                + ", ".join(f"{f} {t:.2f}" for f, t in seconds.items())
+                + ")"
+            )
 
 
 def main(argv=None) -> None:

@@ -51,11 +51,39 @@ def main() -> None:
         folder = Path(tmp)
         config = folder / "ocioforge-bench"
         build(for_folder(load.load(), config, (2, 1)), config)
-        theirs, _ = best_time(["ociobakelut", "--iconfig", str(config / "config.ocio"), "--inputspace", "ACEScg",
-                               "--outputspace", "sRGB - Display", "--format", "resolve_cube", "--cubesize", str(SIZE),
-                               str(folder / "theirs.cube")])
-        bake = [sys.executable, "-c", OCIOFORGE, "bake", "--from", "ACEScg", "--to", "sRGB - Display",
-                "--gamut-map", "clip", "--size", str(SIZE), "-o", str(folder / "ours.cube"), "--force"]
+        theirs, _ = best_time(
+            [
+                "ociobakelut",
+                "--iconfig",
+                str(config / "config.ocio"),
+                "--inputspace",
+                "ACEScg",
+                "--outputspace",
+                "sRGB - Display",
+                "--format",
+                "resolve_cube",
+                "--cubesize",
+                str(SIZE),
+                str(folder / "theirs.cube"),
+            ]
+        )
+        bake = [
+            sys.executable,
+            "-c",
+            OCIOFORGE,
+            "bake",
+            "--from",
+            "ACEScg",
+            "--to",
+            "sRGB - Display",
+            "--gamut-map",
+            "clip",
+            "--size",
+            str(SIZE),
+            "-o",
+            str(folder / "ours.cube"),
+            "--force",
+        ]
         ours, report = best_time(bake)
         cached = {key: value for key, value in os.environ.items() if key != "PYTHONDONTWRITEBYTECODE"}
         cached["PYTHONPYCACHEPREFIX"] = str(folder / "bytecode")
@@ -66,9 +94,13 @@ def main() -> None:
     print(f"  ocioforge bake   {ours:6.3f} s   ({report})")
     print(f"  bytecode cached  {ours_cached:6.3f} s   ({report_cached.rsplit('(', 1)[1]}")
     inside = float(report.rsplit("(", 1)[1].split(" s)")[0])
-    print(f"  of which start-up {ours - inside:5.3f} s (Python, numpy, click, the spec: the bake's own report subtracted)")
-    print(f"  ratio ocioforge / ociobakelut: {ours / theirs:.2f}x ({ours_cached / theirs:.2f}x bytecode cached); "
-          f"baking and writing alone: {inside / theirs:.2f}x")
+    print(
+        f"  of which start-up {ours - inside:5.3f} s (Python, numpy, click, the spec: the bake's own report subtracted)"
+    )
+    print(
+        f"  ratio ocioforge / ociobakelut: {ours / theirs:.2f}x ({ours_cached / theirs:.2f}x bytecode cached); "
+        f"baking and writing alone: {inside / theirs:.2f}x"
+    )
 
 
 if __name__ == "__main__":

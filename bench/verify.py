@@ -28,7 +28,8 @@ OCIO_BUDGET_SECONDS = 30.0
 
 
 def build(folder: Path) -> Path:
-    from generator.ocio.write import build as write, for_folder
+    from generator.ocio.write import build as write
+    from generator.ocio.write import for_folder
     from generator.spec import load
 
     target = folder / "ocioforge-bench"
@@ -66,20 +67,29 @@ def main() -> int:
                 if run.skipped:
                     print(f"{run.name:<24} {'-':>8}  not run: {run.skipped}")
                     continue
-                figures = [f"{kind} {g['max']:.2g}/{g['p99']:.2g} ({g['tolerance']:g} {metric})"
-                           for (engine, kind, metric), g in report.groups(result).items() if engine.startswith(run.name)]
+                figures = [
+                    f"{kind} {g['max']:.2g}/{g['p99']:.2g} ({g['tolerance']:g} {metric})"
+                    for (engine, kind, metric), g in report.groups(result).items()
+                    if engine.startswith(run.name)
+                ]
                 print(f"{run.name:<24} {run.seconds:>8.2f}  " + "; ".join(figures))
-            print(f"{'  ' + family + ' wall time':<24} {wall:>8.2f}  (checks built in {result.timings['checks']:.2f} s; "
-                  f"{len(result.failures)} failing)")
+            print(
+                f"{'  ' + family + ' wall time':<24} {wall:>8.2f}  (checks built in {result.timings['checks']:.2f} s; "
+                f"{len(result.failures)} failing)"
+            )
             if family == "ocio":
                 ocio_total = wall
         seconds = ociocheck_seconds(config)
         if seconds is not None and ocio_total is not None:
-            print(f"ociocheck (no numbers compared): {seconds:.2f} s; ocio verify / ociocheck = {ocio_total / seconds:.1f}")
+            print(
+                f"ociocheck (no numbers compared): {seconds:.2f} s; ocio verify / ociocheck = {ocio_total / seconds:.1f}"
+            )
     if ocio_total is not None:
         verdict = "within" if ocio_total <= OCIO_BUDGET_SECONDS else "OVER"
-        print(f"PyOpenColorIO verify of the default config: {ocio_total:.1f} s, {verdict} the {OCIO_BUDGET_SECONDS:g} s budget "
-              f"({os.cpu_count()} cores)")
+        print(
+            f"PyOpenColorIO verify of the default config: {ocio_total:.1f} s, {verdict} the {OCIO_BUDGET_SECONDS:g} s budget "
+            f"({os.cpu_count()} cores)"
+        )
         return 0 if ocio_total <= OCIO_BUDGET_SECONDS else 1
     return 0
 

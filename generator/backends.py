@@ -50,8 +50,11 @@ def _pin(environ) -> None:
 def _pinned_already(environ) -> bool:
     """Whether ``environ`` already holds :data:`PINNED` (a numpy loaded with it has its baseline)."""
     disabled = environ.get("NPY_DISABLE_CPU_FEATURES", "").replace(",", " ").split()
-    return ("NPY_ENABLE_CPU_FEATURES" not in environ and set(NUMPY_ABOVE_BASELINE) <= set(disabled)
-            and environ.get("OPENBLAS_CORETYPE") == OPENBLAS_CORE)
+    return (
+        "NPY_ENABLE_CPU_FEATURES" not in environ
+        and set(NUMPY_ABOVE_BASELINE) <= set(disabled)
+        and environ.get("OPENBLAS_CORETYPE") == OPENBLAS_CORE
+    )
 
 
 # A command multiplies 3×3 matrices, never large ones, so OpenBLAS's thread pool (numpy starts
@@ -61,9 +64,12 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 if fixes_numbers():
     if "numpy" in sys.modules and not _pinned_already(os.environ):
-        warnings.warn("numpy was loaded before generator, with the SIMD functions and OpenBLAS kernels of this "
-                      "processor: files written may differ in their last digit from other machines'; import "
-                      "generator first, or set " + " ".join(f"{k}={v!r}" for k, v in PINNED.items()),
-                      RuntimeWarning, stacklevel=2)
+        warnings.warn(
+            "numpy was loaded before generator, with the SIMD functions and OpenBLAS kernels of this "
+            "processor: files written may differ in their last digit from other machines'; import "
+            "generator first, or set " + " ".join(f"{k}={v!r}" for k, v in PINNED.items()),
+            RuntimeWarning,
+            stacklevel=2,
+        )
     else:
         _pin(os.environ)

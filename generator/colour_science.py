@@ -12,7 +12,9 @@ import importlib
 import sys
 import types
 
-_PLACEHOLDER = types.ModuleType("colour.plotting", "Placeholder: ocioforge imports colour-science's plotting on demand.")
+_PLACEHOLDER = types.ModuleType(
+    "colour.plotting", "Placeholder: ocioforge imports colour-science's plotting on demand."
+)
 
 
 def skip_plotting() -> None:

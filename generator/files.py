@@ -111,7 +111,9 @@ def check_file_output(path: str | Path) -> None:
     try:
         os.stat(parent)
     except FileNotFoundError:
-        raise Refused(path, f"its folder {str(parent)!r} does not exist; allowed: a file in an existing folder") from None
+        raise Refused(
+            path, f"its folder {str(parent)!r} does not exist; allowed: a file in an existing folder"
+        ) from None
     except OSError:
         pass  # a file or a loop of links where the folder should be: the write names the OS's reason
 
@@ -291,8 +293,9 @@ def _move_back(aside: Path, folder: Path) -> None:
         aside.rename(folder)
         aside.parent.rmdir()
     except OSError as error:
-        raise CannotWrite(folder, OSError(error.errno, f"{error.strerror}; what was there is kept in "
-                                          f"{aside}")) from error
+        raise CannotWrite(
+            folder, OSError(error.errno, f"{error.strerror}; what was there is kept in {aside}")
+        ) from error
 
 
 @contextmanager

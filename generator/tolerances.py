@@ -222,8 +222,12 @@ LUT_CLF_HLG_DELTA_E_ITP = 0.25
 OCIOBAKELUT_P99 = {
     ("ACEScg", "sRGB - Display"): {"in_gamut": 86.7, "dark": 73.4, "out_of_gamut": 146.3, "over_range": 245.8},
     ("ACEScct", "sRGB - Display"): {"in_gamut": 71.4, "dark": 12.4, "out_of_gamut": 146.6, "over_range": 246.2},
-    ("ARRI LogC4", "Rec.1886 Rec.709 - Display"): {"in_gamut": 100.4, "dark": 33.3, "out_of_gamut": 193.4,
-                                                   "over_range": 318.9},
+    ("ARRI LogC4", "Rec.1886 Rec.709 - Display"): {
+        "in_gamut": 100.4,
+        "dark": 33.3,
+        "out_of_gamut": 193.4,
+        "over_range": 318.9,
+    },
     ("ACEScg", "Rec.2100-PQ - Display"): {"in_gamut": 7.00, "dark": 52.6, "out_of_gamut": 9.77, "over_range": 5.15},
 }
 
@@ -257,10 +261,22 @@ LUT_ACES_FILE_ABSOLUTE = 5e-6
 #: 2.0 1000 cd/m² P3 D65 on Rec.2100-PQ) as a Resolve .cube: the figures measured, rounded up
 #: to two digits (docs/aces-views.md gives them beside the plain recipe's and ociobakelut's).
 LUT_ACES_P99 = {
-    ("clf", "sRGB - Display"): {"in_gamut": 2.1, "ap0": 3.3, "dark": 0.70, "bright": 22.0, "greys": 0.45,
-                                "camera": 24.0},
-    ("resolve_cube", "Rec.2100-PQ - Display"): {"in_gamut": 0.42, "ap0": 0.36, "dark": 0.56, "bright": 1.4,
-                                                "greys": 0.59, "camera": 0.79},
+    ("clf", "sRGB - Display"): {
+        "in_gamut": 2.1,
+        "ap0": 3.3,
+        "dark": 0.70,
+        "bright": 22.0,
+        "greys": 0.45,
+        "camera": 24.0,
+    },
+    ("resolve_cube", "Rec.2100-PQ - Display"): {
+        "in_gamut": 0.42,
+        "ap0": 0.36,
+        "dark": 0.56,
+        "bright": 1.4,
+        "greys": 0.59,
+        "camera": 0.79,
+    },
 }
 
 #: Least share of white's luminance each of a display's primaries must give for a Desaturate

@@ -73,11 +73,15 @@ def slugging_alike(tmp_path_factory):
     folder = tmp_path_factory.mktemp("alike")
     (folder / "a.csv").write_text(CURVE_A)
     (folder / "b.csv").write_text(CURVE_B)
-    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
-            '"CanonLog2 CinemaGamut D55"]\n')
+    text = (
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+        '"CanonLog2 CinemaGamut D55"]\n'
+    )
     for name, csv in SLUGGING_ALIKE:
-        text += (f'[[custom_space]]\nname = "{name}"\ngamut = "P3-D65"\n'
-                 f'transfer = {{ family = "tabulated", file = "{csv}" }}\n')
+        text += (
+            f'[[custom_space]]\nname = "{name}"\ngamut = "P3-D65"\n'
+            f'transfer = {{ family = "tabulated", file = "{csv}" }}\n'
+        )
     (folder / "alike.toml").write_text(text + '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
     spec = for_folder(load.load(folder / "alike.toml"), folder / "config", (2, 1))
     build(spec, folder / "config")

@@ -28,8 +28,9 @@ for values in (np.power(x, 2.4), np.exp(x), np.log(x), np.power(x.astype(np.floa
 
 def _numbers(**environ) -> str:
     env = {k: v for k, v in os.environ.items() if not k.startswith(("NPY_", "OPENBLAS_CORETYPE"))}
-    done = subprocess.run([sys.executable, "-c", _NUMBERS], env={**env, **environ}, capture_output=True, text=True,
-                          check=True)
+    done = subprocess.run(
+        [sys.executable, "-c", _NUMBERS], env={**env, **environ}, capture_output=True, text=True, check=True
+    )
     return done.stdout
 
 
@@ -45,13 +46,15 @@ def test_numbers_are_the_same_bits_whatever_kernels_the_environment_asks_for():
 def test_numpy_loaded_first_is_named():
     """A process that loaded numpy before generator keeps that numpy's choices, and is told how to fix them."""
     env = {k: v for k, v in os.environ.items() if not k.startswith(("NPY_", "OPENBLAS_CORETYPE"))}
-    done = subprocess.run([sys.executable, "-c", "import numpy, generator"], env=env, capture_output=True, text=True,
-                          check=True)
+    done = subprocess.run(
+        [sys.executable, "-c", "import numpy, generator"], env=env, capture_output=True, text=True, check=True
+    )
     assert "numpy was loaded before generator" in done.stderr
     assert "OPENBLAS_CORETYPE='Nehalem'" in done.stderr
     pinned = {**env, **backends.PINNED}
-    done = subprocess.run([sys.executable, "-W", "error", "-c", "import numpy, generator"], env=pinned,
-                          capture_output=True, text=True)
+    done = subprocess.run(
+        [sys.executable, "-W", "error", "-c", "import numpy, generator"], env=pinned, capture_output=True, text=True
+    )
     assert done.returncode == 0, done.stderr
 
 
@@ -59,6 +62,10 @@ def test_a_baseline_feature_named_in_the_environment_does_not_stop_numpy():
     """numpy refuses to load when told to turn off a baseline feature; generator sets the list
     whole, every target above the baseline, so a shell's X86_V2 there adds nothing and breaks nothing."""
     env = {k: v for k, v in os.environ.items() if not k.startswith(("NPY_", "OPENBLAS_CORETYPE"))}
-    done = subprocess.run([sys.executable, "-c", "import generator, numpy"], capture_output=True, text=True,
-                          env={**env, "NPY_DISABLE_CPU_FEATURES": "X86_V2 AVX512_ICL"})
+    done = subprocess.run(
+        [sys.executable, "-c", "import generator, numpy"],
+        capture_output=True,
+        text=True,
+        env={**env, "NPY_DISABLE_CPU_FEATURES": "X86_V2 AVX512_ICL"},
+    )
     assert done.returncode == 0, done.stderr

@@ -73,9 +73,8 @@ def test_an_error_filling_the_staged_folder_names_the_folder_and_removes_it(tmp_
     with pytest.raises(CannotWrite, match=r"show: cannot write: No space left on device$"):
         with staged_folder(tmp_path / "show") as staging:
             raise OSError(28, os.strerror(28), str(staging / "config.ocio"))
-    with pytest.raises(FileNotFoundError):
-        with staged_folder(tmp_path / "show"):
-            open(tmp_path / "missing.csv")
+    with pytest.raises(FileNotFoundError), staged_folder(tmp_path / "show"):
+        open(tmp_path / "missing.csv")
     assert list(tmp_path.iterdir()) == []
 
 
@@ -119,9 +118,8 @@ def test_what_is_moved_aside_is_checked_there_and_moved_back_when_refused(tmp_pa
         if len(calls) > 1:
             raise ValueError("changed")
 
-    with pytest.raises(ValueError, match="changed"):
-        with staged_folder(folder, second_refuses) as staging:
-            (staging / "config.ocio").write_bytes(b"new")
+    with pytest.raises(ValueError, match="changed"), staged_folder(folder, second_refuses) as staging:
+        (staging / "config.ocio").write_bytes(b"new")
     assert calls[0] == folder and calls[1] != folder
     assert (folder / "config.ocio").read_bytes() == b"old"
     assert sorted(p.name for p in tmp_path.rglob("*")) == ["config.ocio", "show"]
@@ -195,9 +193,8 @@ def stopped():
 def test_nothing_is_renamed_into_place_once_a_stop_is_recorded(tmp_path, stopped):
     with pytest.raises(Stopped):
         write_atomic(tmp_path / "a.clf", b"x", force=True)
-    with pytest.raises(Stopped):
-        with staged_folder(tmp_path / "show") as staging:
-            (staging / "config.ocio").write_bytes(b"x")
+    with pytest.raises(Stopped), staged_folder(tmp_path / "show") as staging:
+        (staging / "config.ocio").write_bytes(b"x")
     assert list(tmp_path.iterdir()) == []
 
 
@@ -244,9 +241,8 @@ def test_a_signal_while_a_previous_build_is_removed_leaves_nothing_of_it(tmp_pat
     with staged_folder(tmp_path / "show") as staging:
         (staging / "config.ocio").write_bytes(b"old")
     _signalling(monkeypatch, files.shutil, "rmtree")
-    with pytest.raises(Stopped):
-        with staged_folder(tmp_path / "show") as staging:
-            (staging / "config.ocio").write_bytes(b"new")
+    with pytest.raises(Stopped), staged_folder(tmp_path / "show") as staging:
+        (staging / "config.ocio").write_bytes(b"new")
     assert [p.name for p in tmp_path.iterdir()] == ["show"]
     assert (tmp_path / "show" / "config.ocio").read_bytes() == b"new"
 
@@ -303,5 +299,11 @@ def test_what_is_replaced_keeps_its_permissions_under_a_stricter_umask(tmp_path)
     finally:
         os.umask(old)
     modes = {str(p.relative_to(tmp_path)): oct(stat.S_IMODE(p.stat().st_mode)) for p in sorted(tmp_path.rglob("*"))}
-    assert modes == {"show.cube": "0o664", "new.cube": "0o600", "build": "0o2775", "build/luts": "0o775",
-                     "build/config.ocio": "0o644", "build/luts/new.spi1d": "0o600"}
+    assert modes == {
+        "show.cube": "0o664",
+        "new.cube": "0o600",
+        "build": "0o2775",
+        "build/luts": "0o775",
+        "build/config.ocio": "0o644",
+        "build/luts/new.spi1d": "0o600",
+    }

@@ -56,8 +56,10 @@ def printable(text: str) -> str:
     """``text`` with every character a terminal would not print as itself (a newline in a path)
     escaped as Python writes it, so that a message stays one line; a byte of a path that is not
     UTF-8 (which Python holds as a lone surrogate) as that byte, ``\\xff``."""
-    return "".join(c if c.isprintable() else f"\\x{ord(c) - 0xDC00:02x}" if 0xDC80 <= ord(c) <= 0xDCFF
-                   else repr(c)[1:-1] for c in str(text))
+    return "".join(
+        c if c.isprintable() else f"\\x{ord(c) - 0xDC00:02x}" if 0xDC80 <= ord(c) <= 0xDCFF else repr(c)[1:-1]
+        for c in str(text)
+    )
 
 
 class StandardOutputFailed(Exception):
@@ -103,16 +105,23 @@ class ConfigPath(GivenPath):
 
         if isinstance(value, str) and os.path.isdir(value):
             if not os.path.isfile(os.path.join(value, CONFIG_FILENAME)):
-                self.fail(f"{value!r} is a folder without {CONFIG_FILENAME}; allowed: a config file, or a "
-                          f"build's folder holding {CONFIG_FILENAME}", param, ctx)
+                self.fail(
+                    f"{value!r} is a folder without {CONFIG_FILENAME}; allowed: a config file, or a "
+                    f"build's folder holding {CONFIG_FILENAME}",
+                    param,
+                    ctx,
+                )
             value = os.path.join(value, CONFIG_FILENAME)
         if isinstance(value, str) and os.path.exists(value):
             from generator.files import not_readable
 
             why = not_readable(value)
             if why is not None:
-                self.fail(f"{value!r} {why}; allowed: a config file, or a build's folder holding {CONFIG_FILENAME}",
-                          param, ctx)
+                self.fail(
+                    f"{value!r} {why}; allowed: a config file, or a build's folder holding {CONFIG_FILENAME}",
+                    param,
+                    ctx,
+                )
         return super().convert(value, param, ctx)
 
 
@@ -209,8 +218,10 @@ def _checked_run(argv) -> None:
         fail(str(error))
     except StandardOutputFailed as failed:  # Python's own flush at exit must not fail a second time
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        fail(f"standard output: {failed.args[0].strerror or failed.args[0]} (files the command wrote are complete; "
-             "what it printed is lost); allowed: an output with room for it (a file, a pipe or /dev/null)")
+        fail(
+            f"standard output: {failed.args[0].strerror or failed.args[0]} (files the command wrote are complete; "
+            "what it printed is lost); allowed: an output with room for it (a file, a pipe or /dev/null)"
+        )
     except BrokenPipeError:  # the reader stopped reading (| head): no message, as a shell's tools
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         sys.exit(128 + signal.SIGPIPE)
@@ -247,5 +258,7 @@ def _check_environment() -> None:
     if epoch == "":  # CI services export it empty: unset (f2py, which colour-science imports, fails on it)
         del os.environ["SOURCE_DATE_EPOCH"]
     elif epoch is not None and not (epoch.isascii() and epoch.isdigit() and int(epoch) <= LATEST_EPOCH):
-        fail(f"SOURCE_DATE_EPOCH={epoch!r} is not a whole number of seconds since 1970 up to the end of year "
-             f"9999; allowed: unset, or such a number (0 to {LATEST_EPOCH})")
+        fail(
+            f"SOURCE_DATE_EPOCH={epoch!r} is not a whole number of seconds since 1970 up to the end of year "
+            f"9999; allowed: unset, or such a number (0 to {LATEST_EPOCH})"
+        )

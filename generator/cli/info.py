@@ -14,15 +14,22 @@ def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
     from generator.colorimetry import reference
     from generator.spec.load import newest_ocio_version
 
-    out = [f"name:      {space.name}", f"aliases:   {', '.join(space.aliases) or '-'}",
-           f"family:    {space.family}", f"encoding:  {space.encoding}"]
+    out = [
+        f"name:      {space.name}",
+        f"aliases:   {', '.join(space.aliases) or '-'}",
+        f"family:    {space.family}",
+        f"encoding:  {space.encoding}",
+    ]
     if space.description:
         out.append(f"about:     {space.description}")
     if space.gamut is not None:
         g = space.gamut
-        out += [f"gamut:     {g.name}  ({g.citation})",
-                "primaries: " + "  ".join(f"{c} ({x:.5f}, {y:.5f})" for c, (x, y) in zip("RGB", g.primaries)),
-                f"white:     ({g.white[0]:.5f}, {g.white[1]:.5f})", f"curve:     {space.curve_name}: {space.curve!r}"]
+        out += [
+            f"gamut:     {g.name}  ({g.citation})",
+            "primaries: " + "  ".join(f"{c} ({x:.5f}, {y:.5f})" for c, (x, y) in zip("RGB", g.primaries)),
+            f"white:     ({g.white[0]:.5f}, {g.white[1]:.5f})",
+            f"curve:     {space.curve_name}: {space.curve!r}",
+        ]
         out.append(f"18% grey:  code {float(space.curve.encode(np.float64(0.18))):.6f}")
         out.append(f"to {spec.scene_reference} ({_adaptation(spec, g)}):")
         out += ["  " + " ".join(f"{v: .10f}" for v in row) for row in reference.space_matrix(spec, space)]
@@ -65,9 +72,14 @@ def _expression(space, version) -> str:
 
 @click.command(cls=Command, help="Describe a colour space: gamut, white, curve, matrix, how OCIO expresses it.")
 @click.argument("name", type=NAME)
-@click.option("--spec", "spec_path", type=GivenPath(), default=None,
-              help="Take NAME from a spec or a build (its folder or config.ocio), with its scene reference and "
-                   "adaptation (default: the library's spaces, the default spec's).")
+@click.option(
+    "--spec",
+    "spec_path",
+    type=GivenPath(),
+    default=None,
+    help="Take NAME from a spec or a build (its folder or config.ocio), with its scene reference and "
+    "adaptation (default: the library's spaces, the default spec's).",
+)
 def command(name, spec_path):
     from generator.spec.load import load, named_space
 

@@ -16,5 +16,4 @@ def command(file, force):
 
     check_file_output(file)
     write_atomic(file, default_text().encode("utf-8"), force)
-    say(f"{printable(file)}: default spec written; edit it, then: ocioforge build {printable(file)} "
-               "-o configs/NAME")
+    say(f"{printable(file)}: default spec written; edit it, then: ocioforge build {printable(file)} -o configs/NAME")

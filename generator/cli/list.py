@@ -14,23 +14,32 @@ def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
     from generator.colorimetry import library
 
     if what == "displays":
-        return (("display", "gamut", "EOTF", "peak cd/m²", "aliases"),
-                [(d.name, d.gamut, d.eotf, f"{d.peak:g}", ", ".join(d.aliases)) for d in library.DISPLAYS])
+        return (
+            ("display", "gamut", "EOTF", "peak cd/m²", "aliases"),
+            [(d.name, d.gamut, d.eotf, f"{d.peak:g}", ", ".join(d.aliases)) for d in library.DISPLAYS],
+        )
     if what == "views":
         from generator.rendering.views import catalogue
 
-        return (("ACES view", "ACES", "peak cd/m²", "OCIO builtin"),
-                [(v.name, v.version, f"{v.peak:g}", v.style.rsplit(" - ", 1)[-1]) for v in catalogue().values()])
+        return (
+            ("ACES view", "ACES", "peak cd/m²", "OCIO builtin"),
+            [(v.name, v.version, f"{v.peak:g}", v.style.rsplit(" - ", 1)[-1]) for v in catalogue().values()],
+        )
     if what == "curves":
         from generator.colorimetry.curves import CURVES
 
         return ("curve", "family"), [(name, type(curve).__name__) for name, curve in CURVES.items()]
-    return (("colour space", "family", "gamut", "curve", "aliases"),
-            [(s.name, s.family, s.gamut or "-", s.curve, ", ".join(s.aliases)) for s in library.SPACES])
+    return (
+        ("colour space", "family", "gamut", "curve", "aliases"),
+        [(s.name, s.family, s.gamut or "-", s.curve, ", ".join(s.aliases)) for s in library.SPACES],
+    )
 
 
-@click.command(cls=Command, help="List the library's colour spaces (default), displays, curves or ACES views; piped, "
-                    "one tab-separated line per row.")
+@click.command(
+    cls=Command,
+    help="List the library's colour spaces (default), displays, curves or ACES views; piped, "
+    "one tab-separated line per row.",
+)
 @click.option("--displays", is_flag=True, help="List displays.")
 @click.option("--curves", is_flag=True, help="List transfer functions.")
 @click.option("--views", is_flag=True, help="List the ACES views a display's views may name.")
@@ -41,8 +50,11 @@ def command(displays, curves, views, spaces):
     given = (("spaces", spaces), ("displays", displays), ("curves", curves), ("views", views))
     chosen = [name for name, flag in given if flag]
     if len(chosen) > 1:
-        raise SpecError("ocioforge list", f"--{chosen[1]}", f"given with --{chosen[0]}; allowed: one of --spaces, "
-                        "--displays, --curves, --views")
+        raise SpecError(
+            "ocioforge list",
+            f"--{chosen[1]}",
+            f"given with --{chosen[0]}; allowed: one of --spaces, --displays, --curves, --views",
+        )
     header, rows = _rows(chosen[0] if chosen else "spaces")
     if not sys.stdout.isatty():  # piped (grep, a script): never wrapped
         for row in (header, *rows):

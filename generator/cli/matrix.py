@@ -22,8 +22,11 @@ def _ocio_snippet(matrix) -> str:
     cs = ocio.ColorSpace(name="matrix")
     cs.setTransform(matrix_transform(matrix), ocio.COLORSPACE_DIR_TO_REFERENCE)
     cfg.addColorSpace(cs)
-    return next(line.split("to_scene_reference:")[1].strip() for line in cfg.serialize().splitlines()
-                if "MatrixTransform" in line)
+    return next(
+        line.split("to_scene_reference:")[1].strip()
+        for line in cfg.serialize().splitlines()
+        if "MatrixTransform" in line
+    )
 
 
 def _node_name(space) -> str:
@@ -64,14 +67,23 @@ def render(matrix, fmt: str, label: str) -> str:
 @click.command(cls=Command, help="Print the 3x3 matrix taking linear SRC RGB to linear DST RGB (column vectors).")
 @click.argument("src", type=NAME)
 @click.argument("dst", type=NAME)
-@click.option("--cat", type=NAME, default=None,
-              help="Chromatic adaptation: Bradford, CAT02, CAT16, von Kries, XYZ scaling, none (default: the one "
-                   "behind each camera gamut's published matrices, else Bradford, through ACES2065-1 as a config "
-                   "with the default spec converts).")
+@click.option(
+    "--cat",
+    type=NAME,
+    default=None,
+    help="Chromatic adaptation: Bradford, CAT02, CAT16, von Kries, XYZ scaling, none (default: the one "
+    "behind each camera gamut's published matrices, else Bradford, through ACES2065-1 as a config "
+    "with the default spec converts).",
+)
 @click.option("--format", "fmt", type=click.Choice(FORMATS, case_sensitive=False), default="plain", show_default=True)
-@click.option("--spec", "spec_path", type=GivenPath(), default=None,
-              help="Take SRC and DST from a spec or a build (its folder or config.ocio), converted as its config "
-                   "does (default: the library's spaces).")
+@click.option(
+    "--spec",
+    "spec_path",
+    type=GivenPath(),
+    default=None,
+    help="Take SRC and DST from a spec or a build (its folder or config.ocio), converted as its config "
+    "does (default: the library's spaces).",
+)
 def command(src, dst, cat, fmt, spec_path):
     from generator.colorimetry.matrices import CATS, rgb_to_rgb
     from generator.spec.schema import SpecError
@@ -79,7 +91,9 @@ def command(src, dst, cat, fmt, spec_path):
     if cat is not None:
         chosen = next((c for c in CATS if c.lower() == cat.lower()), None)
         if chosen is None:
-            raise SpecError("ocioforge matrix", "--cat", f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
+            raise SpecError(
+                "ocioforge matrix", "--cat", f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}"
+            )
         cat = chosen
     from generator.spec import load
 
@@ -100,4 +114,3 @@ def command(src, dst, cat, fmt, spec_path):
         matrix = published_matrix(*(s.gamut for s in spaces))
     label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
     say(render(matrix, fmt, label))
-

@@ -11,17 +11,23 @@ from generator.cli import NAME, Command, ConfigPath, GivenPath, printable, say
 FORMATS = ("png", "svg", "pdf")
 
 
-@click.command(cls=Command,
-               help="Draw the CIE 1931 xy diagram of CONFIG's colour spaces and displays (from the spec "
-                    "stored beside it): the spectral locus and every gamut triangle. With --mapping, the "
-                    "verifier's probe colours and where each gamut-mapping method sends them on a display "
-                    "(--display, by default the first).")
+@click.command(
+    cls=Command,
+    help="Draw the CIE 1931 xy diagram of CONFIG's colour spaces and displays (from the spec "
+    "stored beside it): the spectral locus and every gamut triangle. With --mapping, the "
+    "verifier's probe colours and where each gamut-mapping method sends them on a display "
+    "(--display, by default the first).",
+)
 @click.argument("config", type=ConfigPath(dir_okay=False))
-@click.option("-o", "--output", required=True, type=GivenPath(),
-              help="Image to write: .png, .svg or .pdf.")
+@click.option("-o", "--output", required=True, type=GivenPath(), help="Image to write: .png, .svg or .pdf.")
 @click.option("--mapping", is_flag=True, help="Add the probe colours and each gamut mapping's result.")
-@click.option("--display", "display_name", type=NAME, default=None,
-              help="With --mapping: the display (name or alias; default: the spec's first).")
+@click.option(
+    "--display",
+    "display_name",
+    type=NAME,
+    default=None,
+    help="With --mapping: the display (name or alias; default: the spec's first).",
+)
 @click.option("--force", is_flag=True, help="Replace an existing image (through a link, the file it points to).")
 def command(config, output, mapping, display_name, force):
     from generator.files import check_file_output, target, write_atomic
@@ -51,5 +57,6 @@ def _display(spec, name: str | None):
     for display in spec.displays:
         if name.lower() in (n.lower() for n in (display.name, *display.aliases)):
             return display
-    raise SpecError("ocioforge plot", "--display", f"unknown display {name!r}; allowed: "
-                    f"{', '.join(d.name for d in spec.displays)}")
+    raise SpecError(
+        "ocioforge plot", "--display", f"unknown display {name!r}; allowed: {', '.join(d.name for d in spec.displays)}"
+    )

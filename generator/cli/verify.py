@@ -12,21 +12,36 @@ from generator.cli import NAME, Command, ConfigPath, GivenPath, fail, printable,
 ENGINES = "ocio,oiiotool,ocioconvert,blender"
 
 
-@click.command(cls=Command,
-               help="Verify CONFIG (a build's folder, or its config.ocio): probe images through OCIO engines against the "
-                    "float64 evaluation of the spec stored beside it. Exit status 1 if any check fails, or if an "
-                    "engine --engines names cannot run.")
+@click.command(
+    cls=Command,
+    help="Verify CONFIG (a build's folder, or its config.ocio): probe images through OCIO engines against the "
+    "float64 evaluation of the spec stored beside it. Exit status 1 if any check fails, or if an "
+    "engine --engines names cannot run.",
+)
 @click.argument("config", type=ConfigPath(dir_okay=False))
-@click.option("--engines", type=NAME, default=ENGINES, show_default=True,
-              help="Comma-separated: ocio (PyOpenColorIO, default and lossless flags), oiiotool, ocioconvert, blender, "
-                   "gpu (OCIO's GLSL shaders drawn on an OpenGL device, as hosts' viewers draw; named only). Of the "
-                   "default list, those not installed are reported as not run; named, they must run.")
-@click.option("--report", "report_dir", type=GivenPath(file_okay=False),
-              help="Folder to write report.html (self-contained) and summary.json into.")
+@click.option(
+    "--engines",
+    type=NAME,
+    default=ENGINES,
+    show_default=True,
+    help="Comma-separated: ocio (PyOpenColorIO, default and lossless flags), oiiotool, ocioconvert, blender, "
+    "gpu (OCIO's GLSL shaders drawn on an OpenGL device, as hosts' viewers draw; named only). Of the "
+    "default list, those not installed are reported as not run; named, they must run.",
+)
+@click.option(
+    "--report",
+    "report_dir",
+    type=GivenPath(file_okay=False),
+    help="Folder to write report.html (self-contained) and summary.json into.",
+)
 @click.option("--force", is_flag=True, help="Replace the report's files in --report's folder.")
 @click.option("--quick", is_flag=True, help="Small probe sets: every check, far fewer samples.")
-@click.option("--only", type=NAME, default=None,
-              help="Run only the checks whose title contains this text (e.g. HLG); an error if none does.")
+@click.option(
+    "--only",
+    type=NAME,
+    default=None,
+    help="Run only the checks whose title contains this text (e.g. HLG); an error if none does.",
+)
 @click.option("--summary", "summary_only", is_flag=True, help="Print the summary, not every row.")
 @click.pass_context
 def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
@@ -66,8 +81,10 @@ def _check_report_folder(folder: Path, force: bool) -> None:
     from generator.verify.report import report_paths
 
     existing = next(p for p in (folder, *folder.parents) if p.exists())
-    for code, broken in ((errno.ENOTDIR, not existing.is_dir()),
-                         (errno.EACCES, not os.access(existing, os.W_OK | os.X_OK))):
+    for code, broken in (
+        (errno.ENOTDIR, not existing.is_dir()),
+        (errno.EACCES, not os.access(existing, os.W_OK | os.X_OK)),
+    ):
         if broken:
             raise CannotWrite(folder, OSError(code, os.strerror(code)))
     if existing != folder:  # a folder to make: try there (os.access passes root everywhere, /proc too)

@@ -54,6 +54,7 @@ from generator.colorimetry.transfer import (
 #: Largest finite half float: the top of the linear range a LUT domain must reach.
 HALF_MAX = 65504.0
 
+
 def _colour_models(name: str, **kwargs):
     """colour.models.<name> with ``kwargs``; colour-science is imported at the first call,
     not with this module (it takes a second to import)."""

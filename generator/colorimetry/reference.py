@@ -172,8 +172,9 @@ def gamut_map(display: Display, method: str, linear, params=None) -> np.ndarray:
     return METHODS[method](np.asarray(linear, dtype=np.float64) / display.clip_high, gamut, params)
 
 
-def method_params(spec: Spec, method: str, params=None, source: ColourSpace | None = None,
-                  display: Display | None = None):
+def method_params(
+    spec: Spec, method: str, params=None, source: ColourSpace | None = None, display: Display | None = None
+):
     """``params`` if given, else the spec's for ``method``: its RGC parameters; for a
     perceptual mapping from a known ``source`` (a bake) to ``display``, the source's gamut,
     so that its boundary lands on the display's (:func:`source_gamut_matrix`); None, the
@@ -207,8 +208,9 @@ def mapped_view(spec: Spec, display: Display, method: str, ref, params=None) -> 
     (see :func:`map_display_linear`). ``mapped_view(..., "clip")`` is
     :func:`colorimetric_view`. ``params`` None takes the spec's (:func:`method_params`).
     """
-    return map_display_linear(display, method, apply_matrix(scene_to_display_matrix(spec, display), ref),
-                              method_params(spec, method, params))
+    return map_display_linear(
+        display, method, apply_matrix(scene_to_display_matrix(spec, display), ref), method_params(spec, method, params)
+    )
 
 
 def aces_view_of(display: Display, view: str):

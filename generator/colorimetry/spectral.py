@@ -293,9 +293,11 @@ def _check_power(path, values: np.ndarray, lines: list[int], name: str) -> None:
     if not np.any(values > 0.0):
         raise ValueError(f"{path}: column {name!r} is zero throughout; a spectrum needs some positive power")
     if values.max() < MINIMUM_PEAK_POWER:
-        raise ValueError(f"{path}: column {name!r} peaks at {values.max():g}, below the smallest normal float "
-                         f"({MINIMUM_PEAK_POWER:g}), where values lose their digits; allowed: the spectrum scaled up "
-                         "(only its shape sets the chromaticity)")
+        raise ValueError(
+            f"{path}: column {name!r} peaks at {values.max():g}, below the smallest normal float "
+            f"({MINIMUM_PEAK_POWER:g}), where values lose their digits; allowed: the spectrum scaled up "
+            "(only its shape sets the chromaticity)"
+        )
 
 
 def _check_float32(path, values: np.ndarray, lines: list[int], name: str) -> None:
@@ -304,9 +306,11 @@ def _check_float32(path, values: np.ndarray, lines: list[int], name: str) -> Non
         beyond = np.flatnonzero(~np.isfinite(values.astype(np.float32)))
     if beyond.size:
         i = int(beyond[0])
-        raise ValueError(f"{path}, line {lines[i]}: {name} {values[i]:g} is beyond float32's range "
-                         f"(±{float(np.finfo(np.float32).max):.4g}), in which OCIO's LUTs hold their values; "
-                         "allowed: values within it")
+        raise ValueError(
+            f"{path}, line {lines[i]}: {name} {values[i]:g} is beyond float32's range "
+            f"(±{float(np.finfo(np.float32).max):.4g}), in which OCIO's LUTs hold their values; "
+            "allowed: values within it"
+        )
 
 
 #: Rows a distribution needs for the Sprague quintic (colour-science's minimum).
@@ -321,8 +325,13 @@ def _sd(wavelengths: np.ndarray, values: np.ndarray, name: str) -> colour.Spectr
     :data:`CURVED_ROWS` rows, which neither takes, interpolate linearly."""
     steps = np.diff(wavelengths)
     even = np.allclose(steps, steps[0], rtol=0.0, atol=1e-9 * max(1.0, float(steps[0])))
-    interpolator = (colour.LinearInterpolator if len(wavelengths) < CURVED_ROWS else
-                    colour.SpragueInterpolator if even else colour.CubicSplineInterpolator)
+    interpolator = (
+        colour.LinearInterpolator
+        if len(wavelengths) < CURVED_ROWS
+        else colour.SpragueInterpolator
+        if even
+        else colour.CubicSplineInterpolator
+    )
     return colour.SpectralDistribution(values, wavelengths, interpolator=interpolator, name=name)
 
 

@@ -13,8 +13,8 @@ and display-relative (1.0 = 100 cd/m², the reference white) for display EOTFs.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Callable
 
 import numpy as np
 
@@ -65,8 +65,9 @@ def float32_departure(curve, floor: float, samples: int = 4097) -> float:
     with np.errstate(all="ignore"):
         decoded, encoded = curve.float32(codes.astype(np.float32), light.astype(np.float32))
         slack = curve.argument_rounding(light) if hasattr(curve, "argument_rounding") else 0.0
-        worst = np.concatenate([_relative(decoded, curve.decode(codes), floor),
-                                _relative(encoded, curve.encode(light), floor, slack)])
+        worst = np.concatenate(
+            [_relative(decoded, curve.decode(codes), floor), _relative(encoded, curve.encode(light), floor, slack)]
+        )
     return float(worst.max(initial=0.0))
 
 
@@ -227,7 +228,9 @@ class LogCamera:
 
     def decode(self, code):
         y = _array(code)
-        lin = (self.base ** ((y - self.log_side_offset) / self.log_side_slope) - self.lin_side_offset) / self.lin_side_slope
+        lin = (
+            self.base ** ((y - self.log_side_offset) / self.log_side_slope) - self.lin_side_offset
+        ) / self.lin_side_slope
         if self.lin_side_break is None:
             return lin
         toe = (y - self.break_code) / self.toe_slope + self.lin_side_break
@@ -238,8 +241,10 @@ class LogCamera:
         evaluates it. Extreme parameters (a huge base, a tiny slope, offsets far from the codes, a
         break far above black) lose the curve to float32 cancellation or overflow."""
         f = np.float32
-        b, s, o, ls, lo = (f(v) for v in (self.base, self.log_side_slope, self.log_side_offset, self.lin_side_slope,
-                                           self.lin_side_offset))
+        b, s, o, ls, lo = (
+            f(v)
+            for v in (self.base, self.log_side_slope, self.log_side_offset, self.lin_side_slope, self.lin_side_offset)
+        )
         lin = (b ** ((codes - o) / s) - lo) / ls
         code = s * np.log(ls * light + lo) / f(math.log(self.base)) + o
         if self.lin_side_break is not None:

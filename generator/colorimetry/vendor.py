@@ -168,8 +168,7 @@ VENDOR_GAMUTS = MappingProxyType(
                 "Samsung Log Gamut",
                 _BT2020,
                 _D65,
-                "Samsung Electronics (2025). Samsung Log White Paper, Table 2: "
-                "ITU-R BT.2020 primaries, D65 white.",
+                "Samsung Electronics (2025). Samsung Log White Paper, Table 2: ITU-R BT.2020 primaries, D65 white.",
             ),
             GamutData(
                 "Xiaomi Mi-Log Gamut",

@@ -75,8 +75,11 @@ def load(path: str, verify: bool):
 
         why = not_readable(path)
         if why is not None:
-            raise SpecError(path, "-", f"no such config file (it {why}); allowed: a config file, a build's folder, "
-                                       "or $OCIO naming one")
+            raise SpecError(
+                path,
+                "-",
+                f"no such config file (it {why}); allowed: a config file, a build's folder, or $OCIO naming one",
+            )
     try:
         return ocio.Config.CreateFromFile(path)
     except Exception as error:  # PyOpenColorIO.Exception
@@ -93,8 +96,12 @@ def colour_space(cfg, name: str, option: str) -> str:
     space = cfg.getColorSpace(name)
     if space is None:
         names = list(cfg.getColorSpaceNames())
-        raise SpecError(option, name, f"is no colour space, alias or role of the config{_near(name, names)}; "
-                                      "allowed: `ocioforge list`, or the config's own names")
+        raise SpecError(
+            option,
+            name,
+            f"is no colour space, alias or role of the config{_near(name, names)}; "
+            "allowed: `ocioforge list`, or the config's own names",
+        )
     return space.getName()
 
 
@@ -104,8 +111,11 @@ def display_view(cfg, display: str, view: str | None) -> tuple[str, str]:
 
     displays = list(cfg.getDisplaysAll())
     if display not in displays:
-        raise SpecError("--display", display, f"is no display of the config{_near(display, displays)}; "
-                                              f"allowed: {', '.join(displays)}")
+        raise SpecError(
+            "--display",
+            display,
+            f"is no display of the config{_near(display, displays)}; allowed: {', '.join(displays)}",
+        )
     views = list(cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, display)) + list(cfg.getViews(ocio.VIEW_SHARED, display))
     chosen = view if view is not None else cfg.getDefaultView(display)
     if chosen not in views:

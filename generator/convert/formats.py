@@ -13,8 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 #: Sample types: name -> (bits, is_float).
-DEPTHS = {"uint8": (8, False), "uint10": (10, False), "uint16": (16, False), "half": (16, True),
-          "float": (32, True)}
+DEPTHS = {"uint8": (8, False), "uint10": (10, False), "uint16": (16, False), "half": (16, True), "float": (32, True)}
 
 #: Compressions no writer undoes exactly (lossy): a frame written with one cannot be verified.
 LOSSY = ("b44", "b44a", "dwaa", "dwab", "jpeg", "pxr24")
@@ -39,8 +38,13 @@ class Format:
 
 
 FORMATS = {
-    "exr": Format("exr", ".exr", ("half", "float"),
-                  ("zip", "none", "rle", "zips", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"), tiles=True),
+    "exr": Format(
+        "exr",
+        ".exr",
+        ("half", "float"),
+        ("zip", "none", "rle", "zips", "piz", "pxr24", "b44", "b44a", "dwaa", "dwab"),
+        tiles=True,
+    ),
     "tiff": Format("tiff", ".tif", ("uint16", "uint8", "float"), ("zip", "none", "lzw"), tiles=True),
     "png": Format("png", ".png", ("uint8", "uint16"), channels=4),
     "jpeg": Format("jpeg", ".jpg", ("uint8",), channels=3, lossy=True),
@@ -48,8 +52,15 @@ FORMATS = {
 }
 
 #: File suffixes that name a format (``-o`` of a single file is not offered: the format is ``--format``).
-SUFFIXES = {".exr": "exr", ".tif": "tiff", ".tiff": "tiff", ".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg",
-            ".dpx": "dpx"}
+SUFFIXES = {
+    ".exr": "exr",
+    ".tif": "tiff",
+    ".tiff": "tiff",
+    ".png": "png",
+    ".jpg": "jpeg",
+    ".jpeg": "jpeg",
+    ".dpx": "dpx",
+}
 
 #: OpenImageIO's names of its sample types, for the ones a source may hold.
 _OIIO_DEPTH = {"half": "half", "float": "float", "uint8": "uint8", "uint16": "uint16", "double": "float"}

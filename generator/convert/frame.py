@@ -84,8 +84,7 @@ def _processor(config: str, src: str, dst: str, display: str, view: str):
     import PyOpenColorIO as ocio
 
     cfg = _config(config)
-    proc = (cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD) if display
-            else cfg.getProcessor(src, dst))
+    proc = cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD) if display else cfg.getProcessor(src, dst)
     return proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS)
 
 
@@ -138,8 +137,9 @@ def convert_frame(plan: Plan, source: Source) -> FrameResult:
     except Exception as error:  # OIIO and OCIO raise their own types; each names the problem
         reason = f"{type(error).__name__}: {str(error).strip().splitlines()[0] if str(error).strip() else ''}"
         return FrameResult(source.path, source.output, FAILED, reason, seconds=time.perf_counter() - started)
-    return FrameResult(source.path, source.output, WRITTEN, src=src, verdict=verdict,
-                       seconds=time.perf_counter() - started)
+    return FrameResult(
+        source.path, source.output, WRITTEN, src=src, verdict=verdict, seconds=time.perf_counter() - started
+    )
 
 
 def _convert(plan: Plan, source: Source) -> tuple[str, Verdict | None]:
@@ -150,11 +150,14 @@ def _convert(plan: Plan, source: Source) -> tuple[str, Verdict | None]:
         first = frame_parts[0].spec
         src = source_space(plan.config, source.path, first, plan.src)
         depth = formats.choose_depth(fmt, plan.depth, str(first.format), first.get_int_attribute("oiio:BitsPerSample"))
-        compression = formats.choose_compression(fmt, plan.compression, formats.format_of(source.path) or "",
-                                                 first.get_string_attribute("compression"))
+        compression = formats.choose_compression(
+            fmt, plan.compression, formats.format_of(source.path) or "", first.get_string_attribute("compression")
+        )
         if plan.verify and formats.is_lossy(fmt, compression, depth):
-            raise FrameError(f"would be written {compression or fmt.name}-compressed, which is lossy, and cannot be "
-                             "verified; allowed: --verify with a lossless --compression (zip, piz, ...) or format")
+            raise FrameError(
+                f"would be written {compression or fmt.name}-compressed, which is lossy, and cannot be "
+                "verified; allowed: --verify with a lossless --compression (zip, piz, ...) or format"
+            )
         route = Route(src, plan.dst, plan.display, plan.view)
         _write(plan, source, inp, frame_parts, fmt, depth, compression, route)
     finally:
@@ -174,7 +177,7 @@ def _write(plan, source, inp, frame_parts, fmt, depth, compression, route) -> No
     kept = [pixels.kept_channels(p, fmt) for p in frame_parts]
     specs = [pixels.output_spec(p, fmt, depth, compression, colour_space, k, stamp) for p, k in zip(frame_parts, kept)]
     if len({(s.tile_width, s.tile_height) for s in specs}) > 1:  # OpenEXR's parts, as OIIO writes them, are all
-        for spec in specs:                                        # tiled or all scanlines
+        for spec in specs:  # tiled or all scanlines
             spec.tile_width = spec.tile_height = spec.tile_depth = 0
     folder = tempfile.mkdtemp(prefix=PARTIAL, dir=os.path.dirname(source.output) or ".")
     staged = os.path.join(folder, os.path.basename(source.output))
@@ -208,7 +211,7 @@ def _converted(cpu, band: np.ndarray, rgb: tuple[int, ...]) -> np.ndarray:
         return band
     colours = np.ascontiguousarray(band[..., list(rgb)]).reshape(-1, 3)
     cpu.applyRGB(colours)
-    band[..., list(rgb)] = colours.reshape(band.shape[:-1] + (3,))
+    band[..., list(rgb)] = colours.reshape((*band.shape[:-1], 3))
     return band
 
 
@@ -264,7 +267,7 @@ def _sampled(plan, inp, written, part, fmt, depth):
         ins.append(pixels.read_rows(inp, part, y0, y1)[..., list(part.rgb)].astype(np.float64).reshape(-1, 3))
         stored = pixels.read_rows(written, out_part, y0, y1, formats.read_type(depth))[..., where]
         outs.append(formats.dequantised(stored, depth).reshape(-1, 3))
-        ys, xs = np.mgrid[y0:y1, part.spec.x:part.spec.x + part.spec.width]
+        ys, xs = np.mgrid[y0:y1, part.spec.x : part.spec.x + part.spec.width]
         places.append(np.stack([xs.ravel(), ys.ravel()], axis=-1))
     return np.concatenate(ins), np.concatenate(outs), np.concatenate(places)
 

@@ -54,8 +54,7 @@ def parse_pattern(text: str) -> Pattern | None:
     if not marks:
         return None
     if len(marks) > 1:
-        raise FramesError(f"{text!r} marks the frame number {len(marks)} times; allowed: one mark "
-                          "(####, #, @, %04d)")
+        raise FramesError(f"{text!r} marks the frame number {len(marks)} times; allowed: one mark (####, #, @, %04d)")
     mark = marks[0]
     token = mark.group(0)
     if token.startswith("%"):
@@ -64,7 +63,7 @@ def parse_pattern(text: str) -> Pattern | None:
         padding = 4
     else:
         padding = len(token)
-    return Pattern(os.path.join(folder, name[:mark.start()]), padding, name[mark.end():])
+    return Pattern(os.path.join(folder, name[: mark.start()]), padding, name[mark.end() :])
 
 
 _RANGE = re.compile(r"(\d+)(?:-(\d+)(?:x(\d+))?)?\Z")
@@ -77,12 +76,16 @@ def parse_frames(text: str) -> tuple[int, ...]:
     for part in text.replace(" ", "").split(","):
         match = _RANGE.match(part)
         if not match:
-            raise FramesError(f"--frames {text!r}: {part!r} is not a frame range; allowed: FIRST-LAST, "
-                              "FIRST-LASTxSTEP or FRAME, comma-separated, frames 0 or more (1001-1100, 1-99x2)")
+            raise FramesError(
+                f"--frames {text!r}: {part!r} is not a frame range; allowed: FIRST-LAST, "
+                "FIRST-LASTxSTEP or FRAME, comma-separated, frames 0 or more (1001-1100, 1-99x2)"
+            )
         first, last, step = int(match.group(1)), int(match.group(2) or match.group(1)), int(match.group(3) or 1)
         if last < first or step < 1:
-            raise FramesError(f"--frames {text!r}: {part!r} runs backwards or by a step below 1; allowed: "
-                              "FIRST-LAST with FIRST <= LAST and a step of 1 or more")
+            raise FramesError(
+                f"--frames {text!r}: {part!r} runs backwards or by a step below 1; allowed: "
+                "FIRST-LAST with FIRST <= LAST and a step of 1 or more"
+            )
         if len(out) + (last - first) // step + 1 > MAX_FRAMES:
             raise FramesError(f"--frames {text!r} names more than {MAX_FRAMES} frames; allowed: fewer")
         out.update(dict.fromkeys(range(first, last + 1, step)))
@@ -96,8 +99,9 @@ def on_disk(pattern: Pattern) -> list[tuple[int, str]]:
     try:
         names = os.listdir(folder)
     except FileNotFoundError:
-        raise FramesError(f"{pattern.path(0)!r}: its folder {folder!r} does not exist; allowed: a pattern "
-                          "in an existing folder") from None
+        raise FramesError(
+            f"{pattern.path(0)!r}: its folder {folder!r} does not exist; allowed: a pattern in an existing folder"
+        ) from None
     found = {}
     for name in names:
         match = regex.match(name)
@@ -129,8 +133,9 @@ def _pattern_sources(text: str, pattern: Pattern, frames: tuple[int, ...] | None
         return [pattern.path(f) for f in frames]
     found = on_disk(pattern)
     if not found:
-        raise FramesError(f"{text!r} matches no file; allowed: a pattern matching frames on disk, or --frames "
-                          "to name them")
+        raise FramesError(
+            f"{text!r} matches no file; allowed: a pattern matching frames on disk, or --frames to name them"
+        )
     return [path for _, path in found]
 
 
@@ -149,17 +154,22 @@ def sources(inputs: tuple[str, ...], frames: str | None, folder: str, suffix: st
         elif os.path.isdir(text):
             images = _folder_images(text)
             if not images:
-                raise FramesError(f"{text!r} is a folder holding no image file; allowed: a folder of images "
-                                  f"({', '.join(IMAGE_SUFFIXES)})")
+                raise FramesError(
+                    f"{text!r} is a folder holding no image file; allowed: a folder of images "
+                    f"({', '.join(IMAGE_SUFFIXES)})"
+                )
             paths += images
         elif os.path.exists(text):
             paths.append(text)
         else:
-            raise FramesError(f"{text!r} does not exist and marks no frame number; allowed: a file, a folder "
-                              "or a frame pattern (####, #, @, %04d)")
+            raise FramesError(
+                f"{text!r} does not exist and marks no frame number; allowed: a file, a folder "
+                "or a frame pattern (####, #, @, %04d)"
+            )
     if wanted is not None and not patterned:
-        raise FramesError("--frames is given but no input is a frame pattern; allowed: --frames with a pattern "
-                          "such as shot.####.exr")
+        raise FramesError(
+            "--frames is given but no input is a frame pattern; allowed: --frames with a pattern such as shot.####.exr"
+        )
     return _paired(list(dict.fromkeys(paths)), folder, suffix)
 
 
@@ -170,11 +180,15 @@ def _paired(paths: list[str], folder: str, suffix: str) -> list[Source]:
         target = _output(path, folder, suffix)
         key = os.path.normcase(os.path.abspath(target))
         if key in taken:
-            raise FramesError(f"{taken[key]!r} and {path!r} would both be written to {target!r}; allowed: "
-                              "inputs whose names differ once the suffix is the output format's")
+            raise FramesError(
+                f"{taken[key]!r} and {path!r} would both be written to {target!r}; allowed: "
+                "inputs whose names differ once the suffix is the output format's"
+            )
         if os.path.exists(path) and os.path.exists(target) and os.path.samefile(path, target):
-            raise FramesError(f"{path!r} would be written over itself; allowed: an output folder other than "
-                              "the input's, or another format")
+            raise FramesError(
+                f"{path!r} would be written over itself; allowed: an output folder other than "
+                "the input's, or another format"
+            )
         taken[key] = path
         out.append(Source(path, target))
     return out

@@ -53,8 +53,9 @@ def _values(row) -> str:
     return "(" + ", ".join(f"{v:.9g}" for v in row) + ")"
 
 
-def judge(spec, ends: dict, route: Route, inputs: np.ndarray, written: np.ndarray, positions: np.ndarray,
-          depth: str) -> Verdict:
+def judge(
+    spec, ends: dict, route: Route, inputs: np.ndarray, written: np.ndarray, positions: np.ndarray, depth: str
+) -> Verdict:
     """``written`` (n, 3, float64, as read back) against the reference of ``inputs`` (n, 3) through
     ``route``; ``positions`` (n, 2) the pixels' x, y; ``depth`` the written sample type; ``ends``
     the spec's endpoints (:func:`generator.verify.paths.endpoints`, built once per process)."""
@@ -65,8 +66,10 @@ def judge(spec, ends: dict, route: Route, inputs: np.ndarray, written: np.ndarra
     finite = np.all(np.isfinite(inputs), axis=-1)
     order = np.concatenate([np.flatnonzero(finite), np.flatnonzero(~finite)])
     inputs, written, positions = inputs[order], written[order], positions[order]
-    families = (probe_sets.Family("pixel", inputs[: int(finite.sum())]),
-                probe_sets.Family(probe_sets.NON_FINITE, inputs[int(finite.sum()):]))
+    families = (
+        probe_sets.Family("pixel", inputs[: int(finite.sum())]),
+        probe_sets.Family(probe_sets.NON_FINITE, inputs[int(finite.sum()) :]),
+    )
     check = conversion_check(spec, ends, probe_sets.Probes(families), route.src, route.dst, route.display, route.view)
     if check.expected is None:
         return Verdict(0, float("nan"), check.tolerance, check.metric, False, note=check.problem)
@@ -75,13 +78,21 @@ def judge(spec, ends: dict, route: Route, inputs: np.ndarray, written: np.ndarra
     violations, why = policy_violations(check, written, step)
     compared = int(np.sum(~np.isnan(errors)))
     if compared == 0:
-        return Verdict(0, float("nan"), check.tolerance, check.metric, violations == 0,
-                       note="no pixel could be compared (none finite with a finite reference)")
+        return Verdict(
+            0,
+            float("nan"),
+            check.tolerance,
+            check.metric,
+            violations == 0,
+            note="no pixel could be compared (none finite with a finite reference)",
+        )
     worst_index = int(np.nanargmax(errors))
     worst = float(errors[worst_index])
     x, y = (int(v) for v in positions[worst_index])
-    where = (f"pixel ({x}, {y}): input {_values(inputs[worst_index])}, written {_values(written[worst_index])}, "
-             f"reference {_values(check.expected[worst_index])}")
+    where = (
+        f"pixel ({x}, {y}): input {_values(inputs[worst_index])}, written {_values(written[worst_index])}, "
+        f"reference {_values(check.expected[worst_index])}"
+    )
     passed = worst <= check.tolerance and not violations
     return Verdict(compared, worst, check.tolerance, check.metric, passed, where, why)
 

@@ -106,9 +106,22 @@ def read_rows(inp, part: Part, y0: int, y1: int, kind: str = "float") -> np.ndar
         th = spec.tile_height
         a0 = spec.y + (y0 - spec.y) // th * th
         a1 = min(spec.y + spec.height, spec.y + -(-(y1 - spec.y) // th) * th)
-        data = inp.read_tiles(part.index, 0, spec.x, spec.x + spec.width, a0, a1, spec.z, spec.z + 1, 0,
-                              spec.nchannels, oiio.TypeDesc(kind))
-        data = None if data is None else np.asarray(data).reshape(a1 - a0, spec.width, spec.nchannels)[y0 - a0:y1 - a0]
+        data = inp.read_tiles(
+            part.index,
+            0,
+            spec.x,
+            spec.x + spec.width,
+            a0,
+            a1,
+            spec.z,
+            spec.z + 1,
+            0,
+            spec.nchannels,
+            oiio.TypeDesc(kind),
+        )
+        data = (
+            None if data is None else np.asarray(data).reshape(a1 - a0, spec.width, spec.nchannels)[y0 - a0 : y1 - a0]
+        )
     else:
         data = inp.read_scanlines(part.index, 0, y0, y1, spec.z, 0, spec.nchannels, oiio.TypeDesc(kind))
     if data is None or (hasattr(data, "size") and data.size == 0):
@@ -132,8 +145,15 @@ def kept_channels(part: Part, fmt: formats.Format) -> tuple[int, ...]:
     return part.rgb + extra
 
 
-def output_spec(part: Part, fmt: formats.Format, depth: str, compression: str, colour_space: str,
-                channels: tuple[int, ...], stamp: str):
+def output_spec(
+    part: Part,
+    fmt: formats.Format,
+    depth: str,
+    compression: str,
+    colour_space: str,
+    channels: tuple[int, ...],
+    stamp: str,
+):
     """The written part's spec: the source's (windows, metadata) with the channels kept, the
     sample type, compression, tiles where the format holds them, the colour space written
     (``oiio:ColorSpace``) and a DateTime (the source's, else ``stamp``: the same bytes on every run)."""
@@ -147,8 +167,14 @@ def output_spec(part: Part, fmt: formats.Format, depth: str, compression: str, c
     spec.z_channel = channels.index(part.spec.z_channel) if part.spec.z_channel in channels else -1
     spec.set_format(oiio.TypeDesc({"uint10": "uint16"}.get(depth, depth)))
     spec.channelformats = ()
-    for name in ("oiio:BitsPerSample", "compression", "oiio:ColorSpace", "oiio:Gamma", "oiio:subimages",
-                 "oiio:UnassociatedAlpha"):
+    for name in (
+        "oiio:BitsPerSample",
+        "compression",
+        "oiio:ColorSpace",
+        "oiio:Gamma",
+        "oiio:subimages",
+        "oiio:UnassociatedAlpha",
+    ):
         spec.erase_attribute(name)
     if formats.integer_bits(depth):
         spec.attribute("oiio:BitsPerSample", formats.integer_bits(depth))

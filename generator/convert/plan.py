@@ -13,8 +13,9 @@ from generator.convert.frames import FramesError, Source, sources
 from generator.spec.schema import SpecError
 
 
-def _format(fmt: str | None, depth: str | None, compression: str | None, inputs: tuple[str, ...],
-            verify: bool) -> formats.Format:
+def _format(
+    fmt: str | None, depth: str | None, compression: str | None, inputs: tuple[str, ...], verify: bool
+) -> formats.Format:
     """The output format, with the sample type and compression asked checked against it."""
     first = next((formats.format_of(p) for p in inputs if formats.format_of(p)), None)
     chosen = formats.FORMATS[(fmt or first or "exr").lower()]
@@ -26,9 +27,12 @@ def _format(fmt: str | None, depth: str | None, compression: str | None, inputs:
             allowed = ", ".join(chosen.compressions) or f"none: {chosen.name} takes no --compression"
             raise SpecError("--compression", compression, f"is not a {chosen.name} compression; allowed: {allowed}")
     if verify and formats.is_lossy(chosen, compression or "", (depth or chosen.depths[0]).lower()):
-        raise SpecError("--verify", chosen.name if chosen.lossy else compression,
-                        "is lossy: what it writes cannot be compared with the reference; allowed: exr (half or float, "
-                        "a lossless compression), tiff, png or dpx")
+        raise SpecError(
+            "--verify",
+            chosen.name if chosen.lossy else compression,
+            "is lossy: what it writes cannot be compared with the reference; allowed: exr (half or float, "
+            "a lossless compression), tiff, png or dpx",
+        )
     return chosen
 
 
@@ -64,8 +68,25 @@ def _route(cfg, src, dst, display, view) -> tuple[str | None, str, str, str]:
     return (source, "", *configs.display_view(cfg, display, view))
 
 
-def plan_run(inputs, output, config, src, dst, display, view, frames, fmt, depth, compression, verify: bool,
-             sample: str, skip_existing: bool, force: bool, memory: int, announce=lambda text: None):
+def plan_run(
+    inputs,
+    output,
+    config,
+    src,
+    dst,
+    display,
+    view,
+    frames,
+    fmt,
+    depth,
+    compression,
+    verify: bool,
+    sample: str,
+    skip_existing: bool,
+    force: bool,
+    memory: int,
+    announce=lambda text: None,
+):
     """The run's Plan and its frames; SpecError on any bad argument."""
     if os.path.exists(output) and not os.path.isdir(output):
         raise SpecError("-o", output, "exists and is not a folder; allowed: a folder, or a path to make one at")
@@ -79,6 +100,17 @@ def plan_run(inputs, output, config, src, dst, display, view, frames, fmt, depth
     path = configs.choose(config, announce)
     cfg = configs.load(path, verify)
     source, dst, display, view = _route(cfg, src, dst, display, view)
-    return Plan(os.path.abspath(path) if not path.startswith("ocio://") else path, source, dst, display, view,
-                chosen.name, depth.lower() if depth else None, compression, samples, memory, force,
-                skip_existing), found
+    return Plan(
+        os.path.abspath(path) if not path.startswith("ocio://") else path,
+        source,
+        dst,
+        display,
+        view,
+        chosen.name,
+        depth.lower() if depth else None,
+        compression,
+        samples,
+        memory,
+        force,
+        skip_existing,
+    ), found

@@ -25,8 +25,9 @@ class SchedulerError(Exception):
     """The Dask scheduler named cannot be reached (or Dask is not installed): one line."""
 
 
-def run(plan: Plan, sources: list[Source], report: Report, jobs: int = 1, scheduler: str = "",
-        fail_fast: bool = False) -> list[FrameResult]:
+def run(
+    plan: Plan, sources: list[Source], report: Report, jobs: int = 1, scheduler: str = "", fail_fast: bool = False
+) -> list[FrameResult]:
     """Convert every source; ``report`` sees each result as it comes. With ``fail_fast`` the
     first failure stops the run: frames not begun are not converted (those running finish)."""
     if scheduler:
@@ -67,8 +68,9 @@ def _in_pool(plan, sources, report, jobs, fail_fast) -> list[FrameResult]:
     # the children; the server forks them from a clean process that has loaded the modules once
     context = multiprocessing.get_context("forkserver")
     context.set_forkserver_preload(["generator.convert.frame"])
-    pool = ProcessPoolExecutor(max_workers=min(jobs, len(sources)), mp_context=context,
-                               initializer=_pool_start, initargs=(threads,))
+    pool = ProcessPoolExecutor(
+        max_workers=min(jobs, len(sources)), mp_context=context, initializer=_pool_start, initargs=(threads,)
+    )
     out, stopped = [], False
     try:
         pending = {pool.submit(convert_frame, plan, s): s for s in sources}
@@ -109,8 +111,10 @@ def _on_cluster(plan, sources, report, scheduler, fail_fast) -> list[FrameResult
     try:
         client = Client(scheduler, timeout=CONNECT_SECONDS)
     except (OSError, TimeoutError, ValueError) as error:
-        raise SchedulerError(f"--scheduler {scheduler}: cannot reach it ({error}); allowed: the address of a "
-                             "running Dask scheduler, such as tcp://host:8786") from None
+        raise SchedulerError(
+            f"--scheduler {scheduler}: cannot reach it ({error}); allowed: the address of a "
+            "running Dask scheduler, such as tcp://host:8786"
+        ) from None
     out = []
     with client:
         futures = {client.submit(convert_frame, plan, s, pure=False): s for s in sources}

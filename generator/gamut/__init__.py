@@ -20,15 +20,27 @@ from generator.gamut.perceptual import PerceptualParams, perceptual
 from generator.gamut.rgc import RGCParams, rgc, rgc_compress
 from generator.gamut.simple import clip, desaturate, scale
 
-METHODS = MappingProxyType({
-    "clip": clip,
-    "desaturate": desaturate,
-    "scale": scale,
-    "rgc": rgc,
-    "perceptual": perceptual,
-})
+METHODS = MappingProxyType(
+    {
+        "clip": clip,
+        "desaturate": desaturate,
+        "scale": scale,
+        "rgc": rgc,
+        "perceptual": perceptual,
+    }
+)
 
 __all__ = [
-    "LARGEST", "METHODS", "DisplayGamut", "PerceptualParams", "RGCParams",
-    "clip", "desaturate", "perceptual", "rgc", "rgc_compress", "sanitize", "scale",
+    "LARGEST",
+    "METHODS",
+    "DisplayGamut",
+    "PerceptualParams",
+    "RGCParams",
+    "clip",
+    "desaturate",
+    "perceptual",
+    "rgc",
+    "rgc_compress",
+    "sanitize",
+    "scale",
 ]

@@ -194,7 +194,8 @@ class PerceptualParams:
 def adapted_matrix(display: DisplayGamut) -> np.ndarray:
     """Display RGB to Oklab-white-adapted XYZ, shape (3, 3) (CAT02 von Kries)."""
     cat = _colour().adaptation.matrix_chromatic_adaptation_VonKries(
-        display.white_xyz, _oklab_white_xyz(), transform="CAT02")
+        display.white_xyz, _oklab_white_xyz(), transform="CAT02"
+    )
     return cat @ display.matrix
 
 
@@ -287,8 +288,9 @@ def line_through(lightness, chroma, focus, focus_distance: float) -> tuple[np.nd
     return axis, (axis - focus) / focus_distance
 
 
-def boundary_chroma(axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, inside=None,
-                    outside=None, slack=0.0) -> np.ndarray:
+def boundary_chroma(
+    axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, inside=None, outside=None, slack=0.0
+) -> np.ndarray:
     """Chroma at which the line ``L = axis + slope C`` of a hue leaves an RGB cube, by bisection.
 
     Parameters
@@ -320,8 +322,9 @@ def boundary_chroma(axis, slope, hue_cos, hue_sin, rgb_to_xyz: np.ndarray, insid
     p = axis[..., None] * to_lms[:, 0]
     q = slope[..., None] * to_lms[:, 0] + hue_cos[..., None] * to_lms[:, 1] + hue_sin[..., None] * to_lms[:, 2]
     inside_low = np.zeros(np.shape(axis)) if inside is None else np.array(inside, dtype=np.float64)
-    outside_high = (np.full(np.shape(axis), chroma_bracket(rgb_to_xyz)) if outside is None
-                    else np.array(outside, dtype=np.float64))
+    outside_high = (
+        np.full(np.shape(axis), chroma_bracket(rgb_to_xyz)) if outside is None else np.array(outside, dtype=np.float64)
+    )
     for _ in range(BISECTION_STEPS):
         middle = 0.5 * (inside_low + outside_high)
         rgb = (p + middle[..., None] * q) ** 3 @ to_rgb.T
@@ -373,8 +376,9 @@ def chroma_bracket(rgb_to_xyz: np.ndarray) -> float:
     return float(max(CHROMA_BRACKET, 2.0 * np.hypot(lab[:, 1], lab[:, 2]).max()))
 
 
-def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: DisplayGamut,
-                         params: PerceptualParams, rgb=None) -> tuple[np.ndarray, np.ndarray]:
+def compress_along_lines(
+    chroma, axis, slope, hue_cos, hue_sin, display: DisplayGamut, params: PerceptualParams, rgb=None
+) -> tuple[np.ndarray, np.ndarray]:
     """The chroma compression along each line (steps 3 and 4).
 
     Parameters
@@ -404,8 +408,9 @@ def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: Display
     matrix = adapted_matrix(display)
     in_display = None if rgb is None else np.all((rgb >= 0.0) & (rgb <= 1.0), axis=-1)
     slack = 0.0 if rgb is None else np.where(in_display, 0.0, _fold_slack(hue_cos, hue_sin, display))[..., None]
-    display_chroma = boundary_chroma(axis, slope, hue_cos, hue_sin, matrix,
-                                     *_anchored(chroma, in_display, chroma_bracket(matrix)), slack)
+    display_chroma = boundary_chroma(
+        axis, slope, hue_cos, hue_sin, matrix, *_anchored(chroma, in_display, chroma_bracket(matrix)), slack
+    )
     found = display_chroma > 0.0
     if params.source_to_display is None:
         limit = params.limit
@@ -416,8 +421,9 @@ def compress_along_lines(chroma, axis, slope, hue_cos, hue_sin, display: Display
             source_rgb = rgb @ np.linalg.inv(to_display).T
             in_source = np.all((source_rgb > _INSIDE_SLACK) & (source_rgb < 1.0 - _INSIDE_SLACK), axis=-1)
         source_matrix = matrix @ to_display
-        source = boundary_chroma(axis, slope, hue_cos, hue_sin, source_matrix,
-                                 *_anchored(chroma, in_source, chroma_bracket(source_matrix)))
+        source = boundary_chroma(
+            axis, slope, hue_cos, hue_sin, source_matrix, *_anchored(chroma, in_source, chroma_bracket(source_matrix))
+        )
         limit = np.where(found, np.maximum(source / np.where(found, display_chroma, 1.0), 1.0), 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         ratio = np.where(chroma > 0.0, chroma / display_chroma, 0.0)

@@ -33,7 +33,6 @@ import numpy as np
 
 from generator.gamut.display import DisplayGamut, sanitize
 
-
 #: The ranges OpenColorIO's FIXED_FUNCTION_ACES_GAMUT_COMP_13 accepts for each limit, each
 #: threshold and the power (its FixedFunctionOpData validation, 2.1 to 2.6; measured): a
 #: config with a parameter beyond them does not load.
@@ -114,7 +113,7 @@ def compress_distance(distance: np.ndarray, params: RGCParams) -> np.ndarray:
     p = params.power
     n = np.maximum(distance - thr, 0.0) / s
     with np.errstate(divide="ignore"):
-        inverse_power = n ** -p  # +Inf at the threshold itself (n = 0): the distance stays there
+        inverse_power = n**-p  # +Inf at the threshold itself (n = 0): the distance stays there
     compressed = thr + s / (1.0 + inverse_power) ** (1.0 / p)
     return np.where(distance < thr, distance, compressed)
 

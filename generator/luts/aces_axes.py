@@ -125,8 +125,9 @@ class ViewAxis:
         light, high = float(self._log(self.light)), float(self._log(self.high))
         if self.bend >= 1.0:
             return level / high
-        return np.where(level <= light, level / light * self.bend,
-                        self.bend + (level - light) / (high - light) * (1.0 - self.bend))
+        return np.where(
+            level <= light, level / light * self.bend, self.bend + (level - light) / (high - light) * (1.0 - self.bend)
+        )
 
 
 def view_axes(view) -> tuple[LogAxis, ViewAxis, np.ndarray]:
@@ -136,7 +137,7 @@ def view_axes(view) -> tuple[LogAxis, ViewAxis, np.ndarray]:
     (lattice coordinates at the entries, as written)."""
     upper, n = basis(view).upper, ACES_BEND_ENTRIES - 1
     share = np.log2(1.0 / ACES_TOE + 1.0) / np.log2(upper / ACES_TOE + 1.0)
-    log = LogAxis(ACES_BEND_ENTRIES, int(round(share * n)), _toe_for(upper, round(share * n) / n))
+    log = LogAxis(ACES_BEND_ENTRIES, round(share * n), _toe_for(upper, round(share * n) / n))
     wanted = ViewAxis.layout(log.toe, upper)
     light = float(log.position(np.round(log.coordinate(wanted.light) * n) / n))
     axis = ViewAxis.layout(log.toe, upper, light)

@@ -24,8 +24,17 @@ import numpy as np
 from generator.colorimetry import reference
 from generator.colorimetry.transfer import Linear
 from generator.luts import aces_probes, numbers
-from generator.luts.aces_axes import (ACES_BEND_DENSITY, ACES_BEND_LIGHT, ACES_TOE, SourceLogAxis, basis,
-                                      basis_matrix, same_basis, source_range, view_axes)
+from generator.luts.aces_axes import (
+    ACES_BEND_DENSITY,
+    ACES_BEND_LIGHT,
+    ACES_TOE,
+    SourceLogAxis,
+    basis,
+    basis_matrix,
+    same_basis,
+    source_range,
+    view_axes,
+)
 from generator.luts.axes import LogAxis
 from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice, coordinates, grid, preimages
 from generator.spec.schema import ColourSpace, Display, Spec
@@ -48,8 +57,9 @@ ACES_SHAPER_SIZES = (4096, 65536)
 def _training(spec: Spec, source: ColourSpace, display: Display, view, domain=None) -> dict:
     """The fit's colours: per kind, the source's code values and the view's display codes."""
     aces = aces_probes.sets(display, aces_probes.TRAINING_SEED, ACES_FIT_COUNT)
-    return {name: aces_probes.in_source(spec, source, display, view.name, colours, domain)
-            for name, colours in aces.items()}
+    return {
+        name: aces_probes.in_source(spec, source, display, view.name, colours, domain) for name, colours in aces.items()
+    }
 
 
 def _fitted(lat: Lattice, colours: dict, decimals: int) -> np.ndarray:
@@ -58,8 +68,9 @@ def _fitted(lat: Lattice, colours: dict, decimals: int) -> np.ndarray:
     return numbers.rounded(reweighted_fit(lat, colours, None, ACES_FIT_RTOL), decimals)
 
 
-def display_lattice(spec: Spec, source: ColourSpace, display: Display, view, size: int,
-                    decimals: int = CUBE_DECIMALS) -> Lattice:
+def display_lattice(
+    spec: Spec, source: ColourSpace, display: Display, view, size: int, decimals: int = CUBE_DECIMALS
+) -> Lattice:
     """The display layout (a CLF): decoding and the matrix to the basis exact, the Log operator of
     :func:`view_axes` and its Range (the view's clamp), its 1D table, a lattice of fitted display
     codes; or, where the view's last clamp is the display's (:func:`light_before_clamp`), of
@@ -84,8 +95,19 @@ def display_lattice(spec: Spec, source: ColourSpace, display: Display, view, siz
     for name, (code, expected) in _training(spec, source, display, view).items():
         target = expected if post is None else values(reference.to_reference(spec, source, code))
         colours[name] = (_log_coordinate(lat, code), target)
-    return Lattice(source, display, view.name, source.curve, matrix, log, (0.0, 1.0), table,
-                   _fitted(lat, colours, decimals), post, decimals)
+    return Lattice(
+        source,
+        display,
+        view.name,
+        source.curve,
+        matrix,
+        log,
+        (0.0, 1.0),
+        table,
+        _fitted(lat, colours, decimals),
+        post,
+        decimals,
+    )
 
 
 def light_before_clamp(spec: Spec, display: Display, view):
@@ -103,8 +125,10 @@ def light_before_clamp(spec: Spec, display: Display, view):
     to_display = reference.display_matrix(spec, display) / display.clip_high
     to_aces = reference.to_aces_matrix(spec)
     if view.version != "2.0":
-        return (lambda ref: reference.apply_matrix(to_display, views.evaluate(view, reference.apply_matrix(to_aces, ref))),
-                1.0)
+        return (
+            lambda ref: reference.apply_matrix(to_display, views.evaluate(view, reference.apply_matrix(to_aces, ref))),
+            1.0,
+        )
     product = to_display @ to_xyz(view)
     d = float(product[0, 0])
     if not np.allclose(product, d * np.eye(3), rtol=0, atol=1e-9 * d):
@@ -113,7 +137,11 @@ def light_before_clamp(spec: Spec, display: Display, view):
 
     def light(ref):
         clamped = np.clip(reference.apply_matrix(b.from_aces @ to_aces, ref), 0.0, b.upper)
-        return views.output_rgb(view, reference.apply_matrix(np.linalg.inv(b.from_aces), clamped)) / (view.peak / 100.0) * d
+        return (
+            views.output_rgb(view, reference.apply_matrix(np.linalg.inv(b.from_aces), clamped))
+            / (view.peak / 100.0)
+            * d
+        )
 
     return light, min(d, 1.0)
 
@@ -123,8 +151,9 @@ def unclamped_codes(display: Display, light, top_light: float):
     [0, 1]) and the function giving the lattice's values of scene-reference colours: the display's
     codes of ``light`` (normalised display light before the clamp at ``top_light``), mirrored
     below 0, over ``top``, the code of the clamp."""
-    top = float(numbers.rounded(reference.display_encode(display, np.full(3, top_light * display.clip_high))[0],
-                                CUBE_DECIMALS))
+    top = float(
+        numbers.rounded(reference.display_encode(display, np.full(3, top_light * display.clip_high))[0], CUBE_DECIMALS)
+    )
 
     def values(ref):
         rgb = light(ref) * display.clip_high
@@ -136,7 +165,9 @@ def unclamped_codes(display: Display, light, top_light: float):
 def _log_coordinate(lat: Lattice, code) -> np.ndarray:
     """A display layout's Log operator after its decoding and matrix: the 1D table's input."""
     with np.errstate(all="ignore"):
-        return lat.pre.coordinate(reference.apply_matrix(lat.matrix, lat.decode.decode(np.asarray(code, dtype=np.float64))))
+        return lat.pre.coordinate(
+            reference.apply_matrix(lat.matrix, lat.decode.decode(np.asarray(code, dtype=np.float64)))
+        )
 
 
 def _display_codes(spec: Spec, display: Display, view, rgb: np.ndarray, to_aces: np.ndarray) -> np.ndarray:
@@ -145,9 +176,16 @@ def _display_codes(spec: Spec, display: Display, view, rgb: np.ndarray, to_aces:
     return numbers.rounded(reference.aces_view(spec, display, view.name, ref), CUBE_DECIMALS)
 
 
-def source_lattice(spec: Spec, source: ColourSpace, display: Display, view, size: int,
-                   shaper: str | ColourSpace = "auto", decimals: int = CUBE_DECIMALS,
-                   entries: int | None = None) -> Lattice:
+def source_lattice(
+    spec: Spec,
+    source: ColourSpace,
+    display: Display,
+    view,
+    size: int,
+    shaper: str | ColourSpace = "auto",
+    decimals: int = CUBE_DECIMALS,
+    entries: int | None = None,
+) -> Lattice:
     """The source layout: a 1D table uniform in source values (``shaper`` "auto": to the
     :class:`SourceLogAxis` coordinate; a colour space: its curve over its codes 0 to 1; "none":
     no table, the lattice uniform in source values), a lattice of fitted display codes, written
@@ -170,8 +208,18 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, view, size
     lat = Lattice(source, display, view.name, None, None, None, domain, table, cube)
     # Beyond the domain the file clamps each channel: the view's own clamp where the source is its basis.
     held = None if same_basis(spec, source, view) and shaper == "auto" else domain
-    return Lattice(source, display, view.name, None, None, None, domain, table,
-                   _fitted(lat, _training(spec, source, display, view, held), decimals), decimals=decimals)
+    return Lattice(
+        source,
+        display,
+        view.name,
+        None,
+        None,
+        None,
+        domain,
+        table,
+        _fitted(lat, _training(spec, source, display, view, held), decimals),
+        decimals=decimals,
+    )
 
 
 def _table(source: ColourSpace, shaper, size: int, domain, reach, entries: int | None) -> np.ndarray:
@@ -208,21 +256,37 @@ def notes(lat: Lattice, view, shaper) -> list[str]:
     display, source = lat.display, lat.source
     top = float(reference.display_encode(display, np.full(3, display.clip_high))[0])
     output = f"Output: {display.name} code values (full range, 0 to {top:.6g}), as the view and the display encode."
-    fitted = ("Node values are fitted by least squares to colours of six kinds (in the display's gamut, ACES2065-1 "
-              "0 to 1, dark, bright, greys, saturated camera colours); greys keep the sampled values. "
-              "Interpolate tetrahedrally.")
+    fitted = (
+        "Node values are fitted by least squares to colours of six kinds (in the display's gamut, ACES2065-1 "
+        "0 to 1, dark, bright, greys, saturated camera colours); greys keep the sampled values. "
+        "Interpolate tetrahedrally."
+    )
     if isinstance(lat.pre, LogAxis):
         log, axis, _ = view_axes(view)
-        clamp = (" The lattice holds the codes before the display's clamp, which the 1D table after it applies."
-                 if lat.post is not None else "")
-        return [f"Input: {source.name} values, decoded and taken to {b.name} exactly, clamped to [0, {b.upper:.9g}] "
-                f"(the view's own clamp); a 1D table spaces the nodes uniformly in log2({b.name} + {log.toe:.9g}), "
-                f"{ACES_BEND_DENSITY:.3g} times as densely above {axis.light:.6g}.{clamp}", output, fitted]
+        clamp = (
+            " The lattice holds the codes before the display's clamp, which the 1D table after it applies."
+            if lat.post is not None
+            else ""
+        )
+        return [
+            f"Input: {source.name} values, decoded and taken to {b.name} exactly, clamped to [0, {b.upper:.9g}] "
+            f"(the view's own clamp); a 1D table spaces the nodes uniformly in log2({b.name} + {log.toe:.9g}), "
+            f"{ACES_BEND_DENSITY:.3g} times as densely above {axis.light:.6g}.{clamp}",
+            output,
+            fitted,
+        ]
     lo, hi = lat.domain
-    spacing = ("uniformly in the source's values" if lat.shaper is None else
-               f"by {shaper.name}'s curve of the decoded values" if isinstance(shaper, ColourSpace) else
-               f"uniformly in log2(x + {ACES_TOE:g}) of the decoded values x (mirrored below 0), "
-               f"{ACES_BEND_DENSITY:.3g} times as densely above {ACES_BEND_LIGHT:g}")
+    spacing = (
+        "uniformly in the source's values"
+        if lat.shaper is None
+        else f"by {shaper.name}'s curve of the decoded values"
+        if isinstance(shaper, ColourSpace)
+        else f"uniformly in log2(x + {ACES_TOE:g}) of the decoded values x (mirrored below 0), "
+        f"{ACES_BEND_DENSITY:.3g} times as densely above {ACES_BEND_LIGHT:g}"
+    )
     low, high = float(lat.cube.min()), float(lat.cube.max())
-    return [f"Input: {source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside); nodes spaced {spacing}.",
-            output[:-1] + f"; the fitted node values range from {low:.6g} to {high:.6g}.", fitted]
+    return [
+        f"Input: {source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside); nodes spaced {spacing}.",
+        output[:-1] + f"; the fitted node values range from {low:.6g} to {high:.6g}.",
+        fitted,
+    ]

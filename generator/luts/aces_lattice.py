@@ -33,7 +33,7 @@ ACES_LATTICE_SIZE = 65
 
 #: The Log shaper's toe (AP1 linear): the axis is log2(x + toe), so black sits on a node and
 #: the darkest decades keep nodes (bench/aces_views.py measured 2^-13 to 2^-10 alike).
-ACES_LATTICE_TOE = 2.0 ** -10
+ACES_LATTICE_TOE = 2.0**-10
 
 #: The table's output encoding (gamma, offset of CLF's monCurve): sRGB's curve for SDR views;
 #: for HDR views a steeper power, as PQ is, whose toe measured best in ΔE ITP (bench/aces_views.py).
@@ -134,8 +134,12 @@ def ocio_file(lat: AcesLattice) -> bytes:
     import PyOpenColorIO as ocio
 
     span = lat.span
-    log = ocio.LogAffineTransform(logSideSlope=[1.0 / span] * 3, logSideOffset=[-np.log2(lat.toe) / span] * 3,
-                                  linSideSlope=[1.0] * 3, linSideOffset=[lat.toe] * 3)
+    log = ocio.LogAffineTransform(
+        logSideSlope=[1.0 / span] * 3,
+        logSideOffset=[-np.log2(lat.toe) / span] * 3,
+        linSideSlope=[1.0] * 3,
+        linSideOffset=[lat.toe] * 3,
+    )
     log.setBase(2.0)
     cube = ocio.Lut3DTransform(gridSize=lat.size)
     cube.setInterpolation(ocio.INTERP_TETRAHEDRAL)
@@ -144,14 +148,17 @@ def ocio_file(lat: AcesLattice) -> bytes:
     # beyond it): two thirds of the text of float32 values.
     cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
     gamma, offset = lat.curve
-    decode = ocio.ExponentWithLinearTransform(gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0],
-                                              negativeStyle=ocio.NEGATIVE_MIRROR)
+    decode = ocio.ExponentWithLinearTransform(
+        gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0], negativeStyle=ocio.NEGATIVE_MIRROR
+    )
     group = ocio.GroupTransform([log, cube, decode])
     group.getFormatMetadata().setID(f"ocioforge:{file_name(lat.view)[:-4]}")
     group.getFormatMetadata().addChildElement(
-        "Description", f"ocioforge ACES view LUT: {lat.view.name}; AP1 clamped to [0, {lat.upper:g}] to limiting "
+        "Description",
+        f"ocioforge ACES view LUT: {lat.view.name}; AP1 clamped to [0, {lat.upper:g}] to limiting "
         f"RGB over the peak, {lat.size}^3 on a log2(x + {lat.toe:g}) axis, encoded by a monCurve of gamma "
-        f"{lat.curve[0]:g} and offset {lat.curve[1]:g}, which the last operator undoes.")
+        f"{lat.curve[0]:g} and offset {lat.curve[1]:g}, which the last operator undoes.",
+    )
     return group.write("Academy/ASC Common LUT Format", ocio.Config.CreateRaw()).encode("utf-8")
 
 

@@ -26,8 +26,14 @@ from generator.spec.schema import ColourSpace, Display, Spec
 SETS = ("in_gamut", "ap0", "dark", "bright", "greys", "camera")
 
 #: What each set is called in tables.
-LABELS = {"in_gamut": "in gamut", "ap0": "AP0 0..1", "dark": "dark", "bright": "bright", "greys": "greys",
-          "camera": "camera"}
+LABELS = {
+    "in_gamut": "in gamut",
+    "ap0": "AP0 0..1",
+    "dark": "dark",
+    "bright": "bright",
+    "greys": "greys",
+    "camera": "camera",
+}
 
 #: Seed of the colours a bake fits its lattice to; :data:`PROBE_SEED` draws the ones it is measured on.
 TRAINING_SEED, PROBE_SEED = 20250211, 20250212
@@ -59,13 +65,19 @@ def sets(display: Display, seed: int, count: int) -> dict[str, np.ndarray]:
         "ap0": rng.random((count, 3)),
         "dark": hue * 10 ** rng.uniform(-4, -1, (count, 1)),
         "bright": hue * 10 ** rng.uniform(0, np.log10(64), (count, 1)),
-        "greys": np.repeat(10 ** np.linspace(-4, 2, int(round(6 * GREYS_PER_DECADE)) + 1)[:, None], 3, axis=1),
+        "greys": np.repeat(10 ** np.linspace(-4, 2, round(6 * GREYS_PER_DECADE) + 1)[:, None], 3, axis=1),
         "camera": (edge * 10 ** rng.uniform(-2, 1, (count, 1))) @ _to_ap0("ARRI Wide Gamut 4").T,
     }
 
 
-def in_source(spec: Spec, source: ColourSpace, display: Display, view: str, aces: np.ndarray,
-              domain: tuple[float, float] | None = None) -> tuple[np.ndarray, np.ndarray]:
+def in_source(
+    spec: Spec,
+    source: ColourSpace,
+    display: Display,
+    view: str,
+    aces: np.ndarray,
+    domain: tuple[float, float] | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
     """ACES2065-1 colours as ``source``'s code values and the view's display code values for them
     (the reference, :func:`~generator.colorimetry.reference.aces_view`), keeping the colours the
     source's encoding holds (:func:`~generator.luts.probes.held`) and, given a ``domain``, whose

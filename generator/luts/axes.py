@@ -164,9 +164,16 @@ class Axis:
     inside: object | None = None
 
     @classmethod
-    def layout(cls, display: Display, size: int, low: float, high: float,
-               shares: tuple[float, float] = DEFAULT_SHARES, knee: float = NEGATIVE_KNEE,
-               inside=None) -> Axis:
+    def layout(
+        cls,
+        display: Display,
+        size: int,
+        low: float,
+        high: float,
+        shares: tuple[float, float] = DEFAULT_SHARES,
+        knee: float = NEGATIVE_KNEE,
+        inside=None,
+    ) -> Axis:
         """Share ``size - 1`` intervals between negatives, the cube and over-range values
         (``shares`` of them, fewer for negatives when ``low`` is above -1)."""
         n = size - 1

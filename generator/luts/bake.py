@@ -84,8 +84,11 @@ def find_display(spec: Spec, name: str, field: str) -> Display:
         space = spec.space(name)
     except KeyError:
         names = [n for d in spec.displays for n in (d.name, *d.aliases)]
-        raise SpecError(WHERE, field, f"unknown display {name!r}{suggest(name, names)}; allowed: "
-                        f"{', '.join(d.name for d in spec.displays)}") from None
+        raise SpecError(
+            WHERE,
+            field,
+            f"unknown display {name!r}{suggest(name, names)}; allowed: {', '.join(d.name for d in spec.displays)}",
+        ) from None
     raise SpecError(WHERE, field, f"{space.name!r} is a scene colour space; {field} takes a display")
 
 
@@ -101,15 +104,26 @@ def find_source(spec: Spec, name: str, field: str, role: str = "source") -> Colo
         from generator.colorimetry import library
 
         if name.lower() in (n.lower() for d in library.SPACES for n in (d.name, *d.aliases)):
-            raise SpecError(WHERE, field, f"{name!r} is in the library but not in this spec ({spec.source}); allowed: "
-                            f"add it to the spec's colour_spaces{suggest(name, spec.space_names)}") from None
-        raise SpecError(WHERE, field, f"unknown colour space {name!r}{suggest(name, spec.space_names)}; "
-                        "'ocioforge list' lists the library's") from None
+            raise SpecError(
+                WHERE,
+                field,
+                f"{name!r} is in the library but not in this spec ({spec.source}); allowed: "
+                f"add it to the spec's colour_spaces{suggest(name, spec.space_names)}",
+            ) from None
+        raise SpecError(
+            WHERE,
+            field,
+            f"unknown colour space {name!r}{suggest(name, spec.space_names)}; 'ocioforge list' lists the library's",
+        ) from None
     if space.is_data:
         raise SpecError(WHERE, field, f"{space.name!r} is data (never colour managed); it cannot be a {role}")
     if space.special or space.gamut is None:
-        raise SpecError(WHERE, field, f"{space.name!r} is not a per-channel curve of RGB primaries (it decodes to "
-                        "the scene reference by its own transform); allowed: a space with a curve and primaries")
+        raise SpecError(
+            WHERE,
+            field,
+            f"{space.name!r} is not a per-channel curve of RGB primaries (it decodes to "
+            "the scene reference by its own transform); allowed: a space with a curve and primaries",
+        )
     return space
 
 
@@ -118,8 +132,11 @@ def format_for(fmt: str | None, output: str) -> str:
     if fmt is None:
         suffix = Path(output).suffix.lower()
         if suffix not in _BY_SUFFIX:
-            raise SpecError(WHERE, "--format", f"cannot tell the format from {suffix or 'no suffix'!r}; "
-                            f"give --format ({', '.join(FORMATS)})")
+            raise SpecError(
+                WHERE,
+                "--format",
+                f"cannot tell the format from {suffix or 'no suffix'!r}; give --format ({', '.join(FORMATS)})",
+            )
         return _BY_SUFFIX[suffix]
     fmt = fmt.lower()
     if fmt not in FORMATS:
@@ -127,13 +144,25 @@ def format_for(fmt: str | None, output: str) -> str:
     suffix = Path(output).suffix.lower()
     if suffix != FORMATS[fmt].suffix:
         ends = f"ends in {suffix}" if suffix else "has no suffix"
-        raise SpecError(WHERE, "-o", f"{Path(output).name!r} {ends}, not {fmt}'s; allowed: a name "
-                        f"ending in {FORMATS[fmt].suffix} (hosts tell formats by suffix)")
+        raise SpecError(
+            WHERE,
+            "-o",
+            f"{Path(output).name!r} {ends}, not {fmt}'s; allowed: a name "
+            f"ending in {FORMATS[fmt].suffix} (hosts tell formats by suffix)",
+        )
     return fmt
 
 
-def request(spec: Spec, source: str, display: str, method: str, fmt: str, size: int, shaper: str = "auto",
-            view: str | None = None) -> Request:
+def request(
+    spec: Spec,
+    source: str,
+    display: str,
+    method: str,
+    fmt: str,
+    size: int,
+    shaper: str = "auto",
+    view: str | None = None,
+) -> Request:
     """Validate a bake's parameters (SpecError naming the option otherwise). With ``view`` (an
     ACES view's name) the bake is that view and ``method`` is not used."""
     from generator.gamut import METHODS
@@ -176,12 +205,15 @@ def find_view(display: Display, name: str):
     name = next((v for v in (*views.catalogue(), _own_name(display)) if v and v.lower() == name.lower()), name)
     found = reference.aces_view_of(display, name)
     if found is None:
-        raise SpecError(WHERE, "--view", f"unknown ACES view {name!r} for {display.name!r}; allowed: "
-                        f"{views.OWN_ACES2!r} or one it can show: {', '.join(shown)}")
+        raise SpecError(
+            WHERE,
+            "--view",
+            f"unknown ACES view {name!r} for {display.name!r}; allowed: "
+            f"{views.OWN_ACES2!r} or one it can show: {', '.join(shown)}",
+        )
     why = views.cannot_show(found, display.gamut.primaries, display.peak, display.is_hdr or display.absolute)
     if why:
-        raise SpecError(WHERE, "--view", f"{display.name!r} cannot show {name!r}: {why}; allowed: "
-                        f"{', '.join(shown)}")
+        raise SpecError(WHERE, "--view", f"{display.name!r} cannot show {name!r}: {why}; allowed: {', '.join(shown)}")
     return found
 
 
@@ -200,8 +232,9 @@ def _shows(display: Display, name: str) -> bool:
     from generator.rendering import views
 
     found = reference.aces_view_of(display, name)
-    return found is not None and not views.cannot_show(found, display.gamut.primaries, display.peak,
-                                                       display.is_hdr or display.absolute)
+    return found is not None and not views.cannot_show(
+        found, display.gamut.primaries, display.peak, display.is_hdr or display.absolute
+    )
 
 
 #: ``--shaper`` words that name no colour space (matched in any case, before space names).
@@ -215,13 +248,21 @@ def _shaper_space(spec: Spec, name: str) -> ColourSpace:
 
     space = find_source(spec, name, "--shaper", "shaper")
     if isinstance(space.curve, Linear):
-        raise SpecError(WHERE, "--shaper", f"{space.name!r} is linear, which would space the nodes uniformly in light "
-                        "(black off by hundreds of ten-bit codes); allowed: auto, or a space with a log or video curve")
+        raise SpecError(
+            WHERE,
+            "--shaper",
+            f"{space.name!r} is linear, which would space the nodes uniformly in light "
+            "(black off by hundreds of ten-bit codes); allowed: auto, or a space with a log or video curve",
+        )
     with np.errstate(all="ignore"):
         ends = space.curve.decode(np.array([0.0, 1.0]))
     if not (np.all(np.isfinite(ends)) and ends[0] < ends[1]):
-        raise SpecError(WHERE, "--shaper", f"{space.name!r}'s codes 0 to 1 hold no range of light to space nodes "
-                        "over; allowed: auto, or a space whose curve rises over codes 0 to 1")
+        raise SpecError(
+            WHERE,
+            "--shaper",
+            f"{space.name!r}'s codes 0 to 1 hold no range of light to space nodes "
+            "over; allowed: auto, or a space whose curve rises over codes 0 to 1",
+        )
     return space
 
 
@@ -234,10 +275,14 @@ def _refuse_linear_without_shaper(source: ColourSpace, fmt: str, shaper) -> None
     if not isinstance(source.curve, Linear) or (FORMATS[fmt].shaper and shaper != "none"):
         return
     option, what = ("--format", f"{fmt} holds no shaper") if not FORMATS[fmt].shaper else ("--shaper", "no shaper")
-    raise SpecError(WHERE, option, f"{what}, and {source.name!r} is linear: a lattice uniform in linear light up to "
-                    "16 times white cannot follow the display's encoding (black off by hundreds of ten-bit codes); "
-                    "allowed: a format with a shaper (resolve_cube, spi3d, clf) with --shaper auto or a log space, "
-                    "or a log source of the same primaries")
+    raise SpecError(
+        WHERE,
+        option,
+        f"{what}, and {source.name!r} is linear: a lattice uniform in linear light up to "
+        "16 times white cannot follow the display's encoding (black off by hundreds of ten-bit codes); "
+        "allowed: a format with a shaper (resolve_cube, spi3d, clf) with --shaper auto or a log space, "
+        "or a log source of the same primaries",
+    )
 
 
 def _smallest_size(spec: Spec, display: Display, source: ColourSpace, method: str, fmt: str, shaper) -> int:
@@ -289,19 +334,28 @@ def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     output = f"Output: {req.display.name} code values (full range, 0 to {top:.6g})."
     if lat.pre is not None:
         low, high = (0.0, lat.pre.high) if isinstance(lat.pre, LogAxis) else lat.pre.inverse(np.array(lat.domain))
-        return [f"ocioforge: {describe(req)}.",
-                f"Input: {req.source.name} values, decoded and converted to {req.display.name} light exactly; the "
-                f"lattice covers {low:.9g} to {high:.9g} times the display's peak per channel (clamped beyond).",
-                output]
+        return [
+            f"ocioforge: {describe(req)}.",
+            f"Input: {req.source.name} values, decoded and converted to {req.display.name} light exactly; the "
+            f"lattice covers {low:.9g} to {high:.9g} times the display's peak per channel (clamped beyond).",
+            output,
+        ]
     low, high = float(lat.cube.min()), float(lat.cube.max())
     output = output[:-1] + f" for black to the peak; the fitted node values range from {low:.6g} to {high:.6g}."
-    lines = [f"ocioforge: {describe(req)}.",
-             f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).", output]
+    lines = [
+        f"ocioforge: {describe(req)}.",
+        f"Input: {req.source.name} values, sampled over [{lo:.9g}, {hi:.9g}] (clamped outside).",
+        output,
+    ]
     if lat.shaper is not None and req.shaper == "auto":
-        lines.append("A 1D shaper spaces the nodes by the display's code values of the decoded input "
-                     "(by a root of it above the peak), linear in code values between nodes.")
-    lines.append("Node values are fitted by least squares to colours of the source gamut; greys and colours "
-                 "with a zero channel keep the sampled values. Interpolate tetrahedrally.")
+        lines.append(
+            "A 1D shaper spaces the nodes by the display's code values of the decoded input "
+            "(by a root of it above the peak), linear in code values between nodes."
+        )
+    lines.append(
+        "Node values are fitted by least squares to colours of the source gamut; greys and colours "
+        "with a zero channel keep the sampled values. Interpolate tetrahedrally."
+    )
     return lines
 
 
@@ -320,12 +374,20 @@ def lattice_files(req: Request, lat: lattice.Lattice) -> dict[str, bytes]:
     if req.fmt == "spi3d":
         if not formats.needs_spi1d(lat):
             return {"": formats.spi3d(lat, [f"ocioforge: {title}.", *notes(req, lat)[1:]])}
-        chain = (f"Apply the {SHAPER_SUFFIX} of the same name first (its 1D shaper, linear), then the .spi3d "
-                 "(tetrahedral): in OCIO a GroupTransform of the two FileTransforms, in Nuke two OCIOFileTransform "
-                 "nodes in that order.")
-        return {"": formats.spi3d(lat, [f"ocioforge: {title}.", *notes(req, lat)[1:], chain]),
-                SHAPER_SUFFIX: formats.spi1d_shaper(lat, [f"ocioforge: the shaper of {title}.", chain])}
-    return {"": formats.clf(lat, identifier(req), " ".join(notes(req, lat)), descriptors=(req.source.name, req.display.name))}
+        chain = (
+            f"Apply the {SHAPER_SUFFIX} of the same name first (its 1D shaper, linear), then the .spi3d "
+            "(tetrahedral): in OCIO a GroupTransform of the two FileTransforms, in Nuke two OCIOFileTransform "
+            "nodes in that order."
+        )
+        return {
+            "": formats.spi3d(lat, [f"ocioforge: {title}.", *notes(req, lat)[1:], chain]),
+            SHAPER_SUFFIX: formats.spi1d_shaper(lat, [f"ocioforge: the shaper of {title}.", chain]),
+        }
+    return {
+        "": formats.clf(
+            lat, identifier(req), " ".join(notes(req, lat)), descriptors=(req.source.name, req.display.name)
+        )
+    }
 
 
 def identifier(req: Request) -> str:
@@ -361,8 +423,12 @@ def write(files: dict[Path, bytes], force: bool = False, remove: list[Path] | No
     delete ``remove`` (:func:`stale`: refused without it, as the files it replaces are)."""
     for path in remove or ():
         if not force:
-            raise SpecError(WHERE, "-o", f"{str(path)!r} exists, an earlier bake's shaper this one does not write; "
-                            "pass --force to replace the bake and delete it")
+            raise SpecError(
+                WHERE,
+                "-o",
+                f"{str(path)!r} exists, an earlier bake's shaper this one does not write; "
+                "pass --force to replace the bake and delete it",
+            )
     for path in files:
         check_file_output(path)
     write_files(files, force)

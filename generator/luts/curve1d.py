@@ -131,8 +131,9 @@ def bake_curve(name: str, curve, domain) -> BakedCurve:
     for k in SHAPER_EXPONENTS:
         shaped = _Shaped(curve, (lo, hi), k)
         size, error = _smallest(shaped, tuple(j ** (1.0 / k) for j in jumps))
-        candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, True, size, error, SHAPER_EXPONENTS.index(k),
-                           shaped))
+        candidates.append(
+            (error > tolerances.BAKED_CURVE_RELATIVE / 2, True, size, error, SHAPER_EXPONENTS.index(k), shaped)
+        )
     *_, size, error, _, shaped = min(candidates, key=lambda c: c[:5])
     values = shaped.decode(np.linspace(0.0, 1.0, size + 1)).astype(np.float32).astype(np.float64)
     return BakedCurve(f"{slug(name)}_to_linear.spi1d", (lo, hi), shaped.shaper, tuple(values), error)

@@ -111,8 +111,18 @@ def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
     touching = np.flatnonzero(~reached.all(axis=0))
     start = np.ascontiguousarray(lat.cube.reshape(-1, 3).T)
     rest = FIT_REGULARISATION**2 * (start**2 @ (free & ~unknown).astype(np.float64))
-    return _System(nodes, weights, expected, sets, unknown, columns, weights * reached, touching,
-                   weights[:, touching] * ~reached[:, touching], rest)
+    return _System(
+        nodes,
+        weights,
+        expected,
+        sets,
+        unknown,
+        columns,
+        weights * reached,
+        touching,
+        weights[:, touching] * ~reached[:, touching],
+        rest,
+    )
 
 
 def reweighted_fit(lat: Lattice, colours: dict, zero: int | None, rtol: float | None = None) -> np.ndarray:
@@ -121,8 +131,10 @@ def reweighted_fit(lat: Lattice, colours: dict, zero: int | None, rtol: float | 
     weight scaled by its error in the probes' metric (ten-bit codes, ΔE ITP for HDR)
     relative to its set's 99th percentile (see :data:`FIT_REWEIGHT_FLOOR`); ``rtol`` as
     :func:`fit`'s."""
-    base = {name: np.full(len(code), FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
-            for name, (code, _) in colours.items()}
+    base = {
+        name: np.full(len(code), FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
+        for name, (code, _) in colours.items()
+    }
     system = _system(lat, colours, zero)
     cube = fit(lat, colours, zero, base, system, rtol)
     for _ in range(FIT_REWEIGHTS):
@@ -146,7 +158,7 @@ def _percentile_99(values: np.ndarray) -> float:
     low = int(index)
     if low >= values.size - 1:
         return float(values.max())
-    a, b = np.partition(values, (low, low + 1))[low:low + 2]
+    a, b = np.partition(values, (low, low + 1))[low : low + 2]
     t, diff = index - low, b - a
     return float(b - diff * (1 - t) if t >= 0.5 else a + diff * t)
 
@@ -161,8 +173,14 @@ def _kept(size: int, zero: int | None) -> np.ndarray:
     return kept
 
 
-def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _System | None = None,
-        rtol: float | None = None) -> np.ndarray:
+def fit(
+    lat: Lattice,
+    colours: dict,
+    zero: int | None,
+    weights: dict,
+    system: _System | None = None,
+    rtol: float | None = None,
+) -> np.ndarray:
     """Node values minimising the weighted squared error of tetrahedral interpolation
     on ``colours`` (set name to (input values, expected codes); ``weights``, set name
     to a weight per colour; ``system``, :func:`_system` if already built), plus
@@ -188,6 +206,5 @@ def fit(lat: Lattice, colours: dict, zero: int | None, weights: dict, system: _S
 
     values = start.copy()
     rtol = FIT_RTOL if rtol is None else rtol  # read when called: FIT_RTOL is the one default
-    values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, rtol * whole,
-                                                  FIT_MAXITER)
+    values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, rtol * whole, FIT_MAXITER)
     return numbers.rounded(values.T.reshape(lat.cube.shape), CUBE_DECIMALS)

@@ -65,7 +65,7 @@ def _title(title: str) -> str:
     in the text becomes a single quote), cut to fit :data:`LINE_MAX`."""
     text = ascii_text(title).replace('"', "'")
     room = LINE_MAX - len('TITLE ""\n')
-    return f'TITLE "{text if len(text) <= room else text[:room - 3] + "..."}"\n'
+    return f'TITLE "{text if len(text) <= room else text[: room - 3] + "..."}"\n'
 
 
 def _n(value) -> str:
@@ -77,8 +77,12 @@ def resolve_cube(lattice: Lattice, title: str, notes=()) -> bytes:
     head = [_comments([title, *notes])]  # OCIO's Resolve reader takes no TITLE line
     body = []
     if lattice.shaper is not None:
-        head += [f"LUT_1D_SIZE {lattice.shaper.size}\n", f"LUT_1D_INPUT_RANGE {_n(lo)} {_n(hi)}\n",
-                 f"LUT_3D_SIZE {lattice.size}\n", "LUT_3D_INPUT_RANGE 0 1\n"]
+        head += [
+            f"LUT_1D_SIZE {lattice.shaper.size}\n",
+            f"LUT_1D_INPUT_RANGE {_n(lo)} {_n(hi)}\n",
+            f"LUT_3D_SIZE {lattice.size}\n",
+            "LUT_3D_INPUT_RANGE 0 1\n",
+        ]
         body.append(numbers.table(np.repeat(lattice.shaper[:, None], 3, axis=1), SHAPER_DECIMALS))
     else:
         head += [f"LUT_3D_SIZE {lattice.size}\n", f"LUT_3D_INPUT_RANGE {_n(lo)} {_n(hi)}\n"]
@@ -90,8 +94,10 @@ def iridas_cube(lattice: Lattice, title: str, notes=()) -> bytes:
     if lattice.shaper is not None:
         raise ValueError("an Iridas .cube holds no shaper")
     lo, hi = lattice.domain
-    head = (f"{_title(title)}{_comments(notes)}LUT_3D_SIZE {lattice.size}\n"
-            f"DOMAIN_MIN {_n(lo)} {_n(lo)} {_n(lo)}\nDOMAIN_MAX {_n(hi)} {_n(hi)} {_n(hi)}\n")
+    head = (
+        f"{_title(title)}{_comments(notes)}LUT_3D_SIZE {lattice.size}\n"
+        f"DOMAIN_MIN {_n(lo)} {_n(lo)} {_n(lo)}\nDOMAIN_MAX {_n(hi)} {_n(hi)} {_n(hi)}\n"
+    )
     return ascii_text(head).encode("ascii") + numbers.table(red_fastest(lattice.cube), lattice.decimals)
 
 
@@ -136,8 +142,10 @@ def _exponent(style: str, gamma: float, offset: float | None = None) -> str:
 
 
 def _range(lo: float, hi: float) -> str:
-    body = "".join(f"<{tag}>{_n(v)}</{tag}>\n" for tag, v in
-                   (("minInValue", lo), ("maxInValue", hi), ("minOutValue", 0.0), ("maxOutValue", 1.0)))
+    body = "".join(
+        f"<{tag}>{_n(v)}</{tag}>\n"
+        for tag, v in (("minInValue", lo), ("maxInValue", hi), ("minOutValue", 0.0), ("maxOutValue", 1.0))
+    )
     return op("Range", body)
 
 
@@ -148,8 +156,13 @@ def _lut1d(values: np.ndarray, decimals: int) -> str:
 def _log_axis(axis: LogAxis, style: str = "linToLog") -> str:
     """The Log operator taking normalised display-linear x to the coordinate of ``axis``:
     ``log2(x + toe) / span - log2(toe) / span`` (``logToLin``: back)."""
-    params = dict(base=2.0, logSideSlope=1.0 / axis.span, logSideOffset=-np.log2(axis.toe) / axis.span,
-                  linSideSlope=1.0, linSideOffset=axis.toe)
+    params = dict(
+        base=2.0,
+        logSideSlope=1.0 / axis.span,
+        logSideOffset=-np.log2(axis.toe) / axis.span,
+        linSideSlope=1.0,
+        linSideOffset=axis.toe,
+    )
     attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
     return op("Log", f"<LogParams {attrs}/>\n", style=style)
 
@@ -165,8 +178,13 @@ def _pre_shaper(pre, forward: bool = True) -> str:
 
 def _log_camera(curve: LogCamera) -> str:
     """A LogCamera curve's decoding: CLF's camera style with a break, its plain log style without."""
-    params = dict(base=curve.base, logSideSlope=curve.log_side_slope, logSideOffset=curve.log_side_offset,
-                  linSideSlope=curve.lin_side_slope, linSideOffset=curve.lin_side_offset)
+    params = dict(
+        base=curve.base,
+        logSideSlope=curve.log_side_slope,
+        logSideOffset=curve.log_side_offset,
+        linSideSlope=curve.lin_side_slope,
+        linSideOffset=curve.lin_side_offset,
+    )
     if curve.lin_side_break is not None:
         params["linSideBreak"] = curve.lin_side_break
     if curve.linear_slope is not None:
@@ -194,7 +212,7 @@ def decode_ops(name: str, curve) -> str:
     if baked.shaper != 1:
         ops += _exponent("basicFwd", 1.0 / baked.shaper)
     values = np.asarray(baked.values)
-    return ops + op("LUT1D", "<Array dim=\"%d 1\">\n%s</Array>\n" % (values.size, "".join(f"{v:.9g}\n" for v in values)))
+    return ops + op("LUT1D", f'<Array dim="{values.size} 1">\n' + "".join(f"{v:.9g}\n" for v in values) + "</Array>\n")
 
 
 def _matrix(matrix: np.ndarray) -> str:
@@ -230,8 +248,13 @@ def _light(lattice: Lattice) -> list[str]:
     return [_matrix(np.eye(3) * light.norm), _pre_shaper(light, forward=False), _matrix(np.eye(3) / light.scale)]
 
 
-def clf(lattice: Lattice, identifier: str, description: str, include_matrix: bool = True,
-        descriptors: tuple[str, str] = ("", "")) -> bytes:
+def clf(
+    lattice: Lattice,
+    identifier: str,
+    description: str,
+    include_matrix: bool = True,
+    descriptors: tuple[str, str] = ("", ""),
+) -> bytes:
     """A CLF v3 ProcessList of ``lattice``. Display layout: [decoding, Matrix,] pre-shaper,
     Range, [LUT1D,] LUT3D, [LUT1D]; without ``include_matrix`` the file starts at the
     pre-shaper and its input is normalised display-linear RGB (the config keeps
@@ -241,8 +264,13 @@ def clf(lattice: Lattice, identifier: str, description: str, include_matrix: boo
     if lattice.shaper is not None:
         ops.append(_lut1d(lattice.shaper, SHAPER_DECIMALS))
     n = lattice.size
-    ops.append(op("LUT3D", table_array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", lattice.decimals),
-                  interpolation=INTERPOLATION))
+    ops.append(
+        op(
+            "LUT3D",
+            table_array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", lattice.decimals),
+            interpolation=INTERPOLATION,
+        )
+    )
     if lattice.post is not None:
         ops.append(_lut1d(lattice.post, CUBE_DECIMALS))
     ops += _light(lattice)
@@ -251,9 +279,11 @@ def clf(lattice: Lattice, identifier: str, description: str, include_matrix: boo
 
 def clf_document(ops: list[str], identifier: str, description: str, descriptors: tuple[str, str] = ("", "")) -> bytes:
     """A CLF v3 ProcessList of the process nodes ``ops`` (text from :func:`op`)."""
-    head = (f'<?xml version="1.0" encoding="UTF-8"?>\n'
-            f'<ProcessList xmlns="{CLF_NAMESPACE}" compCLFversion="3.0" id="{_xml(identifier)}">\n'
-            f"<Description>{_xml(description)}</Description>\n")
+    head = (
+        f'<?xml version="1.0" encoding="UTF-8"?>\n'
+        f'<ProcessList xmlns="{CLF_NAMESPACE}" compCLFversion="3.0" id="{_xml(identifier)}">\n'
+        f"<Description>{_xml(description)}</Description>\n"
+    )
     if descriptors[0]:
         head += f"<InputDescriptor>{_xml(descriptors[0])}</InputDescriptor>\n"
     if descriptors[1]:

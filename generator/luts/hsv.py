@@ -24,9 +24,19 @@ from functools import lru_cache
 import numpy as np
 
 from generator.colorimetry import reference
-from generator.luts.hsv_axes import (HSV_SIZE, SHARED_SCALE, VALUE_NODES, _saturation_of_u, hue_shape, hue_to_kappa,
-                                     kappa_to_hue, lattice_coordinates, ocio_hsv_to_rgb, saturation_nodes,
-                                     shared_table)
+from generator.luts.hsv_axes import (
+    HSV_SIZE,
+    SHARED_SCALE,
+    VALUE_NODES,
+    _saturation_of_u,
+    hue_shape,
+    hue_to_kappa,
+    kappa_to_hue,
+    lattice_coordinates,
+    ocio_hsv_to_rgb,
+    saturation_nodes,
+    shared_table,
+)
 from generator.spec.schema import Display
 
 #: Entries of the display file's 1D tables (hue to ``kappa``, and back with the clamp of
@@ -125,11 +135,16 @@ def hsv_clf(lat: HsvLattice, identifier: str, description: str) -> bytes:
 
     matrix = np.diag([SHARED_SCALE, 1.0, 1.0])
     n = lat.size
-    ops = [op("Matrix", f'<Array dim="3 3">\n{_rows(matrix, 17)}</Array>\n'),
-           op("LUT1D", table_array(lat.pre, f"{HSV_ENTRIES} 3", HSV_TABLE_DECIMALS)),
-           op("LUT3D", f'<Array dim="{n} {n} {n} 3">\n{_rows(lat.cube.reshape(-1, 3), HSV_DIGITS)}</Array>\n',
-              interpolation="trilinear"),
-           op("LUT1D", table_array(lat.post, f"{HSV_ENTRIES} 3", HSV_TABLE_DECIMALS))]
+    ops = [
+        op("Matrix", f'<Array dim="3 3">\n{_rows(matrix, 17)}</Array>\n'),
+        op("LUT1D", table_array(lat.pre, f"{HSV_ENTRIES} 3", HSV_TABLE_DECIMALS)),
+        op(
+            "LUT3D",
+            f'<Array dim="{n} {n} {n} 3">\n{_rows(lat.cube.reshape(-1, 3), HSV_DIGITS)}</Array>\n',
+            interpolation="trilinear",
+        ),
+        op("LUT1D", table_array(lat.post, f"{HSV_ENTRIES} 3", HSV_TABLE_DECIMALS)),
+    ]
     return clf_document(ops, identifier, description)
 
 
@@ -141,8 +156,13 @@ def shared_clf() -> bytes:
 
     matrix = "1 0 0 0\n0 -1 0 2\n0 0 1 0\n"
     body = "".join(f"{h:.9g} {s:.9g} {v:.9g}\n" for h, s, v in shared_table().tolist())
-    nodes = [op("Matrix", f'<Array dim="3 4 3">\n{matrix}</Array>\n', out_depth="16f"),
-             op("LUT1D", f'<Array dim="65536 3">\n{body}</Array>\n', in_depth="16f", halfDomain="true")]
-    return clf_document(nodes, "ocioforge:hsv_coordinates",
-                        "ocioforge: OCIO HSV (H, S, V) to the desaturate views' lattice coordinates (H / 6, "
-                        "saturation's u = 1 / (2 - S) above S = 1, value's), shared by every display.")
+    nodes = [
+        op("Matrix", f'<Array dim="3 4 3">\n{matrix}</Array>\n', out_depth="16f"),
+        op("LUT1D", f'<Array dim="65536 3">\n{body}</Array>\n', in_depth="16f", halfDomain="true"),
+    ]
+    return clf_document(
+        nodes,
+        "ocioforge:hsv_coordinates",
+        "ocioforge: OCIO HSV (H, S, V) to the desaturate views' lattice coordinates (H / 6, "
+        "saturation's u = 1 / (2 - S) above S = 1, value's), shared by every display.",
+    )

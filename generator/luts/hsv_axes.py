@@ -42,7 +42,6 @@ import numpy as np
 
 from generator import tolerances
 
-
 #: Nodes a side: three per sixth of the hue circle (the lattice is exact, so size only buys
 #: float32 precision).
 HSV_SIZE = 19
@@ -88,8 +87,27 @@ SATURATION_NODES_ABOVE = (8 / 7, 4 / 3, 2.0, 4.0, 8.0, 32.0, 256.0, 8192.0, SATU
 #: cell, so a wide top cell costs only float32 resolution, while a clamp at 1024 left
 #: colours far outside the gamut whose luminance is below a thousandth of V dimmer than the
 #: mapping (scene 20 on a 1 cd/m² display, 216 ten-bit codes).
-VALUE_NODES = (0.0, 2.0**-16, 2.0**-8, 1 / 16, 0.25, 1.0, 4.0, 16.0, 256.0, 65504.0,
-               -256.0, -16.0, -1.0, -2.0**-4, -2.0**-8, -2.0**-12, -2.0**-16, -2.0**-20, -0.0)
+VALUE_NODES = (
+    0.0,
+    2.0**-16,
+    2.0**-8,
+    1 / 16,
+    0.25,
+    1.0,
+    4.0,
+    16.0,
+    256.0,
+    65504.0,
+    -256.0,
+    -16.0,
+    -1.0,
+    -(2.0**-4),
+    -(2.0**-8),
+    -(2.0**-12),
+    -(2.0**-16),
+    -(2.0**-20),
+    -0.0,
+)
 
 #: Nodes of :data:`VALUE_NODES` at or above 0.
 POSITIVE_VALUE_NODES = 10
@@ -109,8 +127,11 @@ def ocio_rgb_to_hsv(rgb) -> np.ndarray:
     low, high = c.min(axis=-1), c.max(axis=-1)
     delta = high - low
     spread = np.where(delta > 0.0, delta, 1.0)
-    hue = np.where(red == high, (green - blue) / spread,
-                   np.where(green == high, 2.0 + (blue - red) / spread, 4.0 + (red - green) / spread))
+    hue = np.where(
+        red == high,
+        (green - blue) / spread,
+        np.where(green == high, 2.0 + (blue - red) / spread, 4.0 + (red - green) / spread),
+    )
     hue = np.where(delta > 0.0, np.where(hue < 0.0, hue + 6.0, hue) / 6.0, 0.0)
     saturation = np.where((delta > 0.0) & (high != 0.0), delta / np.where(high != 0.0, high, 1.0), 0.0)
     saturation = np.where(-low > high, delta / np.where(low < 0.0, -low, 1.0), saturation)
@@ -185,8 +206,9 @@ def _coordinates(hue: np.ndarray, t: np.ndarray, value: np.ndarray) -> np.ndarra
     with np.errstate(divide="ignore"):
         u = np.where(t >= 1.0, 2.0 - t, 1.0 / np.maximum(t, 0.0))
     nodes, split = np.array(VALUE_NODES), POSITIVE_VALUE_NODES
-    v = np.where(np.signbit(value), np.interp(value, nodes[split:], grid[split:]),
-                 np.interp(value, nodes[:split], grid[:split]))
+    v = np.where(
+        np.signbit(value), np.interp(value, nodes[split:], grid[split:]), np.interp(value, nodes[:split], grid[:split])
+    )
     return np.stack([np.clip(hue, 0.0, 1.0) / SHARED_SCALE, np.interp(u, saturation_nodes(), grid), v], axis=-1)
 
 
@@ -206,9 +228,11 @@ def table_inputs() -> np.ndarray:
     finite = halves[np.isfinite(halves)]
     hue = finite[(finite >= 0.0) & (finite <= 1.0) & ~np.signbit(finite)]
     t = finite[(finite >= 1.0 / SATURATION_REACH) & (finite <= 2.0)]
-    rows = [np.stack([hue, np.full_like(hue, 0.5), np.full_like(hue, 0.5)], axis=-1),
-            np.stack([np.full_like(t, 0.25), 2.0 - t, np.full_like(t, 0.5)], axis=-1),
-            np.stack([np.full_like(finite, 0.25), np.full_like(finite, 0.5), finite], axis=-1)]
+    rows = [
+        np.stack([hue, np.full_like(hue, 0.5), np.full_like(hue, 0.5)], axis=-1),
+        np.stack([np.full_like(t, 0.25), 2.0 - t, np.full_like(t, 0.5)], axis=-1),
+        np.stack([np.full_like(finite, 0.25), np.full_like(finite, 0.5), finite], axis=-1),
+    ]
     return np.concatenate(rows)
 
 
@@ -240,8 +264,11 @@ def hsv_of_coordinates(coordinates: np.ndarray) -> np.ndarray:
     grid = np.linspace(0.0, 1.0, HSV_SIZE)
     u = np.interp(c[:, 1], grid, saturation_nodes())
     nodes, split = np.array(VALUE_NODES), POSITIVE_VALUE_NODES
-    value = np.where(c[:, 2] <= grid[split - 1], np.interp(c[:, 2], grid[:split], nodes[:split]),
-                     np.interp(c[:, 2], grid[split:], nodes[split:]))
+    value = np.where(
+        c[:, 2] <= grid[split - 1],
+        np.interp(c[:, 2], grid[:split], nodes[:split]),
+        np.interp(c[:, 2], grid[split:], nodes[split:]),
+    )
     hue = np.clip(c[:, 0] * SHARED_SCALE, 0.0, 1.0)  # the file's first table clamps (no wrap past red)
     return np.stack([hue, _saturation_of_u(u), value], axis=-1)
 

@@ -86,6 +86,7 @@ ENTRIES_PER_UNIT = 64
 #: times as many: 0.045 ΔE ITP in gamut with 4096, 0.004 with 16384, Display P3 HDR).
 POST_SIZE = 4096
 
+
 @dataclass(frozen=True)
 class PreShaper:
     """An analytic per-channel curve before the shaper table: the display's inverse EOTF
@@ -205,8 +206,15 @@ def grid(axis: np.ndarray) -> np.ndarray:
     return out
 
 
-def node_values(display: Display, method: str, linear_axis: np.ndarray, matrix: np.ndarray, params,
-              light: PreShaper | None = None, decimals: int = CUBE_DECIMALS) -> np.ndarray:
+def node_values(
+    display: Display,
+    method: str,
+    linear_axis: np.ndarray,
+    matrix: np.ndarray,
+    params,
+    light: PreShaper | None = None,
+    decimals: int = CUBE_DECIMALS,
+) -> np.ndarray:
     """Mapped code values on the grid of per-axis linear values, ``[r, g, b]`` order (with
     ``light``, its forward curve of the mapped normalised display-linear values instead).
     Codes are not clipped above 1: HLG's inverse EOTF exceeds 1 for saturated colours."""
@@ -226,7 +234,7 @@ def display_table(axis: Axis, pre: PreShaper) -> tuple[tuple[float, float], np.n
     with 0 and 1 on entries, to lattice coordinates. Returns (domain, values)."""
     w_low = -np.ceil(-pre.forward(axis.low) * ENTRIES_PER_UNIT) / ENTRIES_PER_UNIT
     w_high = np.ceil(pre.forward(axis.high) * ENTRIES_PER_UNIT) / ENTRIES_PER_UNIT
-    count = int(round((w_high - w_low) * ENTRIES_PER_UNIT)) + 1
+    count = round((w_high - w_low) * ENTRIES_PER_UNIT) + 1
     w = np.linspace(w_low, w_high, count)
     return (float(w_low), float(w_high)), numbers.rounded(axis.coordinate(pre.inverse(w)), SHAPER_DECIMALS)
 
@@ -296,8 +304,15 @@ def _log_light(display: Display, method: str, axis: LogAxis, params) -> np.ndarr
     return numbers.rounded(axis.coordinate(mapped), LOG_DECIMALS)
 
 
-def display_lattice(spec: Spec, display: Display, method: str, size: int, source: ColourSpace | None = None,
-                    params=None, light: bool = False) -> Lattice:
+def display_lattice(
+    spec: Spec,
+    display: Display,
+    method: str,
+    size: int,
+    source: ColourSpace | None = None,
+    params=None,
+    light: bool = False,
+) -> Lattice:
     """The display layout. With ``source``, the lattice's input is that space's code
     values (its curve and matrix come first); without, scene-reference linear RGB
     (the matrix is the caller's: :func:`~generator.colorimetry.reference.normalised_display_matrix`).
@@ -317,8 +332,9 @@ def display_lattice(spec: Spec, display: Display, method: str, size: int, source
     if isinstance(axis, LogAxis):
         if light:
             cube = _log_light(display, method, axis, params)
-            return Lattice(source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, None, LOG_DECIMALS,
-                           light=axis)
+            return Lattice(
+                source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, None, LOG_DECIMALS, light=axis
+            )
         cube, post = _log_lattice(display, method, axis, params)
         return Lattice(source, display, method, decode, matrix, axis, (0.0, 1.0), None, cube, post, LOG_DECIMALS)
     pre = PreShaper.for_display(display, scaled=not light)
@@ -345,8 +361,15 @@ def _shaper_table(spec: Spec, source: ColourSpace, display: Display, size: int, 
     return numbers.rounded(coordinate, SHAPER_DECIMALS)
 
 
-def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: str, size: int,
-                   shaper: str | ColourSpace = "auto", params=None) -> Lattice:
+def source_lattice(
+    spec: Spec,
+    source: ColourSpace,
+    display: Display,
+    method: str,
+    size: int,
+    shaper: str | ColourSpace = "auto",
+    params=None,
+) -> Lattice:
     """The source layout. ``shaper``: "auto" (:class:`SourceAxis` on the decoded source),
     "none" (the cube directly over the source domain) or a colour space whose
     curve, applied to the decoded source values, spaces the nodes. ``params`` None takes
@@ -355,7 +378,9 @@ def source_lattice(spec: Spec, source: ColourSpace, display: Display, method: st
 
     params = reference.method_params(spec, method, params, source, display)
 
-    domain = shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
+    domain = (
+        shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
+    )
     table = _shaper_table(spec, source, display, size, shaper, domain)
     codes = preimages(size, table, domain)
     with np.errstate(all="ignore"):

@@ -42,7 +42,7 @@ def _stem(name: str, level: int) -> str:
     if level == 0:
         return slug(name)
     digits = DIGEST_DIGITS[level - 1]
-    cut = slug(name)[:STEM_MAX - 1 - digits].rstrip("_")
+    cut = slug(name)[: STEM_MAX - 1 - digits].rstrip("_")
     return "_".join(filter(None, (cut, hashlib.sha256(name.encode("utf-8")).hexdigest()[:digits])))
 
 

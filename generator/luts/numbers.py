@@ -21,7 +21,7 @@ def rounded(values, decimals: int) -> np.ndarray:
 #: units as ASCII, and how many trailing zeros it has (3 for 0).
 _GROUP = np.arange(1000)
 _GROUP_DIGITS = tuple(((_GROUP // place) % 10 + ord("0")).astype(np.uint8) for place in (100, 10, 1))
-_GROUP_TRAILING = ((_GROUP % 10 == 0).astype(np.int64) + (_GROUP % 100 == 0) + (_GROUP == 0))
+_GROUP_TRAILING = (_GROUP % 10 == 0).astype(np.int64) + (_GROUP % 100 == 0) + (_GROUP == 0)
 
 
 def _digits(rest: np.ndarray, count: int) -> tuple[list[np.ndarray], np.ndarray]:
@@ -63,7 +63,7 @@ def table(values, decimals: int) -> bytes:
     q = np.rint(values * scale)
     if not np.all(np.abs(q) < 10 * scale):
         raise ValueError("table values must lie within (-10, 10)")
-    return b"".join(_block(q[start:start + TABLE_BLOCK], decimals) for start in range(0, len(q), TABLE_BLOCK))
+    return b"".join(_block(q[start : start + TABLE_BLOCK], decimals) for start in range(0, len(q), TABLE_BLOCK))
 
 
 def _block(q: np.ndarray, decimals: int) -> bytes:

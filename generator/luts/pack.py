@@ -33,8 +33,10 @@ FORMATS = ("resolve_cube", "clf")
 SIZES = {"resolve_cube": 33, "clf": LOG_VIEW_SIZE}
 
 #: ACES views in the pack, each baked from every source for the display it is named on.
-ACES_VIEWS = (("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
-              ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"))
+ACES_VIEWS = (
+    ("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
+    ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"),
+)
 
 #: The ACES views' lattices: nodes a side, decimals of their values (a tenth of a ten-bit code),
 #: entries of an encoded source's .cube shaper table. The pack's other files leave 6.75 MB of
@@ -53,6 +55,7 @@ def aces_formats(source) -> tuple[str, ...]:
     from generator.colorimetry.transfer import Linear
 
     return ("clf",) if isinstance(source.curve, Linear) else ("clf", "resolve_cube")
+
 
 README_HEAD = """# ocioforge standalone LUTs
 
@@ -166,14 +169,16 @@ def pack_name(source: str, display: str, fmt: str) -> str:
     return f"{slug(source)}_to_{slug(display)}{bake.FORMATS[fmt].suffix}"
 
 
-def _measure(req: bake.Request, path: Path, interpolation: str = "tetrahedral",
-             optimization: str = "OPTIMIZATION_LOSSLESS") -> dict:
+def _measure(
+    req: bake.Request, path: Path, interpolation: str = "tetrahedral", optimization: str = "OPTIMIZATION_LOSSLESS"
+) -> dict:
     import PyOpenColorIO as ocio
 
     mode = {"tetrahedral": ocio.INTERP_TETRAHEDRAL, "trilinear": ocio.INTERP_LINEAR}[interpolation]
     transform = ocio.FileTransform(str(path), interpolation=mode)
-    return probes.measure(req.spec, req.source, req.display, req.method,
-                          probes.ocio_apply(transform, optimization=optimization))
+    return probes.measure(
+        req.spec, req.source, req.display, req.method, probes.ocio_apply(transform, optimization=optimization)
+    )
 
 
 def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: dict | None) -> str:
@@ -186,8 +191,10 @@ def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: 
     fast = max(f.maximum for f in default.values())
     unit = figures["in_gamut"].unit
     other = f"{max(f.p99 for f in trilinear.values()):.2f}" if trilinear else "(named in the file)"
-    return (f"| {name} | {req.source.name} | {req.display.name} | {req.method} | {req.size}³ | "
-            f"{inside:.3f} | {p99:.3f} | {worst:.3f} | {fast:.3f} | {unit} | {other} |\n")
+    return (
+        f"| {name} | {req.source.name} | {req.display.name} | {req.method} | {req.size}³ | "
+        f"{inside:.3f} | {p99:.3f} | {worst:.3f} | {fast:.3f} | {unit} | {other} |\n"
+    )
 
 
 def aces_name(source: str, view: str, display: str, fmt: str) -> str:
@@ -206,8 +213,9 @@ def write_aces(spec: Spec, folder: Path) -> list[str]:
                 if fmt == "clf":
                     lat = aces_bake.display_lattice(spec, req.source, req.display, req.view, ACES_SIZE, ACES_DECIMALS)
                 else:
-                    lat = aces_bake.source_lattice(spec, req.source, req.display, req.view, ACES_SIZE, "auto",
-                                                   ACES_DECIMALS, ACES_SHAPER_ENTRIES)
+                    lat = aces_bake.source_lattice(
+                        spec, req.source, req.display, req.view, ACES_SIZE, "auto", ACES_DECIMALS, ACES_SHAPER_ENTRIES
+                    )
                 name = aces_name(source, view, display, fmt)
                 (folder / name).write_bytes(bake.lattice_files(req, lat)[""])
                 rows.append(_aces_row(name, req, _aces_measure(req, folder / name)))
@@ -267,13 +275,23 @@ def build_pack(folder: str | Path, spec: Spec | None = None) -> Path:
     with staged_folder(folder) as staging:
         rows = write_pack(spec, staging)
         aces = write_aces(spec, staging)
-        head = README_HEAD.format(method=bake.DEFAULT_METHOD, cube_size=SIZES["resolve_cube"], clf_size=SIZES["clf"],
-                                 ocio=ocio.__version__, count=probes.COUNT,
-                                 shaper_steps=SOURCE_SHAPER_SIZES[1] - 1)
-        aces_head = ACES_HEAD.format(size=ACES_SIZE, decimals=ACES_DECIMALS, entries=ACES_SHAPER_ENTRIES,
-                                     count=aces_probes.PROBE_COUNT, ocio=ocio.__version__,
-                                     labels=" | ".join(f"{aces_probes.LABELS[k]} p99 / max" for k in aces_probes.SETS),
-                                     rule=" --- |" * len(aces_probes.SETS))
+        head = README_HEAD.format(
+            method=bake.DEFAULT_METHOD,
+            cube_size=SIZES["resolve_cube"],
+            clf_size=SIZES["clf"],
+            ocio=ocio.__version__,
+            count=probes.COUNT,
+            shaper_steps=SOURCE_SHAPER_SIZES[1] - 1,
+        )
+        aces_head = ACES_HEAD.format(
+            size=ACES_SIZE,
+            decimals=ACES_DECIMALS,
+            entries=ACES_SHAPER_ENTRIES,
+            count=aces_probes.PROBE_COUNT,
+            ocio=ocio.__version__,
+            labels=" | ".join(f"{aces_probes.LABELS[k]} p99 / max" for k in aces_probes.SETS),
+            rule=" --- |" * len(aces_probes.SETS),
+        )
         text = head + "".join(rows) + (aces_head + "".join(aces) if aces else "")
         (staging / "README.md").write_text(text, encoding="utf-8")
     return folder

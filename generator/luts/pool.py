@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+from collections.abc import Callable, Hashable
 from concurrent.futures import Future, ProcessPoolExecutor
-from typing import Callable, Hashable
 
 
 class Pool:
@@ -42,7 +42,7 @@ class Pool:
             self._executor.shutdown(cancel_futures=True)
             self._executor = None
 
-    def __enter__(self) -> "Pool":
+    def __enter__(self) -> Pool:
         return self
 
     def __exit__(self, *exc) -> None:

@@ -62,13 +62,18 @@ def _display_linear(spec: Spec, source: ColourSpace, display: Display, rng, coun
     dark = rng.random((count, 3))
     sets["dark"] = dark / channel_max(dark)[:, None] * 10.0 ** rng.uniform(-4, -2, (count, 1))
     wide = rng.random((8 * count, 3))
-    sets["out_of_gamut"] = _first(count, lambda rgb: channel_min(rgb) < 0,
-                                  lambda rows: reference.apply_matrix(to_display, rows), wide)
+    sets["out_of_gamut"] = _first(
+        count, lambda rgb: channel_min(rgb) < 0, lambda rows: reference.apply_matrix(to_display, rows), wide
+    )
     exponent = rng.uniform(0, np.log10(OVER_RANGE), (8 * count, 1))
     bright = rng.random((8 * count, 3))
-    sets["over_range"] = _first(count, lambda rgb: channel_max(rgb) > high,
-                                lambda rows, e: reference.apply_matrix(to_display, rows * (high * 10.0 ** e)), bright,
-                                exponent)
+    sets["over_range"] = _first(
+        count,
+        lambda rgb: channel_max(rgb) > high,
+        lambda rows, e: reference.apply_matrix(to_display, rows * (high * 10.0**e)),
+        bright,
+        exponent,
+    )
     return sets
 
 
@@ -78,8 +83,8 @@ def _first(count: int, keep, make, *drawn: np.ndarray) -> np.ndarray:
     ``count``-th kept one are drawn (the generator's sequence stays the same) but never made."""
     block, found, total = max(2 * count, 1), [], 0
     for start in range(0, len(drawn[0]), block):
-        made = make(*(d[start:start + block] for d in drawn))
-        found.append(made[keep(made)][:count - total])
+        made = make(*(d[start : start + block] for d in drawn))
+        found.append(made[keep(made)][: count - total])
         total += len(found[-1])
         if total >= count:
             break
@@ -97,8 +102,9 @@ def representable(spec: Spec, source: ColourSpace, ref: np.ndarray, code: np.nda
         return np.ones(len(ref), dtype=bool)
     with np.errstate(all="ignore"):
         code = reference.from_reference(spec, source, ref) if code is None else code
-        return colour_relative_error(reference.to_reference(spec, source, code), ref) <= \
-            tolerances.REPRESENTABLE_RELATIVE
+        return (
+            colour_relative_error(reference.to_reference(spec, source, code), ref) <= tolerances.REPRESENTABLE_RELATIVE
+        )
 
 
 def held(spec: Spec, source: ColourSpace, display: Display, ref: np.ndarray, code: np.ndarray) -> np.ndarray:
@@ -108,15 +114,16 @@ def held(spec: Spec, source: ColourSpace, display: Display, ref: np.ndarray, cod
     from generator.luts.source_axes import code_range
 
     keep = representable(spec, source, ref, code)
-    low, high, capped = code_range(source, display)
+    _low, high, capped = code_range(source, display)
     if capped:
         with np.errstate(invalid="ignore"):
             keep &= np.all(code <= high, axis=-1)
     return keep
 
 
-def probes(spec: Spec, source: ColourSpace, display: Display, count: int = COUNT,
-           gamut_source: ColourSpace | None = None) -> dict[str, np.ndarray]:
+def probes(
+    spec: Spec, source: ColourSpace, display: Display, count: int = COUNT, gamut_source: ColourSpace | None = None
+) -> dict[str, np.ndarray]:
     """The probe sets as scene-reference linear RGB, shape (n, 3) each.
 
     ``gamut_source`` (default ``source``) is the space whose gamut the
@@ -127,8 +134,15 @@ def probes(spec: Spec, source: ColourSpace, display: Display, count: int = COUNT
     return {name: reference.apply_matrix(to_reference, linear) for name, linear in sets.items()}
 
 
-def training(spec: Spec, source: ColourSpace, display: Display, method: str, count: int, params=None,
-             gamut_source: ColourSpace | None = None) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+def training(
+    spec: Spec,
+    source: ColourSpace,
+    display: Display,
+    method: str,
+    count: int,
+    params=None,
+    gamut_source: ColourSpace | None = None,
+) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Colours of the four kinds the probes measure, from another seed: per set, the
     source code values (n, 3) and the reference's display code values (n, 3)."""
     rng = np.random.default_rng(TRAINING_SEED)
@@ -155,8 +169,15 @@ def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
     return channel_max(np.abs(actual - expected)) * 1023.0, "10-bit codes"
 
 
-def set_errors(spec: Spec, source: ColourSpace | None, display: Display, method: str, apply,
-               gamut_source: ColourSpace | None = None, count: int = COUNT) -> tuple[dict[str, np.ndarray], str]:
+def set_errors(
+    spec: Spec,
+    source: ColourSpace | None,
+    display: Display,
+    method: str,
+    apply,
+    gamut_source: ColourSpace | None = None,
+    count: int = COUNT,
+) -> tuple[dict[str, np.ndarray], str]:
     """Per-colour errors of ``apply`` (source code values (n, 3) -> display code values)
     on every set, and their unit. ``source`` None means the input is scene-reference
     linear RGB. A set with no colours (no out-of-gamut colours when the source gamut
@@ -171,14 +192,22 @@ def set_errors(spec: Spec, source: ColourSpace | None, display: Display, method:
         if not len(ref):
             continue
         with np.errstate(all="ignore"):
-            expected = reference.mapped_view(spec, display, method, ref,
-                                             reference.method_params(spec, method, None, source, display))
+            expected = reference.mapped_view(
+                spec, display, method, ref, reference.method_params(spec, method, None, source, display)
+            )
         result[name], unit = errors(display, apply(code), expected)
     return result, unit
 
 
-def measure(spec: Spec, source: ColourSpace | None, display: Display, method: str, apply,
-            gamut_source: ColourSpace | None = None, count: int = COUNT) -> dict[str, Figures]:
+def measure(
+    spec: Spec,
+    source: ColourSpace | None,
+    display: Display,
+    method: str,
+    apply,
+    gamut_source: ColourSpace | None = None,
+    count: int = COUNT,
+) -> dict[str, Figures]:
     """Figures of ``apply`` on every set (see :func:`set_errors`)."""
     sets, unit = set_errors(spec, source, display, method, apply, gamut_source, count)
     return {name: Figures(float(e.max()), float(np.percentile(e, 99)), unit) for name, e in sets.items()}

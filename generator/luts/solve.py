@@ -35,8 +35,9 @@ def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.einsum("ck,ck->c", a, b)
 
 
-def conjugate_gradient(matvec, right: np.ndarray, start: np.ndarray, diagonal: np.ndarray, tolerance: np.ndarray,
-                       maxiter: int) -> np.ndarray:
+def conjugate_gradient(
+    matvec, right: np.ndarray, start: np.ndarray, diagonal: np.ndarray, tolerance: np.ndarray, maxiter: int
+) -> np.ndarray:
     """Jacobi-preconditioned conjugate gradients for ``M x = right``: ``M`` symmetric
     positive definite, applied to (c, k) arrays by ``matvec``, with main diagonal
     ``diagonal`` (k,); one system per row of ``right`` (c, k), from ``start``.

@@ -196,12 +196,12 @@ def _entries(position: np.ndarray, zero: int, count: int) -> np.ndarray:
     while dense < position.size and position[dense] - position[zero] < 1.0:
         dense += 1
     if dense > zero + 1:
-        entry[zero + 1:dense] = position[zero] + np.arange(1, dense - zero) / (dense - zero - 1)
+        entry[zero + 1 : dense] = position[zero] + np.arange(1, dense - zero) / (dense - zero - 1)
     rank = np.arange(position.size - dense)
     rest = np.maximum(entry[dense:], entry[dense - 1] + 1.0)
     entry[dense:] = np.maximum.accumulate(rest - rank) + rank
     gap = zero - np.arange(zero + 1)  # below 0: each node at least one entry below the next
-    entry[:zero + 1] = np.minimum.accumulate((entry[:zero + 1] + gap)[::-1])[::-1] - gap
+    entry[: zero + 1] = np.minimum.accumulate((entry[: zero + 1] + gap)[::-1])[::-1] - gap
     return np.clip(entry, np.arange(position.size), count - 1.0 - np.arange(position.size)[::-1])
 
 

@@ -81,15 +81,29 @@ class ViewLut:
         """The view as the config runs it (every file by name on the search path, the
         display's baked curve among them), measured through OCIO."""
         bakes: dict = {}
-        transform = view_transform(self.matrix, self.filename, *((self.spec, self.display) if self.light else ()),
-                                   hsv_folder="" if self.hsv else None, bakes=bakes)
-        files = {self.filename: self.data, **dict(self.beside),
-                 **{filename: curve_file(baked) for filename, baked in bakes.items()}}
+        transform = view_transform(
+            self.matrix,
+            self.filename,
+            *((self.spec, self.display) if self.light else ()),
+            hsv_folder="" if self.hsv else None,
+            bakes=bakes,
+        )
+        files = {
+            self.filename: self.data,
+            **dict(self.beside),
+            **{filename: curve_file(baked) for filename, baked in bakes.items()},
+        }
         with tempfile.TemporaryDirectory() as folder:
             for filename, content in files.items():
                 (Path(folder) / filename).write_bytes(content)
-            return probes.measure(self.spec, None, self.display, self.method,
-                                  probes.ocio_apply(transform, search_path=folder), gamut_source=_gamut_source(self.spec))
+            return probes.measure(
+                self.spec,
+                None,
+                self.display,
+                self.method,
+                probes.ocio_apply(transform, search_path=folder),
+                gamut_source=_gamut_source(self.spec),
+            )
 
     @property
     def bound(self) -> float:
@@ -128,14 +142,23 @@ def lut_steps(matrix, path: str, hsv_folder: str | None = None) -> list:
     if hsv_folder is None:
         return [matrix_transform(np.asarray(matrix)), ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)]
     shared = f"{hsv_folder}/{hsv.SHARED_FILE}" if hsv_folder else hsv.SHARED_FILE
-    return [matrix_transform(np.asarray(matrix)), ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV),
-            ocio.FileTransform(shared, interpolation=ocio.INTERP_LINEAR),
-            ocio.FileTransform(path, interpolation=ocio.INTERP_LINEAR),
-            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV, direction=ocio.TRANSFORM_DIR_INVERSE)]
+    return [
+        matrix_transform(np.asarray(matrix)),
+        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV),
+        ocio.FileTransform(shared, interpolation=ocio.INTERP_LINEAR),
+        ocio.FileTransform(path, interpolation=ocio.INTERP_LINEAR),
+        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV, direction=ocio.TRANSFORM_DIR_INVERSE),
+    ]
 
 
-def view_transform(matrix, path: str, spec: Spec | None = None, display: Display | None = None,
-                   hsv_folder: str | None = None, bakes: dict | None = None):
+def view_transform(
+    matrix,
+    path: str,
+    spec: Spec | None = None,
+    display: Display | None = None,
+    hsv_folder: str | None = None,
+    bakes: dict | None = None,
+):
     """:func:`lut_steps` as a GroupTransform; with ``spec`` and ``display``, for a LUT ending
     in display light, then the display's own encoding (from normalised display-linear RGB
     through CIE XYZ), whose baked curve files (a tabulated EOTF's, by name, for the search
@@ -147,8 +170,10 @@ def view_transform(matrix, path: str, spec: Spec | None = None, display: Display
 
     steps = lut_steps(matrix, path, hsv_folder)
     if display is not None:
-        steps += [matrix_transform(reference.normalised_display_to_xyz(spec, display)),
-                  *display_steps(spec, display, {} if bakes is None else bakes)]
+        steps += [
+            matrix_transform(reference.normalised_display_to_xyz(spec, display)),
+            *display_steps(spec, display, {} if bakes is None else bakes),
+        ]
     return ocio.GroupTransform(steps)
 
 
@@ -178,13 +203,21 @@ def bake_view_lut(spec: Spec, display: Display, method: str, size: int | None = 
         return _bake_hsv_view(spec, display)
     size = size or view_size(display, method)
     light = ends_in_light(display)
-    lat = (view_lattice(spec, display, method) if size == view_size(display, method) and params is None else
-           lattice.display_lattice(spec, display, method, size, params=params, light=light))
+    lat = (
+        view_lattice(spec, display, method)
+        if size == view_size(display, method) and params is None
+        else lattice.display_lattice(spec, display, method, size, params=params, light=light)
+    )
     name = view_filename(spec, display, method, size)
-    output = ("normalised linear RGB (the config encodes it), gamut mapping {}, {}^3 lattice." if light else
-              "code values, gamut mapping {}, {}^3 lattice in the display's code values.")
-    text = (f"ocioforge view LUT: normalised {display.name} linear RGB (1 = peak, after the config's matrix) "
-            f"to {output.format(method, size)}")
+    output = (
+        "normalised linear RGB (the config encodes it), gamut mapping {}, {}^3 lattice."
+        if light
+        else "code values, gamut mapping {}, {}^3 lattice in the display's code values."
+    )
+    text = (
+        f"ocioforge view LUT: normalised {display.name} linear RGB (1 = peak, after the config's matrix) "
+        f"to {output.format(method, size)}"
+    )
     data = formats.clf(lat, f"ocioforge:{name[:-4]}", text, include_matrix=False)
     return _measured(spec, display, method, name, data, {}, lat.matrix, light)
 
@@ -196,8 +229,17 @@ def view_lattice(spec: Spec, display: Display, method: str) -> lattice.Lattice:
     return lattice.display_lattice(spec, display, method, view_size(display, method), light=ends_in_light(display))
 
 
-def _measured(spec: Spec, display: Display, method: str, name: str, data: bytes, beside: dict, matrix,
-              light: bool, hsv_view: bool = False) -> ViewLut:
+def _measured(
+    spec: Spec,
+    display: Display,
+    method: str,
+    name: str,
+    data: bytes,
+    beside: dict,
+    matrix,
+    light: bool,
+    hsv_view: bool = False,
+) -> ViewLut:
     """The view file ``data`` (with the files ``beside`` it, name to bytes) as a :class:`ViewLut`,
     measured when its figures are asked for."""
     matrix = tuple(tuple(float(v) for v in row) for row in matrix)
@@ -216,9 +258,20 @@ def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:
     from generator.colorimetry import reference
 
     name = view_filename(spec, display, HSV_METHOD)
-    text = (f"ocioforge view LUT: OCIO HSV of normalised {display.name} linear RGB (1 = peak, after the config's "
-            f"matrix, RGB_TO_HSV and {hsv.SHARED_FILE}) to the HSV of its desaturated colour (before "
-            "HSV_TO_RGB); trilinear.")
+    text = (
+        f"ocioforge view LUT: OCIO HSV of normalised {display.name} linear RGB (1 = peak, after the config's "
+        f"matrix, RGB_TO_HSV and {hsv.SHARED_FILE}) to the HSV of its desaturated colour (before "
+        "HSV_TO_RGB); trilinear."
+    )
     data = hsv.hsv_clf(hsv.hsv_lattice(display), f"ocioforge:{name[:-4]}", text)
-    return _measured(spec, display, HSV_METHOD, name, data, {hsv.SHARED_FILE: hsv.shared_clf()},
-                     reference.normalised_display_matrix(spec, display), True, True)
+    return _measured(
+        spec,
+        display,
+        HSV_METHOD,
+        name,
+        data,
+        {hsv.SHARED_FILE: hsv.shared_clf()},
+        reference.normalised_display_matrix(spec, display),
+        True,
+        True,
+    )

@@ -33,9 +33,10 @@ def curve_label(spec: Spec, owner: str, curve_name: str) -> str:
         return curve_name
     owners = [(s.name, s.curve_name, s.curve) for s in spec.colour_spaces if not (s.is_data or s.special)]
     owners += [(d.name, d.eotf_name, d.eotf) for d in spec.displays]
-    baked = [name for name, c_name, curve in owners
-             if _is_custom(c_name) and is_baked(c_name, curve, spec.ocio_version)]
-    return file_stems(baked + [owner], taken=(slug(n) for n in CURVES))[owner]
+    baked = [
+        name for name, c_name, curve in owners if _is_custom(c_name) and is_baked(c_name, curve, spec.ocio_version)
+    ]
+    return file_stems([*baked, owner], taken=(slug(n) for n in CURVES))[owner]
 
 
 def _log(curve: transfer.LogCamera) -> ocio.Transform:
@@ -66,8 +67,11 @@ def _baked(name: str, curve, bakes: dict[str, BakedCurve]) -> list:
     steps = []
     if (lo, hi) != (0.0, 1.0):
         scale = 1.0 / (hi - lo)
-        steps.append(ocio.MatrixTransform(matrix=[scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, 1],
-                                          offset=[-lo * scale] * 3 + [0.0]))
+        steps.append(
+            ocio.MatrixTransform(
+                matrix=[scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, 1], offset=[-lo * scale] * 3 + [0.0]
+            )
+        )
     if baked.shaper != 1:
         steps.append(ocio.ExponentTransform(value=[1.0 / baked.shaper] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_CLAMP))
     steps.append(ocio.FileTransform(src=baked.filename, interpolation=ocio.INTERP_LINEAR, direction=FORWARD))
@@ -89,13 +93,18 @@ def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[st
         return [ocio.ExponentTransform(value=[curve.exponent] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_MIRROR)]
     if isinstance(curve, transfer.PiecewisePower):
         style = ocio.NEGATIVE_MIRROR if curve.mirror else ocio.NEGATIVE_LINEAR
-        return [ocio.ExponentWithLinearTransform(gamma=[curve.gamma] * 3 + [1.0], offset=[curve.offset] * 3 + [0.0],
-                                                 negativeStyle=style)]
+        return [
+            ocio.ExponentWithLinearTransform(
+                gamma=[curve.gamma] * 3 + [1.0], offset=[curve.offset] * 3 + [0.0], negativeStyle=style
+            )
+        ]
     if isinstance(curve, transfer.LogCamera):
         return [_log(curve)]
     if is_baked(name, curve, version):
         return _baked(name, curve, bakes)
-    return [ocio.BuiltinTransform(style, INVERSE if inverse else FORWARD) for style, inverse in curve_chain(name, version)]
+    return [
+        ocio.BuiltinTransform(style, INVERSE if inverse else FORWARD) for style, inverse in curve_chain(name, version)
+    ]
 
 
 def code_clamp(curve_name: str, version: tuple[int, int]) -> list:

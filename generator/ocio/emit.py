@@ -14,9 +14,9 @@ import PyOpenColorIO as ocio
 from generator.colorimetry import reference
 from generator.colorimetry.matrices import settled
 from generator.luts import aces_lattice
-from generator.luts.pool import Pool
 from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
+from generator.luts.pool import Pool
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
 from generator.spec.load import COLORIMETRIC_ALIASES, VIEW_METHODS
@@ -81,8 +81,14 @@ def _to_reference(spec: Spec, space: ColourSpace, bakes: dict) -> list:
 
 def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace:
     cs = ocio.ColorSpace(
-        SCENE, name=space.name, aliases=list(space.aliases), family=space.family, encoding=space.encoding,
-        description=space.description, isData=space.is_data, categories=space_categories(space),
+        SCENE,
+        name=space.name,
+        aliases=list(space.aliases),
+        family=space.family,
+        encoding=space.encoding,
+        description=space.description,
+        isData=space.is_data,
+        categories=space_categories(space),
     )
     transform = curves.group(_to_reference(spec, space, bakes))
     if transform is not None:
@@ -93,16 +99,29 @@ def _scene_space(spec: Spec, space: ColourSpace, bakes: dict) -> ocio.ColorSpace
 def _display_space(spec: Spec, display: Display, bakes: dict) -> ocio.ColorSpace:
     """Display-referred space: XYZ-D65 -> display RGB -> clip to [0, peak] -> inverse EOTF."""
     steps = display_steps(spec, display, bakes)
-    cs = ocio.ColorSpace(DISPLAY, name=display.name, aliases=list(display.aliases), family="Display",
-                         encoding=display.encoding, description=display.description, categories=["file-io"])
+    cs = ocio.ColorSpace(
+        DISPLAY,
+        name=display.name,
+        aliases=list(display.aliases),
+        family="Display",
+        encoding=display.encoding,
+        description=display.description,
+        categories=["file-io"],
+    )
     cs.setTransform(ocio.GroupTransform(steps), ocio.COLORSPACE_DIR_FROM_REFERENCE)
     return cs
 
 
 def _display_reference_space() -> ocio.ColorSpace:
-    return ocio.ColorSpace(DISPLAY, name=DISPLAY_REFERENCE, aliases=list(DISPLAY_REFERENCE_ALIASES),
-                           family="", encoding="display-linear", description="CIE XYZ relative to D65, 1.0 = 100 cd/m²",
-                           categories=["file-io"])
+    return ocio.ColorSpace(
+        DISPLAY,
+        name=DISPLAY_REFERENCE,
+        aliases=list(DISPLAY_REFERENCE_ALIASES),
+        family="",
+        encoding="display-linear",
+        description="CIE XYZ relative to D65, 1.0 = 100 cd/m²",
+        categories=["file-io"],
+    )
 
 
 def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
@@ -111,18 +130,32 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
     to_rgb = reference.display_matrix(spec, display)
     # An absolute display's range maps onto its codes' [0, 1]: the division by the light of
     # code 1 and the clip are one operator.
-    steps = [matrix_transform(to_rgb), ocio.RangeTransform(minInValue=0.0, maxInValue=display.clip_high, minOutValue=0.0,
-                                                           maxOutValue=display.clip_high / display.code_one)]
+    steps = [
+        matrix_transform(to_rgb),
+        ocio.RangeTransform(
+            minInValue=0.0,
+            maxInValue=display.clip_high,
+            minOutValue=0.0,
+            maxOutValue=display.clip_high / display.code_one,
+        ),
+    ]
     if display.eotf_name == "HLG":
         # The signal ends at code 1 (OCIO 2.1's builtin clamps there, later versions do not).
-        return steps + [matrix_transform(np.linalg.inv(to_rgb)), ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),
-                        ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0)]
+        return [
+            *steps,
+            matrix_transform(np.linalg.inv(to_rgb)),
+            ocio.BuiltinTransform(HLG_DISPLAY_BUILTIN),
+            ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
+        ]
     label = curves.curve_label(spec, display.name, display.eotf_name)
     decode = curves.decode_transforms(label, display.eotf, spec.ocio_version, bakes)
     # Codes beyond the signal range, read back, are clamped to it as a scene space's are (the
     # encoded light never leaves it): OCIO's PQ builtin decodes PQ code 2 as black from 2.2 on.
-    return steps + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else []) + \
-        curves.code_clamp(label, spec.ocio_version)
+    return (
+        steps
+        + ([ocio.GroupTransform(decode, direction=ocio.TRANSFORM_DIR_INVERSE)] if decode else [])
+        + curves.code_clamp(label, spec.ocio_version)
+    )
 
 
 #: Methods whose view read backwards (a display-referred file into the scene, through its
@@ -137,8 +170,9 @@ def display_steps(spec: Spec, display: Display, bakes: dict) -> list:
 INVERTED_AS_COLORIMETRIC = ("scale", "desaturate", "perceptual")
 
 
-def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict, view_luts: dict,
-                           pool: Pool | None = None) -> ocio.ViewTransform:
+def _mapped_view_transform(
+    spec: Spec, display: Display, view: str, bakes: dict, view_luts: dict, pool: Pool | None = None
+) -> ocio.ViewTransform:
     """Scene reference -> display RGB (1 = peak) -> gamut mapping -> CIE XYZ-D65.
 
     RGC is analytic (OCIO's FixedFunction ACES_GAMUT_COMP_13, in the display's RGB);
@@ -153,23 +187,34 @@ def _mapped_view_transform(spec: Spec, display: Display, view: str, bakes: dict,
     to_display = reference.normalised_display_matrix(spec, display)
     to_xyz = reference.normalised_display_to_xyz(spec, display)
     if method == "rgc":
-        steps = [matrix_transform(to_display),
-                 ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, spec.rgc.as_ocio_params()),
-                 matrix_transform(to_xyz)]
+        steps = [
+            matrix_transform(to_display),
+            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, spec.rgc.as_ocio_params()),
+            matrix_transform(to_xyz),
+        ]
     else:
         lut = _baked(pool, ("view", spec, display, method), _view_file, spec, display, method)
         add_file(view_luts, lut.filename, lut.data)
         if lut.hsv:
             add_file(view_luts, hsv.SHARED_FILE, hsv.shared_clf())
-        back = (matrix_transform(to_xyz) if lut.light else
-                ocio.GroupTransform(display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE))
+        back = (
+            matrix_transform(to_xyz)
+            if lut.light
+            else ocio.GroupTransform(display_steps(spec, display, bakes), direction=ocio.TRANSFORM_DIR_INVERSE)
+        )
         steps = [*lut_steps(lut.matrix, lut.filename, "" if lut.hsv else None), back]
-    vt = ocio.ViewTransform(SCENE, name=f"{view} ({display.name})", family="Gamut mapped",
-                            description=f"{view} gamut mapping into {display.name}")
+    vt = ocio.ViewTransform(
+        SCENE,
+        name=f"{view} ({display.name})",
+        family="Gamut mapped",
+        description=f"{view} gamut mapping into {display.name}",
+    )
     vt.setTransform(ocio.GroupTransform(steps), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
     if method in INVERTED_AS_COLORIMETRIC:
-        vt.setTransform(matrix_transform(np.linalg.inv(reference.scene_to_display_reference(spec))),
-                        ocio.VIEWTRANSFORM_DIR_TO_REFERENCE)
+        vt.setTransform(
+            matrix_transform(np.linalg.inv(reference.scene_to_display_reference(spec))),
+            ocio.VIEWTRANSFORM_DIR_TO_REFERENCE,
+        )
     return vt
 
 
@@ -187,14 +232,20 @@ def aces_view_transform(spec: Spec, view) -> ocio.ViewTransform:
         steps += [ocio.BuiltinTransform(view.style)] if view.style else _aces2_fixed_function(view)
     else:
         name, upper = aces_lattice.file_name(view), aces_lattice.upper(view)
-        steps += [matrix_transform(views.tables(view).ap0_to_ap1),
-                  ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
-                  ocio.FileTransform(name, interpolation=ocio.INTERP_TETRAHEDRAL),
-                  ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
-                  matrix_transform(aces_lattice.to_xyz(view))]
+        steps += [
+            matrix_transform(views.tables(view).ap0_to_ap1),
+            ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
+            ocio.FileTransform(name, interpolation=ocio.INTERP_TETRAHEDRAL),
+            ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
+            matrix_transform(aces_lattice.to_xyz(view)),
+        ]
     family = f"ACES {view.version}"
-    vt = ocio.ViewTransform(SCENE, name=view.name, family=family,
-                            description=f"{view.name}: the Academy's output transform to CIE XYZ-D65 display light")
+    vt = ocio.ViewTransform(
+        SCENE,
+        name=view.name,
+        family=family,
+        description=f"{view.name}: the Academy's output transform to CIE XYZ-D65 display light",
+    )
     vt.setTransform(curves.group(steps), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
     return vt
 
@@ -208,12 +259,14 @@ def _aces2_fixed_function(view) -> list:
     t = views.tables(view)
     upper, peak = float(t.tone.forward_limit), view.render_peak / 100.0
     params = [view.render_peak, *np.ravel(view.limiting), *view.white]
-    return [matrix_transform(t.ap0_to_ap1),
-            ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
-            matrix_transform(t.ap1_to_ap0),
-            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_OUTPUT_TRANSFORM_20, [float(v) for v in params]),
-            ocio.RangeTransform(minInValue=0.0, maxInValue=peak, minOutValue=0.0, maxOutValue=peak),
-            matrix_transform(t.limit_to_xyz * t.display_scale)]
+    return [
+        matrix_transform(t.ap0_to_ap1),
+        ocio.RangeTransform(minInValue=0.0, maxInValue=upper, minOutValue=0.0, maxOutValue=upper),
+        matrix_transform(t.ap1_to_ap0),
+        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_OUTPUT_TRANSFORM_20, [float(v) for v in params]),
+        ocio.RangeTransform(minInValue=0.0, maxInValue=peak, minOutValue=0.0, maxOutValue=peak),
+        matrix_transform(t.limit_to_xyz * t.display_scale),
+    ]
 
 
 def baked_aces_views(spec: Spec) -> list:
@@ -225,8 +278,12 @@ def baked_aces_views(spec: Spec) -> list:
 
 
 def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict, pool: Pool | None = None) -> None:
-    vt = ocio.ViewTransform(SCENE, name=COLORIMETRIC, family="Colorimetric",
-                            description="Scene reference to CIE XYZ-D65, no tone or gamut mapping; displays clip per channel")
+    vt = ocio.ViewTransform(
+        SCENE,
+        name=COLORIMETRIC,
+        family="Colorimetric",
+        description="Scene reference to CIE XYZ-D65, no tone or gamut mapping; displays clip per channel",
+    )
     vt.setTransform(matrix_transform(reference.scene_to_display_reference(spec)), ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)
     cfg.addViewTransform(vt)
     raw = next((s.name for s in spec.colour_spaces if s.is_data), None)
@@ -258,9 +315,14 @@ def _display_view_spaces(spec: Spec) -> list[ocio.ColorSpace]:
         for view in display.views:
             if view == "Raw":
                 continue
-            cs = ocio.ColorSpace(SCENE, name=display_view_space(view, display.name), family="Display-View",
-                                 encoding=display.encoding, categories=["file-io"],
-                                 description=f"The {view} view of {display.name}, for writing display-ready files")
+            cs = ocio.ColorSpace(
+                SCENE,
+                name=display_view_space(view, display.name),
+                family="Display-View",
+                encoding=display.encoding,
+                categories=["file-io"],
+                description=f"The {view} view of {display.name}, for writing display-ready files",
+            )
             dvt = ocio.DisplayViewTransform(src=spec.scene_reference, display=display.name, view=view)
             cs.setTransform(dvt, ocio.COLORSPACE_DIR_FROM_REFERENCE)
             out.append(cs)
@@ -296,7 +358,9 @@ def emit(spec: Spec) -> Emitted:
 
 def _baked_methods(spec: Spec) -> list[tuple[Display, str]]:
     """Each display and gamut-mapping method whose view is a baked file, in config order."""
-    return [(d, VIEW_METHODS[v]) for d in spec.displays for v in d.views if VIEW_METHODS.get(v) not in (None, "clip", "rgc")]
+    return [
+        (d, VIEW_METHODS[v]) for d in spec.displays for v in d.views if VIEW_METHODS.get(v) not in (None, "clip", "rgc")
+    ]
 
 
 #: The spec a build's forked workers bake from (a spec holds functions, which do not pickle:

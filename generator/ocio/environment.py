@@ -15,8 +15,13 @@ import os
 from contextlib import contextmanager
 
 #: The variables set aside (OCIO itself, the config's path, is set where a host needs it).
-OVERRIDES = ("OCIO_ACTIVE_DISPLAYS", "OCIO_ACTIVE_VIEWS", "OCIO_INACTIVE_COLORSPACES", "OCIO_OPTIMIZATION_FLAGS",
-             "OCIO_USER_CATEGORIES")
+OVERRIDES = (
+    "OCIO_ACTIVE_DISPLAYS",
+    "OCIO_ACTIVE_VIEWS",
+    "OCIO_INACTIVE_COLORSPACES",
+    "OCIO_OPTIMIZATION_FLAGS",
+    "OCIO_USER_CATEGORIES",
+)
 
 
 @contextmanager

@@ -44,10 +44,14 @@ def _check_baked(spec: Spec, luts: dict) -> None:
             files = {f"{slug(curve_label(spec, o, c))}_to_linear.spi1d": (o, t) for o, c, t in owners}
             owner, table = files.get(name, ("", "custom_space"))
             field = f"{table}[name = {owner!r}].{'eotf' if table == 'display' else 'transfer'}" if owner else "transfer"
-            raise SpecError(spec.source, field, f"the curve baked as {LUT_FOLDER}/{name} departs "
-                            f"{lut.max_relative_error:.2g} relative from its table at the most entries a 1D LUT "
-                            f"takes here ({MAX_SIZE + 1}): a step or kink between rows; allowed: a table whose rows "
-                            "are evenly spaced in code (baked on its rows, exactly) or a smoother one")
+            raise SpecError(
+                spec.source,
+                field,
+                f"the curve baked as {LUT_FOLDER}/{name} departs "
+                f"{lut.max_relative_error:.2g} relative from its table at the most entries a 1D LUT "
+                f"takes here ({MAX_SIZE + 1}): a step or kink between rows; allowed: a table whose rows "
+                "are evenly spaced in code (baked on its rows, exactly) or a smoother one",
+            )
 
 
 def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None) -> Spec:
@@ -57,8 +61,11 @@ def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None
         out_dir.name.encode("utf-8")
     except UnicodeEncodeError:
         shown = os.fsencode(out_dir).decode("utf-8", "backslashreplace")
-        raise SpecError(shown, "-o", "the folder's name, which names the config, is not UTF-8 text; allowed: a "
-                        "folder named in UTF-8") from None
+        raise SpecError(
+            shown,
+            "-o",
+            "the folder's name, which names the config, is not UTF-8 text; allowed: a folder named in UTF-8",
+        ) from None
     return replace(spec, name=out_dir.name, ocio_version=version or spec.ocio_version)
 
 
@@ -98,8 +105,10 @@ def _replace_problem(out_dir: Path) -> str:
     names = sorted(entry.name for entry in out_dir.iterdir())
     foreign = [name for name in names if name not in BUILD_ENTRIES]
     if foreign:
-        return (f"holds {foreign[0]!r}, which no build writes; --force replaces only a previous build "
-                f"(a folder of {', '.join(BUILD_ENTRIES)})")
+        return (
+            f"holds {foreign[0]!r}, which no build writes; --force replaces only a previous build "
+            f"(a folder of {', '.join(BUILD_ENTRIES)})"
+        )
     for written in (resolved.FILENAME, CONFIG_FILENAME):
         if written not in names:
             return f"has no {written}, so it is not a previous build; --force replaces only those"
@@ -110,16 +119,22 @@ def _replace_problem(out_dir: Path) -> str:
         entries = sorted(luts.iterdir())
         stray = next((e for e in entries if not e.is_file() or e.suffix not in LUT_SUFFIXES), None)
         if stray is not None:
-            return (f"holds {LUT_FOLDER}/{stray.name}, which no build writes; --force replaces only a previous build "
-                    f"(its {LUT_FOLDER} holds {' and '.join(LUT_SUFFIXES)} files alone)")
+            return (
+                f"holds {LUT_FOLDER}/{stray.name}, which no build writes; --force replaces only a previous build "
+                f"(its {LUT_FOLDER} holds {' and '.join(LUT_SUFFIXES)} files alone)"
+            )
         read = files_read(out_dir / CONFIG_FILENAME) if entries else set()
         if read is None:
-            return (f"has a {CONFIG_FILENAME} OpenColorIO cannot load, so which files of {LUT_FOLDER} the build wrote "
-                    "cannot be told; --force replaces only a previous build")
+            return (
+                f"has a {CONFIG_FILENAME} OpenColorIO cannot load, so which files of {LUT_FOLDER} the build wrote "
+                "cannot be told; --force replaces only a previous build"
+            )
         own = next((e for e in entries if e.name not in read), None)
         if own is not None:
-            return (f"holds {LUT_FOLDER}/{own.name}, which its {CONFIG_FILENAME} does not read, so no build wrote it; "
-                    "--force replaces only a previous build (move the file out first)")
+            return (
+                f"holds {LUT_FOLDER}/{own.name}, which its {CONFIG_FILENAME} does not read, so no build wrote it; "
+                "--force replaces only a previous build (move the file out first)"
+            )
     return ""
 
 
@@ -138,8 +153,11 @@ def files_read(config: Path) -> set[str] | None:
         return None
     if cfg.getSearchPath() != LUT_FOLDER:
         return set()
-    return {t.getSrc() for _, t in leaf_transforms(cfg)
-            if isinstance(t, ocio.FileTransform) and Path(t.getSrc()).name == t.getSrc()}
+    return {
+        t.getSrc()
+        for _, t in leaf_transforms(cfg)
+        if isinstance(t, ocio.FileTransform) and Path(t.getSrc()).name == t.getSrc()
+    }
 
 
 def leaf_transforms(cfg) -> list[tuple[str, object]]:
@@ -147,12 +165,20 @@ def leaf_transforms(cfg) -> list[tuple[str, object]]:
     directions, groups opened, with its owner described."""
     import PyOpenColorIO as ocio
 
-    owners = [(f"colour space {s.getName()!r}", [s.getTransform(d) for d in (ocio.COLORSPACE_DIR_TO_REFERENCE,
-                                                                           ocio.COLORSPACE_DIR_FROM_REFERENCE)])
-              for s in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)]
-    owners += [(f"view transform {v.getName()!r}", [v.getTransform(d) for d in (ocio.VIEWTRANSFORM_DIR_TO_REFERENCE,
-                                                                              ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)])
-               for v in cfg.getViewTransforms()]
+    owners = [
+        (
+            f"colour space {s.getName()!r}",
+            [s.getTransform(d) for d in (ocio.COLORSPACE_DIR_TO_REFERENCE, ocio.COLORSPACE_DIR_FROM_REFERENCE)],
+        )
+        for s in cfg.getColorSpaces(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)
+    ]
+    owners += [
+        (
+            f"view transform {v.getName()!r}",
+            [v.getTransform(d) for d in (ocio.VIEWTRANSFORM_DIR_TO_REFERENCE, ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE)],
+        )
+        for v in cfg.getViewTransforms()
+    ]
     found = []
     for owner, transforms in owners:
         stack = [t for t in transforms if t is not None]
@@ -189,8 +215,12 @@ def build(spec: Spec, out_dir: str | Path, force: bool = False) -> BuildResult:
     build (never a folder holding anything a build does not write), at :func:`target`; checked
     before the build and again as the folder is replaced (another process may write there)."""
     if Path(out_dir).is_symlink() and not Path(out_dir).exists():
-        raise SpecError(str(out_dir), "-o", f"is a link to {str(Path(out_dir).readlink())!r}, which does not exist "
-                        "(or is a loop of links); allowed: a folder, or a link to one")
+        raise SpecError(
+            str(out_dir),
+            "-o",
+            f"is a link to {str(Path(out_dir).readlink())!r}, which does not exist "
+            "(or is a loop of links); allowed: a folder, or a link to one",
+        )
     out_dir = target(out_dir)
     _check_replaceable(out_dir, force)
     with set_aside(), staged_folder(out_dir, lambda contents: _check_replaceable(out_dir, force, contents)) as staging:

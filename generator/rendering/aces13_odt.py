@@ -23,8 +23,7 @@ import numpy as np
 
 from generator.colorimetry.gamuts import D65, gamuts
 from generator.colorimetry.matrices import adaptation_matrix
-from generator.rendering.aces13_rrt import (AP1_RGB_TO_Y, AP1_TO_XYZ, RRT_SPLINE, XYZ_TO_AP1, apply3x3,
-                                            sat_adjust_matrix)
+from generator.rendering.aces13_rrt import AP1_RGB_TO_Y, AP1_TO_XYZ, RRT_SPLINE, XYZ_TO_AP1, apply3x3, sat_adjust_matrix
 from generator.rendering.aces13_spline import SegmentedSpline, spline_forward, spline_inverse
 
 #: Cinema white and black (cd/m²); the black is written pow10(log10(0.02)) in the CTL so
@@ -49,10 +48,30 @@ D60_TO_D65 = adaptation_matrix(ACES_WHITE, D65, "Bradford")
 #: The 48-nit cinema tone scale (``ODT_48nits``): its points' inputs are the RRT's outputs
 #: at 0.18·2^-6.5, 0.18 and 0.18·2^6.5; 0.02 to 48 cd/m², rising at 0.04 above.
 ODT_48NITS_SPLINE = SegmentedSpline(
-    coefs_low=(-1.6989700043, -1.6989700043, -1.4779000000, -1.2291000000, -0.8648000000,
-               -0.4480000000, 0.0051800000, 0.4511080334, 0.9113744414, 0.9113744414),
-    coefs_high=(0.5154386965, 0.8470437783, 1.1358000000, 1.3802000000, 1.5197000000,
-                1.5985000000, 1.6467000000, 1.6746091357, 1.6878733390, 1.6878733390),
+    coefs_low=(
+        -1.6989700043,
+        -1.6989700043,
+        -1.4779000000,
+        -1.2291000000,
+        -0.8648000000,
+        -0.4480000000,
+        0.0051800000,
+        0.4511080334,
+        0.9113744414,
+        0.9113744414,
+    ),
+    coefs_high=(
+        0.5154386965,
+        0.8470437783,
+        1.1358000000,
+        1.3802000000,
+        1.5197000000,
+        1.5985000000,
+        1.6467000000,
+        1.6746091357,
+        1.6878733390,
+        1.6878733390,
+    ),
     min_point=(float(spline_forward(0.18 * 2.0**-6.5, RRT_SPLINE)), 0.02),
     mid_point=(float(spline_forward(0.18, RRT_SPLINE)), 4.8),
     max_point=(float(spline_forward(0.18 * 2.0**6.5, RRT_SPLINE)), 48.0),

@@ -75,7 +75,7 @@ def _quadratics(spline: SegmentedSpline) -> np.ndarray:
     rows, n = [], spline.knots
     for coefs in (spline.coefs_low, spline.coefs_high):
         c = np.asarray(coefs, dtype=np.float64)
-        rows.append(np.stack([c[:n - 1], c[1:n], c[2:n + 1]], axis=-1) @ BASIS)
+        rows.append(np.stack([c[: n - 1], c[1:n], c[2 : n + 1]], axis=-1) @ BASIS)
     return np.concatenate(rows)
 
 
@@ -100,8 +100,10 @@ def spline_forward(x, spline: SegmentedSpline) -> np.ndarray:
     t = knot - j
     a, b, c = (np.take(column, j) for column in _quadratics(spline).T)
     logy = (a * t + b) * t + c
-    for mask, slope, (lx, ly) in ((logx <= lmin, spline.slope_low, (lmin, ymin)),
-                                  (logx >= lmax, spline.slope_high, (lmax, ymax))):
+    for mask, slope, (lx, ly) in (
+        (logx <= lmin, spline.slope_low, (lmin, ymin)),
+        (logx >= lmax, spline.slope_high, (lmax, ymax)),
+    ):
         # A flat extension is its end's output even at an infinite input.
         logy[mask] = slope * (logx[mask] - lx) + ly if slope else ly
     return np.exp(logy * LN10).reshape(x.shape)
@@ -121,7 +123,7 @@ def spline_inverse(y, spline: SegmentedSpline) -> np.ndarray:
     n = spline.knots
     # A segment is chosen by the knot outputs around it; the middle's output splits the halves.
     low, high = (np.asarray(c, dtype=np.float64) for c in (spline.coefs_low, spline.coefs_high))
-    edges = np.concatenate([(low[1:n - 1] + low[2:n]) / 2.0, [ymid], (high[1:n - 1] + high[2:n]) / 2.0])
+    edges = np.concatenate([(low[1 : n - 1] + low[2:n]) / 2.0, [ymid], (high[1 : n - 1] + high[2:n]) / 2.0])
     j = np.searchsorted(edges, logy, side="left")
     a, b, c = (np.take(column, j, mode="clip") for column in _quadratics(spline).T)
     c = c - logy

@@ -82,7 +82,7 @@ def ssts_spline(min_luminance: float, max_luminance: float, exposure_shift: floa
     high = (aces_max(max_luminance), max_luminance, 0.0)
     bend_low = _interpolate(BEND_LOW, np.log2(low[0] / 0.18))
     bend_high = _interpolate(BEND_HIGH, np.log2(high[0] / 0.18))
-    shift = 2.0 ** -exposure_shift
+    shift = 2.0**-exposure_shift
     return SegmentedSpline(
         coefs_low=_coefficients(low, MID_POINT, bend_low),
         coefs_high=_coefficients(MID_POINT, high, bend_high),

@@ -29,11 +29,21 @@ from generator.colorimetry.matrices import normalised_primary_matrix
 from generator.rendering.aces2_compress import chroma_compress, chroma_compress_norm, gamut_compress
 from generator.rendering.aces2_params import CUBE_CORNERS, ACES2Params, ACES2Tables
 from generator.rendering.aces2_tables import cusp_table, hue_table, reach_corners, reach_m_table, upper_hull_gamma_table
-from generator.rendering.jmh import (JMhParams, aab_to_jmh, aab_to_rgb, hue_direction, j_to_y, jmh_params, jmh_to_aab,
-                                    rgb_to_aab, rgb_to_jmh, y_to_j)
+from generator.rendering.jmh import (
+    JMhParams,
+    aab_to_jmh,
+    aab_to_rgb,
+    hue_direction,
+    j_to_y,
+    jmh_params,
+    jmh_to_aab,
+    rgb_to_aab,
+    rgb_to_jmh,
+    y_to_j,
+)
 from generator.rendering.tonescale import tone_scale, tonescale_forward, tonescale_inverse
 
-__all__ = ["ACES2Params", "ACES2Tables", "tables", "output_rgb", "output_rgb_inverse", "forward", "inverse"]
+__all__ = ["ACES2Params", "ACES2Tables", "forward", "inverse", "output_rgb", "output_rgb_inverse", "tables"]
 
 #: ACES white and the AP0 (SMPTE ST 2065-1) and AP1 (Academy S-2014-004) primaries, as the CTL writes them.
 ACES_WHITE = (0.32168, 0.33767)
@@ -54,8 +64,10 @@ def _white_scale(params: ACES2Params) -> float:
     """1 / the largest channel of the limiting white in encoding RGB (``apply_white_scale``), or 1."""
     if not params.applies_white_scale:
         return 1.0
-    to_encoding = np.linalg.solve(normalised_primary_matrix(params.encoding_primaries, params.encoding_white),
-                                  normalised_primary_matrix(params.limiting_primaries, params.limiting_white))
+    to_encoding = np.linalg.solve(
+        normalised_primary_matrix(params.encoding_primaries, params.encoding_white),
+        normalised_primary_matrix(params.limiting_primaries, params.limiting_white),
+    )
     return float(1.0 / np.max(to_encoding @ np.ones(3)))
 
 
@@ -82,15 +94,28 @@ def tables(params: ACES2Params) -> ACES2Tables:
     ap1 = normalised_primary_matrix(AP1_PRIMARIES, ACES_WHITE)
     limit_to_xyz = normalised_primary_matrix(params.limiting_primaries, params.limiting_white)
     return ACES2Tables(
-        params=params, input=source, reach=reach, limit=limit, tone=tone, limit_j_max=j_max, mid_j=mid_j,
-        focus_dist=focus_dist, lower_hull_gamma_inv=lower_hull_gamma_inv,
+        params=params,
+        input=source,
+        reach=reach,
+        limit=limit,
+        tone=tone,
+        limit_j_max=j_max,
+        mid_j=mid_j,
+        focus_dist=focus_dist,
+        lower_hull_gamma_inv=lower_hull_gamma_inv,
         sat=max(CHROMA_EXPAND_MIN, CHROMA_EXPAND - CHROMA_EXPAND * CHROMA_EXPAND_FACT * tone.log_peak),
         sat_thr=CHROMA_EXPAND_THR / peak,
         compr=CHROMA_COMPRESS + CHROMA_COMPRESS * CHROMA_COMPRESS_FACT * tone.log_peak,
         chroma_compress_scale=(NORM_SCALE[0] * peak) ** NORM_SCALE[1] - NORM_SCALE[2],
-        reach_m=reach_m_table(reach, j_max), hues=hues, cusp_j=cusp_j, cusp_m=cusp_m, gamma_top_inv=gamma,
-        ap0_to_ap1=np.linalg.solve(ap1, ap0), ap1_to_ap0=np.linalg.solve(ap0, ap1),
-        limit_to_xyz=limit_to_xyz, xyz_to_limit=np.linalg.inv(limit_to_xyz),
+        reach_m=reach_m_table(reach, j_max),
+        hues=hues,
+        cusp_j=cusp_j,
+        cusp_m=cusp_m,
+        gamma_top_inv=gamma,
+        ap0_to_ap1=np.linalg.solve(ap1, ap0),
+        ap1_to_ap0=np.linalg.solve(ap0, ap1),
+        limit_to_xyz=limit_to_xyz,
+        xyz_to_limit=np.linalg.inv(limit_to_xyz),
         display_scale=_white_scale(params) * params.linear_scale,
     )
 
@@ -112,7 +137,7 @@ def _in_passes(rows, values, t: ACES2Tables) -> np.ndarray:
     flat, shape = _colours(values)
     out = np.empty_like(flat)
     for start in range(0, flat.shape[0], CHUNK):
-        out[start:start + CHUNK] = rows(flat[start:start + CHUNK], t)
+        out[start : start + CHUNK] = rows(flat[start : start + CHUNK], t)
     return out.reshape(shape)
 
 

@@ -16,8 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator.rendering.jmh import JMhParams, jmh_params, rgb_to_jmh
-from generator.tolerances import GAMUT_MIN_XY_AREA
 from generator.rendering.tonescale import ToneScale
+from generator.tolerances import GAMUT_MIN_XY_AREA
 
 #: The peaks (cd/m²) OpenColorIO's ACES2 fixed functions accept, whole numbers only
 #: (FixedFunctionOpData::validate, 2.4 to 2.6).
@@ -61,12 +61,15 @@ def check_gamut(primaries, white, name: str) -> tuple[tuple[tuple[float, float],
         raise ValueError(f"{name}_white must have y > 0, got {tuple(w)}")
     area = _triangle_area(*p)
     if abs(area) < GAMUT_MIN_XY_AREA:
-        raise ValueError(f"{name}_primaries must span an xy triangle of area at least {GAMUT_MIN_XY_AREA}, "
-                         f"got {abs(area):.3g}")
+        raise ValueError(
+            f"{name}_primaries must span an xy triangle of area at least {GAMUT_MIN_XY_AREA}, got {abs(area):.3g}"
+        )
     weights = [_triangle_area(w, p[(i + 1) % 3], p[(i + 2) % 3]) / area for i in range(3)]
     if min(weights) * abs(area) < GAMUT_MIN_XY_AREA:
-        raise ValueError(f"{name}_white must lie inside the triangle of {name}_primaries, at least "
-                         f"{GAMUT_MIN_XY_AREA} of xy area from each edge, got {tuple(w)}")
+        raise ValueError(
+            f"{name}_white must lie inside the triangle of {name}_primaries, at least "
+            f"{GAMUT_MIN_XY_AREA} of xy area from each edge, got {tuple(w)}"
+        )
     return tuple(tuple(float(v) for v in row) for row in p), (float(w[0]), float(w[1]))
 
 
@@ -113,23 +116,34 @@ class ACES2Params:
         """Check every field and store the limiting and encoding gamuts as tuples of floats."""
         peak = _check_number(self.peak_luminance, "peak_luminance")
         if not PEAK_RANGE[0] <= peak <= PEAK_RANGE[1] or peak != round(peak):
-            raise ValueError(f"peak_luminance must be a whole number of cd/m² from {PEAK_RANGE[0]:g} to "
-                             f"{PEAK_RANGE[1]:g}, got {self.peak_luminance!r}")
+            raise ValueError(
+                f"peak_luminance must be a whole number of cd/m² from {PEAK_RANGE[0]:g} to "
+                f"{PEAK_RANGE[1]:g}, got {self.peak_luminance!r}"
+            )
         primaries, white = check_gamut(self.limiting_primaries, self.limiting_white, "limiting")
         encoding = check_gamut(
             primaries if self.encoding_primaries is None else self.encoding_primaries,
-            white if self.encoding_white is None else self.encoding_white, "encoding")
+            white if self.encoding_white is None else self.encoding_white,
+            "encoding",
+        )
         if not corner_hues_in_order(jmh_params(primaries, white), peak):
-            raise ValueError("limiting_primaries must be red, green and blue in that order: their cube's corners "
-                             "must go round the JMh hue circle as red, yellow, green, cyan, blue, magenta")
+            raise ValueError(
+                "limiting_primaries must be red, green and blue in that order: their cube's corners "
+                "must go round the JMh hue circle as red, yellow, green, cyan, blue, magenta"
+            )
         if self.scale_white is not None and not isinstance(self.scale_white, (bool, np.bool_)):
             raise ValueError(f"scale_white must be True, False or None, got {self.scale_white!r}")
         scale = _check_number(self.linear_scale, "linear_scale")
         if scale <= 0.0:
             raise ValueError(f"linear_scale must be above 0, got {self.linear_scale!r}")
-        for field, value in (("peak_luminance", peak), ("limiting_primaries", primaries), ("limiting_white", white),
-                             ("encoding_primaries", encoding[0]), ("encoding_white", encoding[1]),
-                             ("linear_scale", scale)):
+        for field, value in (
+            ("peak_luminance", peak),
+            ("limiting_primaries", primaries),
+            ("limiting_white", white),
+            ("encoding_primaries", encoding[0]),
+            ("encoding_white", encoding[1]),
+            ("linear_scale", scale),
+        ):
             object.__setattr__(self, field, value)
 
     @property

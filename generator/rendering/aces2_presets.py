@@ -28,8 +28,15 @@ XYZ = ((1.0, 0.0), (0.0, 1.0), (0.0, 0.0))
 D65 = (0.3127, 0.3290)
 D60 = (0.32168, 0.33767)
 E = (1.0 / 3.0, 1.0 / 3.0)
-GAMUTS = {"Rec.709": (REC709, D65), "P3 D65": (P3, D65), "Rec.2020": (REC2020, D65), "XYZ": (XYZ, E),
-          "Rec.709 D60": (REC709, D60), "P3 D60": (P3, D60), "Rec.2020 D60": (REC2020, D60)}
+GAMUTS = {
+    "Rec.709": (REC709, D65),
+    "P3 D65": (P3, D65),
+    "Rec.2020": (REC2020, D65),
+    "XYZ": (XYZ, E),
+    "Rec.709 D60": (REC709, D60),
+    "P3 D60": (P3, D60),
+    "Rec.2020 D60": (REC2020, D60),
+}
 #: The prefix of OpenColorIO's builtin names.
 STYLE_PREFIX = "ACES-OUTPUT - ACES2065-1_to_CIE-XYZ-D65 - "
 #: The cinema presets' scale: 48 cd/m² shown as 100.
@@ -51,28 +58,89 @@ _ROWS = (
     ("ACES 2.0 - SDR 100 nits (P3 D65)", "SDR-100nit-P3-D65", 100, "P3 D65", "P3 D65", None, 1.0),
     ("ACES 2.0 - HDR 108 nits (P3 D65)", "HDR-108nit-P3-D65", 225, "P3 D65", "P3 D65", None, CINEMA_SCALE),
     ("ACES 2.0 - HDR 300 nits (P3 D65)", "HDR-300nit-P3-D65", 625, "P3 D65", "P3 D65", None, CINEMA_SCALE),
-    *((f"ACES 2.0 - HDR {n} nits (P3 D65)", f"HDR-{n}nit-P3-D65", n, "P3 D65", "P3 D65", None, 1.0)
-      for n in (500, 1000, 2000, 4000)),
-    *((f"ACES 2.0 - HDR {n} nits (Rec.2020)", f"HDR-{n}nit-REC2020", n, "Rec.2020", "Rec.2020", None, 1.0)
-      for n in (500, 1000, 2000, 4000)),
-    ("ACES 2.0 - SDR 100 nits (Rec.709 D60 sim.)", "SDR-100nit-REC709-D60-in-REC709-D65", 100,
-     "Rec.709 D60", "Rec.709", None, 1.0),
-    ("ACES 2.0 - SDR 100 nits (Rec.709 D60 sim. in P3 D65)", "SDR-100nit-REC709-D60-in-P3-D65", 100,
-     "Rec.709 D60", "P3 D65", None, 1.0),
-    ("ACES 2.0 - SDR 100 nits (Rec.709 D60 sim. in Rec.2020)", "SDR-100nit-REC709-D60-in-REC2020-D65", 100,
-     "Rec.709 D60", "Rec.2020", None, 1.0),
+    *(
+        (f"ACES 2.0 - HDR {n} nits (P3 D65)", f"HDR-{n}nit-P3-D65", n, "P3 D65", "P3 D65", None, 1.0)
+        for n in (500, 1000, 2000, 4000)
+    ),
+    *(
+        (f"ACES 2.0 - HDR {n} nits (Rec.2020)", f"HDR-{n}nit-REC2020", n, "Rec.2020", "Rec.2020", None, 1.0)
+        for n in (500, 1000, 2000, 4000)
+    ),
+    (
+        "ACES 2.0 - SDR 100 nits (Rec.709 D60 sim.)",
+        "SDR-100nit-REC709-D60-in-REC709-D65",
+        100,
+        "Rec.709 D60",
+        "Rec.709",
+        None,
+        1.0,
+    ),
+    (
+        "ACES 2.0 - SDR 100 nits (Rec.709 D60 sim. in P3 D65)",
+        "SDR-100nit-REC709-D60-in-P3-D65",
+        100,
+        "Rec.709 D60",
+        "P3 D65",
+        None,
+        1.0,
+    ),
+    (
+        "ACES 2.0 - SDR 100 nits (Rec.709 D60 sim. in Rec.2020)",
+        "SDR-100nit-REC709-D60-in-REC2020-D65",
+        100,
+        "Rec.709 D60",
+        "Rec.2020",
+        None,
+        1.0,
+    ),
     ("ACES 2.0 - SDR 100 nits (P3 D60 sim.)", "SDR-100nit-P3-D60-in-P3-D65", 100, "P3 D60", "P3 D65", None, 1.0),
     ("ACES 2.0 - SDR 100 nits (P3 D60 in XYZ)", "SDR-100nit-P3-D60-in-XYZ-E", 100, "P3 D60", "XYZ", False, 1.0),
-    ("ACES 2.0 - HDR 108 nits (P3 D60 sim.)", "HDR-108nit-P3-D60-in-P3-D65", 225, "P3 D60", "P3 D65", None,
-     CINEMA_SCALE),
-    ("ACES 2.0 - HDR 300 nits (P3 D60 sim. in XYZ)", "HDR-300nit-P3-D60-in-XYZ-E", 625, "P3 D60", "XYZ", None,
-     CINEMA_SCALE),
-    *((f"ACES 2.0 - HDR {n} nits (P3 D60 sim.)", f"HDR-{n}nit-P3-D60-in-P3-D65", n, "P3 D60", "P3 D65", None, 1.0)
-      for n in (500, 1000, 2000, 4000)),
-    *((f"ACES 2.0 - HDR {n} nits (P3 D60 sim. in Rec.2020)", f"HDR-{n}nit-P3-D60-in-REC2020-D65", n, "P3 D60",
-       "Rec.2020", None, 1.0) for n in (500, 1000, 2000, 4000)),
-    *((f"ACES 2.0 - HDR {n} nits (Rec.2020 D60 sim.)", f"HDR-{n}nit-REC2020-D60-in-REC2020-D65", n, "Rec.2020 D60",
-       "Rec.2020", None, 1.0) for n in (500, 1000, 2000, 4000)),
+    (
+        "ACES 2.0 - HDR 108 nits (P3 D60 sim.)",
+        "HDR-108nit-P3-D60-in-P3-D65",
+        225,
+        "P3 D60",
+        "P3 D65",
+        None,
+        CINEMA_SCALE,
+    ),
+    (
+        "ACES 2.0 - HDR 300 nits (P3 D60 sim. in XYZ)",
+        "HDR-300nit-P3-D60-in-XYZ-E",
+        625,
+        "P3 D60",
+        "XYZ",
+        None,
+        CINEMA_SCALE,
+    ),
+    *(
+        (f"ACES 2.0 - HDR {n} nits (P3 D60 sim.)", f"HDR-{n}nit-P3-D60-in-P3-D65", n, "P3 D60", "P3 D65", None, 1.0)
+        for n in (500, 1000, 2000, 4000)
+    ),
+    *(
+        (
+            f"ACES 2.0 - HDR {n} nits (P3 D60 sim. in Rec.2020)",
+            f"HDR-{n}nit-P3-D60-in-REC2020-D65",
+            n,
+            "P3 D60",
+            "Rec.2020",
+            None,
+            1.0,
+        )
+        for n in (500, 1000, 2000, 4000)
+    ),
+    *(
+        (
+            f"ACES 2.0 - HDR {n} nits (Rec.2020 D60 sim.)",
+            f"HDR-{n}nit-REC2020-D60-in-REC2020-D65",
+            n,
+            "Rec.2020 D60",
+            "Rec.2020",
+            None,
+            1.0,
+        )
+        for n in (500, 1000, 2000, 4000)
+    ),
 )
 
 

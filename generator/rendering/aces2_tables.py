@@ -25,8 +25,14 @@ import math
 
 import numpy as np
 
-from generator.rendering.aces2_compress import (FOCUS_GAIN_BLEND, compression_slope, focus_gain, focus_j,
-                                                gamut_boundary_m, solve_j_intersect)
+from generator.rendering.aces2_compress import (
+    FOCUS_GAIN_BLEND,
+    compression_slope,
+    focus_gain,
+    focus_j,
+    gamut_boundary_m,
+    solve_j_intersect,
+)
 from generator.rendering.aces2_params import CUBE_CORNERS
 from generator.rendering.jmh import JMhParams, j_to_achromatic, jmh_to_rgb, rgb_to_aab, rgb_to_jmh
 
@@ -101,8 +107,12 @@ def reach_corners(reach: JMhParams, j_max: float, forward_limit: float) -> np.nd
     the scale bisected in [0, forward_limit] to 1e-3 on the achromatic response."""
     corners = np.asarray(CUBE_CORNERS)
     target = j_to_achromatic(j_max)
-    scale = _bisect(lambda s: rgb_to_aab(s[:, None] * corners, reach)[:, 0] >= target,
-                    np.zeros(len(corners)), np.full(len(corners), forward_limit), REACH_CORNER_TOLERANCE)
+    scale = _bisect(
+        lambda s: rgb_to_aab(s[:, None] * corners, reach)[:, 0] >= target,
+        np.zeros(len(corners)),
+        np.full(len(corners), forward_limit),
+        REACH_CORNER_TOLERANCE,
+    )
     return _cycle(rgb_to_jmh(scale[:, None] * corners, reach))[0]
 
 
@@ -156,8 +166,17 @@ def cusp_table(hues: np.ndarray, limit: JMhParams, peak: float) -> tuple[np.ndar
     return _pad(j), _pad(m)
 
 
-def upper_hull_gamma_table(hues, cusp_j, cusp_m, limit: JMhParams, peak: float, j_max: float,
-                           mid_j: float, focus_dist: float, lower_hull_gamma_inv: float) -> np.ndarray:
+def upper_hull_gamma_table(
+    hues,
+    cusp_j,
+    cusp_m,
+    limit: JMhParams,
+    peak: float,
+    j_max: float,
+    mid_j: float,
+    focus_dist: float,
+    lower_hull_gamma_inv: float,
+) -> np.ndarray:
     """The upper hull's inverse gamma at each hue, padded (``make_upper_hull_gamma_table``):
     the least gamma (stepped by 0.4 below 5, then bisected to 1e-5) whose approximate boundary
     lies outside the limiting cube (a channel above peak / 100) at all five test points."""
@@ -171,8 +190,9 @@ def upper_hull_gamma_table(hues, cusp_j, cusp_m, limit: JMhParams, peak: float, 
 
     def fits(gamma: np.ndarray) -> np.ndarray:
         g = np.reshape(gamma, (h.shape[0], -1))[:, :, None]
-        m = gamut_boundary_m(cj[:, None], cm[:, None], j_max, 1.0 / g, lower_hull_gamma_inv,
-                             j_is[:, None], slope[:, None], j_ic[:, None])
+        m = gamut_boundary_m(
+            cj[:, None], cm[:, None], j_max, 1.0 / g, lower_hull_gamma_inv, j_is[:, None], slope[:, None], j_ic[:, None]
+        )
         jmh = np.stack(np.broadcast_arrays(j_is[:, None] + slope[:, None] * m, m, h[:, None]), axis=-1)
         return np.all(np.any(jmh_to_rgb(jmh, limit) > peak / 100.0, axis=-1), axis=-1).reshape(np.shape(gamma))
 

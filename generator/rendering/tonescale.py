@@ -76,8 +76,13 @@ def tone_scale(peak: float) -> ToneScale:
     u_2 = ((r_hit / m_1) / ((r_hit / m_1) + w_2)) ** CONTRAST
     m_2 = m_1 / u_2
     return ToneScale(
-        peak=n, c_t=float(c_t), s_2=float(s_2), u_2=float(u_2), m_2=float(m_2),
-        forward_limit=float(ROOF_HEADROOM * r_hit), inverse_limit=float(n / (u_2 * NORMALISED_WHITE)),
+        peak=n,
+        c_t=float(c_t),
+        s_2=float(s_2),
+        u_2=float(u_2),
+        m_2=float(m_2),
+        forward_limit=float(ROOF_HEADROOM * r_hit),
+        inverse_limit=float(n / (u_2 * NORMALISED_WHITE)),
         log_peak=float(np.log10(n / NORMALISED_WHITE)),
     )
 

@@ -71,8 +71,15 @@ def catalogue() -> dict[str, ACESView]:
     out = {}
     for name, preset in PRESETS.items():
         p = preset.params
-        out[name] = ACESView(name, "2.0", preset.style, float(p.peak_luminance * p.linear_scale), tuple(p.limiting_primaries),
-                             tuple(p.limiting_white), p)
+        out[name] = ACESView(
+            name,
+            "2.0",
+            preset.style,
+            float(p.peak_luminance * p.linear_scale),
+            tuple(p.limiting_primaries),
+            tuple(p.limiting_white),
+            p,
+        )
     for name, preset in aces13.PRESETS13.items():
         limiting, white = _limit13(preset)
         out[name] = ACESView(name, "1.3", preset.style, float(preset.peak_luminance), limiting, white)
@@ -82,11 +89,21 @@ def catalogue() -> dict[str, ACESView]:
 def own_view(display_name: str, peak: float, primaries, white) -> ACESView:
     """A custom display's own ACES 2.0 view: its peak, primaries and white as the parameters
     (ValueError, naming the parameter, where the algorithm cannot take them)."""
-    params = ACES2Params(float(peak), tuple(map(tuple, np.asarray(primaries, dtype=float).tolist())),
-                         tuple(np.asarray(white, dtype=float).tolist()))
+    params = ACES2Params(
+        float(peak),
+        tuple(map(tuple, np.asarray(primaries, dtype=float).tolist())),
+        tuple(np.asarray(white, dtype=float).tolist()),
+    )
     kind = "HDR" if peak > 100.0 else "SDR"
-    return ACESView(f"ACES 2.0 - {kind} {peak:g} nits ({display_name})", "2.0", "", float(peak),
-                    tuple(params.limiting_primaries), tuple(params.limiting_white), params)
+    return ACESView(
+        f"ACES 2.0 - {kind} {peak:g} nits ({display_name})",
+        "2.0",
+        "",
+        float(peak),
+        tuple(params.limiting_primaries),
+        tuple(params.limiting_white),
+        params,
+    )
 
 
 @lru_cache(maxsize=64)
@@ -125,25 +142,48 @@ def tables(view: ACESView):
 #: whose peak passes the display's (ours clip there: 1000 cd/m² on the PQ displays) is left
 #: out; a custom display with that peak takes it.
 STUDIO_VIEWS: dict[str, tuple[str, ...]] = {
-    "sRGB - Display": ("ACES 2.0 - SDR 100 nits (Rec.709)", "ACES 1.0 - SDR Video",
-                       "ACES 1.0 - SDR Video (D60 sim on D65)"),
+    "sRGB - Display": (
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+        "ACES 1.0 - SDR Video",
+        "ACES 1.0 - SDR Video (D60 sim on D65)",
+    ),
     "Gamma 2.2 Rec.709 - Display": ("ACES 2.0 - SDR 100 nits (Rec.709)",),
-    "Rec.1886 Rec.709 - Display": ("ACES 2.0 - SDR 100 nits (Rec.709)", "ACES 1.0 - SDR Video",
-                                   "ACES 1.0 - SDR Video (D60 sim on D65)"),
-    "Display P3 - Display": ("ACES 2.0 - SDR 100 nits (P3 D65)", "ACES 1.0 - SDR Video",
-                             "ACES 1.0 - SDR Video (D60 sim on D65)"),
+    "Rec.1886 Rec.709 - Display": (
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+        "ACES 1.0 - SDR Video",
+        "ACES 1.0 - SDR Video (D60 sim on D65)",
+    ),
+    "Display P3 - Display": (
+        "ACES 2.0 - SDR 100 nits (P3 D65)",
+        "ACES 1.0 - SDR Video",
+        "ACES 1.0 - SDR Video (D60 sim on D65)",
+    ),
     "Display P3 HDR - Display": ("ACES 2.0 - HDR 1000 nits (P3 D65)", "ACES 2.0 - SDR 100 nits (Rec.709)"),
-    "Gamma 2.6 P3-D65 - Display": ("ACES 2.0 - SDR 100 nits (P3 D65)", "ACES 2.0 - SDR 100 nits (Rec.709)",
-                                   "ACES 1.0 - SDR Cinema", "ACES 1.1 - SDR Cinema (D60 sim on D65)",
-                                   "ACES 1.1 - SDR Cinema (Rec.709 lim)"),
+    "Gamma 2.6 P3-D65 - Display": (
+        "ACES 2.0 - SDR 100 nits (P3 D65)",
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+        "ACES 1.0 - SDR Cinema",
+        "ACES 1.1 - SDR Cinema (D60 sim on D65)",
+        "ACES 1.1 - SDR Cinema (Rec.709 lim)",
+    ),
     "Gamma 2.6 DCI-P3 - Display": ("ACES 1.0 - SDR Cinema (D60 sim on DCI)", "ACES 1.1 - SDR Cinema (D65 sim on DCI)"),
-    "Rec.2100-PQ - Display": ("ACES 2.0 - HDR 1000 nits (P3 D65)", "ACES 2.0 - HDR 1000 nits (Rec.2020)",
-                              "ACES 2.0 - HDR 500 nits (P3 D65)", "ACES 2.0 - HDR 500 nits (Rec.2020)",
-                              "ACES 2.0 - SDR 100 nits (Rec.709)", "ACES 1.1 - HDR Video (1000 nits & Rec.2020 lim)"),
+    "Rec.2100-PQ - Display": (
+        "ACES 2.0 - HDR 1000 nits (P3 D65)",
+        "ACES 2.0 - HDR 1000 nits (Rec.2020)",
+        "ACES 2.0 - HDR 500 nits (P3 D65)",
+        "ACES 2.0 - HDR 500 nits (Rec.2020)",
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+        "ACES 1.1 - HDR Video (1000 nits & Rec.2020 lim)",
+    ),
     "Rec.2100-HLG - Display": ("ACES 2.0 - HDR 1000 nits (P3 D65)", "ACES 1.1 - HDR Video (1000 nits & Rec.2020 lim)"),
-    "ST2084-P3-D65 - Display": ("ACES 2.0 - HDR 1000 nits (P3 D65)", "ACES 2.0 - HDR 500 nits (P3 D65)",
-                                "ACES 2.0 - HDR 108 nits (P3 D65)", "ACES 2.0 - SDR 100 nits (Rec.709)",
-                                "ACES 1.1 - HDR Video (1000 nits & P3 lim)", "ACES 1.1 - HDR Cinema (108 nits & P3 lim)"),
+    "ST2084-P3-D65 - Display": (
+        "ACES 2.0 - HDR 1000 nits (P3 D65)",
+        "ACES 2.0 - HDR 500 nits (P3 D65)",
+        "ACES 2.0 - HDR 108 nits (P3 D65)",
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+        "ACES 1.1 - HDR Video (1000 nits & P3 lim)",
+        "ACES 1.1 - HDR Cinema (108 nits & P3 lim)",
+    ),
 }
 
 
@@ -171,8 +211,11 @@ def cannot_show(view: ACESView, display_primaries, display_peak: float, display_
         return f"it is an HDR view ({view.peak:g} cd/m²) and the display is SDR"
     if view.is_hdr and view.peak > display_peak + 1e-9:
         return f"its peak, {view.peak:g} cd/m², passes the display's, {display_peak:g}"
-    outside = [c for c, xy in zip(("red", "green", "blue"), view.limiting)
-               if not _inside(xy, display_primaries, LIMIT_SLACK_XY)]
+    outside = [
+        c
+        for c, xy in zip(("red", "green", "blue"), view.limiting)
+        if not _inside(xy, display_primaries, LIMIT_SLACK_XY)
+    ]
     if outside:
         return f"its limiting {' and '.join(outside)} primar{'ies lie' if len(outside) > 1 else 'y lies'} outside the display's gamut"
     return ""

@@ -19,8 +19,15 @@ TRANSFER_FAMILIES = {
     "linear": (),
     "gamma": ("exponent",),
     "piecewise_gamma": ("gamma", "offset"),
-    "log_camera": ("base", "log_side_slope", "log_side_offset", "lin_side_slope", "lin_side_offset",
-                   "lin_side_break", "linear_slope"),
+    "log_camera": (
+        "base",
+        "log_side_slope",
+        "log_side_offset",
+        "lin_side_slope",
+        "lin_side_offset",
+        "lin_side_break",
+        "linear_slope",
+    ),
     "tabulated": ("file",),
 }
 _OPTIONAL = {"lin_side_break", "linear_slope"}
@@ -35,8 +42,12 @@ _OPTIONAL = {"lin_side_break", "linear_slope"}
 PARAMETER_RANGES = {
     "gamma": {"exponent": (0.2, 10.0, False)},
     "piecewise_gamma": {"gamma": (1.0, 10.0, True), "offset": (0.0, 0.9, True)},
-    "log_camera": {"base": (1.0, math.inf, True), "log_side_slope": (0.0, math.inf, True),
-                   "lin_side_slope": (0.0, math.inf, True), "linear_slope": (0.0, math.inf, True)},
+    "log_camera": {
+        "base": (1.0, math.inf, True),
+        "log_side_slope": (0.0, math.inf, True),
+        "lin_side_slope": (0.0, math.inf, True),
+        "linear_slope": (0.0, math.inf, True),
+    },
 }
 
 
@@ -44,7 +55,9 @@ def suggest(name: str, choices) -> str:
     """' (did you mean …?)' for close matches of ``name`` among ``choices``, or ''."""
     lowered = {c.lower(): c for c in choices}
     key = name.lower()
-    close = [c for c in lowered if c.startswith(key)][:3] or difflib.get_close_matches(key, list(lowered), n=3, cutoff=0.6)
+    close = [c for c in lowered if c.startswith(key)][:3] or difflib.get_close_matches(
+        key, list(lowered), n=3, cutoff=0.6
+    )
     return f" (did you mean {', '.join(repr(lowered[c]) for c in close)}?)" if close else ""
 
 
@@ -89,14 +102,22 @@ def check_triangle(primaries: tuple, white: tuple, source: str, field: str, whit
 
     area = _area(*primaries)
     if abs(area) < GAMUT_MIN_XY_AREA:
-        raise SpecError(source, field, f"the primaries span no triangle (xy area {abs(area):.3g}: collinear or "
-                        f"repeated); allowed: three chromaticities enclosing an area of at least {GAMUT_MIN_XY_AREA:g}")
+        raise SpecError(
+            source,
+            field,
+            f"the primaries span no triangle (xy area {abs(area):.3g}: collinear or "
+            f"repeated); allowed: three chromaticities enclosing an area of at least {GAMUT_MIN_XY_AREA:g}",
+        )
     r, g, b = primaries
     shares = [_area(white, g, b), _area(r, white, b), _area(r, g, white)]
     if min(s * math.copysign(1.0, area) for s in shares) < GAMUT_MIN_XY_AREA:
-        raise SpecError(source, white_field, f"white point ({white[0]:.5g}, {white[1]:.5g}) is outside the primaries' "
-                        "triangle or on its edge; allowed: a white inside it, making a triangle of xy area at least "
-                        f"{GAMUT_MIN_XY_AREA:g} with any two primaries")
+        raise SpecError(
+            source,
+            white_field,
+            f"white point ({white[0]:.5g}, {white[1]:.5g}) is outside the primaries' "
+            "triangle or on its edge; allowed: a white inside it, making a triangle of xy area at least "
+            f"{GAMUT_MIN_XY_AREA:g} with any two primaries",
+        )
 
 
 def resolve_path(value, base: Path, source: str, field: str) -> Path:
@@ -145,8 +166,12 @@ def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float
         illuminants = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]
         if value in illuminants:
             return tuple(float(v) for v in illuminants[value])
-        raise SpecError(source, field, f"unknown illuminant {value!r}{suggest(value, illuminants)}; "
-                        "allowed: [x, y], a CIE illuminant name (D65, D60, A, E, ...), a CCT in K, or an SPD .csv")
+        raise SpecError(
+            source,
+            field,
+            f"unknown illuminant {value!r}{suggest(value, illuminants)}; "
+            "allowed: [x, y], a CIE illuminant name (D65, D60, A, E, ...), a CCT in K, or an SPD .csv",
+        )
     raise SpecError(source, field, f"expected [x, y], an illuminant name, a CCT or an SPD .csv, got {value!r}")
 
 
@@ -166,8 +191,12 @@ def transfer_function(value, base: Path, source: str, field: str):
         for name, curve in CURVES.items():
             if name.lower() == value.lower():
                 return name, curve
-        raise SpecError(source, field, f"unknown curve {value!r}{suggest(value, CURVES)}; "
-                        "allowed: a library curve (ocioforge list --curves) or a table with 'family'")
+        raise SpecError(
+            source,
+            field,
+            f"unknown curve {value!r}{suggest(value, CURVES)}; "
+            "allowed: a library curve (ocioforge list --curves) or a table with 'family'",
+        )
     if not isinstance(value, dict):
         raise SpecError(source, field, f"expected a curve name or a table, got {value!r}")
     if "family" not in value:
@@ -179,7 +208,9 @@ def transfer_function(value, base: Path, source: str, field: str):
     allowed = set(TRANSFER_FAMILIES[family]) | {"family"}
     for key in value:
         if key not in allowed:
-            raise SpecError(source, f"{field}.{key}", f"unknown key for family {family!r}; allowed: {', '.join(sorted(allowed))}")
+            raise SpecError(
+                source, f"{field}.{key}", f"unknown key for family {family!r}; allowed: {', '.join(sorted(allowed))}"
+            )
     missing = [k for k in TRANSFER_FAMILIES[family] if k not in value and k not in _OPTIONAL]
     if missing:
         raise SpecError(source, f"{field}.{missing[0]}", f"missing for family {family!r}")
@@ -202,20 +233,35 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
         return label, transfer.Power(params["exponent"])
     if family == "piecewise_gamma":
         curve = transfer.PiecewisePower(params["gamma"], params["offset"])
-        _check_float32(curve, family, source, field, "an offset of at least 1e-6, below which OCIO evaluates "
-                       "1e-6, and with a steep gamma one whose toe's slopes stay within float32")
+        _check_float32(
+            curve,
+            family,
+            source,
+            field,
+            "an offset of at least 1e-6, below which OCIO evaluates "
+            "1e-6, and with a steep gamma one whose toe's slopes stay within float32",
+        )
         if curve.break_code >= 1.0:
-            raise SpecError(source, f"{field}.offset", f"the toe's break, offset / (gamma - 1) = {curve.break_code:.4g}, "
-                            f"lies at or above code 1, so no code reaches the power and code 1 decodes to "
-                            f"{float(curve.decode(1.0)):.4g}, not 1; allowed: an offset below gamma - 1 "
-                            f"({params['gamma'] - 1.0:.4g})")
+            raise SpecError(
+                source,
+                f"{field}.offset",
+                f"the toe's break, offset / (gamma - 1) = {curve.break_code:.4g}, "
+                f"lies at or above code 1, so no code reaches the power and code 1 decodes to "
+                f"{float(curve.decode(1.0)):.4g}, not 1; allowed: an offset below gamma - 1 "
+                f"({params['gamma'] - 1.0:.4g})",
+            )
         return label, curve
     _check_log_break(params, source, field)
     curve = transfer.LogCamera(**params)
     if curve.lin_side_break is None:
         _check_black(curve, source, field)
-    _check_float32(curve, family, source, field, "a base, slopes, offsets and break of a real camera curve: the "
-                   "library's are within 1.6e-6")
+    _check_float32(
+        curve,
+        family,
+        source,
+        field,
+        "a base, slopes, offsets and break of a real camera curve: the library's are within 1.6e-6",
+    )
     return label, curve
 
 
@@ -225,9 +271,13 @@ def _check_float32(curve, family: str, source: str, field: str, hint: str) -> No
     departure = transfer.float32_departure(curve, tolerances.RELATIVE_FLOOR)
     if departure > tolerances.CURVE_FLOAT32_RELATIVE:
         low, high = transfer.PROBED_LINEAR
-        raise SpecError(source, field, f"OCIO evaluates a {family} curve in float32, which departs {departure:.2g} "
-                        f"relative from this one on codes 0 to 1 and linear values ±{low:g} to {high:g}; allowed: "
-                        f"parameters it follows within {tolerances.CURVE_FLOAT32_RELATIVE:g} ({hint})")
+        raise SpecError(
+            source,
+            field,
+            f"OCIO evaluates a {family} curve in float32, which departs {departure:.2g} "
+            f"relative from this one on codes 0 to 1 and linear values ±{low:g} to {high:g}; allowed: "
+            f"parameters it follows within {tolerances.CURVE_FLOAT32_RELATIVE:g} ({hint})",
+        )
 
 
 def check_ranges(family: str, params: dict, source: str, field: str) -> None:
@@ -254,16 +304,24 @@ def _check_black(curve, source: str, field: str) -> None:
     import numpy as np
 
     if curve.lin_side_offset <= 0.0:
-        raise SpecError(source, f"{field}.lin_side_offset", f"{curve.lin_side_offset:g} leaves black without a code "
-                        "(the log of lin_side_offset at linear 0); allowed: > 0, or a lin_side_break where a linear "
-                        "toe takes over")
+        raise SpecError(
+            source,
+            f"{field}.lin_side_offset",
+            f"{curve.lin_side_offset:g} leaves black without a code "
+            "(the log of lin_side_offset at linear 0); allowed: > 0, or a lin_side_break where a linear "
+            "toe takes over",
+        )
     black, rounded = curve.encode(np.array([0.0, tolerances.FLOAT32_UNIT_ROUNDOFF]))
     moved = abs(rounded - black) / max(abs(black), tolerances.RELATIVE_FLOOR)
     if moved > tolerances.ANALYTIC_RELATIVE:
-        raise SpecError(source, f"{field}.lin_side_offset", f"{curve.lin_side_offset:g} puts black so near the log's "
-                        f"pole that float32's rounding of linear 0 moves its code by {moved:.2g} (relative); allowed: "
-                        f"a lin_side_offset large enough that it moves by at most {tolerances.ANALYTIC_RELATIVE:g}, or "
-                        "a lin_side_break where a linear toe takes over")
+        raise SpecError(
+            source,
+            f"{field}.lin_side_offset",
+            f"{curve.lin_side_offset:g} puts black so near the log's "
+            f"pole that float32's rounding of linear 0 moves its code by {moved:.2g} (relative); allowed: "
+            f"a lin_side_offset large enough that it moves by at most {tolerances.ANALYTIC_RELATIVE:g}, or "
+            "a lin_side_break where a linear toe takes over",
+        )
 
 
 def _check_log_break(params: dict, source: str, field: str) -> None:
@@ -275,9 +333,12 @@ def _check_log_break(params: dict, source: str, field: str) -> None:
         return
     lowest = -params["lin_side_offset"] / params["lin_side_slope"]
     if params["lin_side_break"] <= lowest:
-        raise SpecError(source, f"{field}.lin_side_break",
-                        f"at {params['lin_side_break']:g} the log segment is undefined "
-                        f"(lin_side_slope * lin_side_break + lin_side_offset <= 0); allowed: > {lowest:g}")
+        raise SpecError(
+            source,
+            f"{field}.lin_side_break",
+            f"at {params['lin_side_break']:g} the log segment is undefined "
+            f"(lin_side_slope * lin_side_break + lin_side_offset <= 0); allowed: > {lowest:g}",
+        )
 
 
 #: The keys of a spec's [rgc] table, each as RGCParams holds it.
@@ -293,7 +354,9 @@ def rgc_params(value, source: str):
     if value is None:
         return defaults
     if not isinstance(value, dict):
-        raise SpecError(source, "rgc", f"expected a table of {', '.join(RGC_KEYS)} (under an [rgc] header), got {value!r}")
+        raise SpecError(
+            source, "rgc", f"expected a table of {', '.join(RGC_KEYS)} (under an [rgc] header), got {value!r}"
+        )
     for key in value:
         if key not in RGC_KEYS:
             raise SpecError(source, f"rgc.{key}", f"unknown key; allowed: {', '.join(RGC_KEYS)}")
@@ -308,7 +371,10 @@ def rgc_params(value, source: str):
         low, high = OCIO_RANGES[key]
         for field, v in numbers:
             if not low <= v <= high:
-                raise SpecError(source, field, f"{v!r} is outside what OpenColorIO's ACES_GAMUT_COMP_13 takes; "
-                                f"allowed: {low:g} to {high:g}")
+                raise SpecError(
+                    source,
+                    field,
+                    f"{v!r} is outside what OpenColorIO's ACES_GAMUT_COMP_13 takes; allowed: {low:g} to {high:g}",
+                )
         chosen[key] = numbers[0][1] if key == "power" else tuple(v for _, v in numbers)
     return RGCParams(*chosen["limits"], *chosen["thresholds"], chosen["power"])

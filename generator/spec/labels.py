@@ -18,23 +18,38 @@ WINDOWS_DEVICES = ("CON", "PRN", "AUX", "NUL", *(f"{port}{n}" for port in ("COM"
 def folder_name(name: str, source: str) -> str:
     """The spec's ``name`` as the default output folder's (``configs/<name>``); SpecError when
     it cannot name one."""
-    if not name.strip() or name.strip(".") == "" or name != name.strip() or \
-            any(c in NAME_FORBIDDEN or is_control(c) for c in name):
-        raise SpecError(source, "name", f"{name!r} cannot name a folder (a build's default output is "
-                        f"configs/<name>); allowed: a name without {' '.join(NAME_FORBIDDEN)}, control characters "
-                        "or spaces at either end, and not . or ..")
+    if (
+        not name.strip()
+        or name.strip(".") == ""
+        or name != name.strip()
+        or any(c in NAME_FORBIDDEN or is_control(c) for c in name)
+    ):
+        raise SpecError(
+            source,
+            "name",
+            f"{name!r} cannot name a folder (a build's default output is "
+            f"configs/<name>); allowed: a name without {' '.join(NAME_FORBIDDEN)}, control characters "
+            "or spaces at either end, and not . or ..",
+        )
     if name.endswith(".") or name.split(".")[0].rstrip().upper() in WINDOWS_DEVICES:
-        raise SpecError(source, "name", f"{name!r} cannot name a folder on Windows (a build's default output is "
-                        f"configs/<name>), which {'drops a final dot' if name.endswith('.') else 'keeps it for a device'}"
-                        f"; allowed: a name not ending in a dot, and none of {', '.join(WINDOWS_DEVICES[:4])}, "
-                        "COM0-9 or LPT0-9 before a dot")
+        raise SpecError(
+            source,
+            "name",
+            f"{name!r} cannot name a folder on Windows (a build's default output is "
+            f"configs/<name>), which {'drops a final dot' if name.endswith('.') else 'keeps it for a device'}"
+            f"; allowed: a name not ending in a dot, and none of {', '.join(WINDOWS_DEVICES[:4])}, "
+            "COM0-9 or LPT0-9 before a dot",
+        )
     return name
 
 
 def check_keys(table: dict, allowed, source: str, prefix: str) -> None:
     if not isinstance(table, dict):
-        raise SpecError(source, prefix.rstrip(".") or "-", f"expected a table of {', '.join(allowed)} "
-                        f"(key = value lines under its [[header]]), got {table!r}")
+        raise SpecError(
+            source,
+            prefix.rstrip(".") or "-",
+            f"expected a table of {', '.join(allowed)} (key = value lines under its [[header]]), got {table!r}",
+        )
     for key in table:
         if key not in allowed:
             raise SpecError(source, f"{prefix}{key}", f"unknown key; allowed: {', '.join(allowed)}")
@@ -57,8 +72,12 @@ def string(value, source: str, field: str, text: bool = False) -> str:
     control = next((c for c in value if is_control(c) and not (text and c in TEXT_CONTROLS)), None)
     if control is not None:
         allowed = "tabs and line breaks but no other control characters" if text else "no control characters"
-        raise SpecError(source, field, f"{value!r} holds the control character {control!r} (OCIO ends a string at "
-                        f"NUL and writes the others as they are); allowed: {allowed}")
+        raise SpecError(
+            source,
+            field,
+            f"{value!r} holds the control character {control!r} (OCIO ends a string at "
+            f"NUL and writes the others as they are); allowed: {allowed}",
+        )
     return value
 
 
@@ -112,8 +131,12 @@ def distinct(named, source: str) -> None:
     first: dict[str, str] = {}
     for name, field, owner in named:
         if name.lower() in first:
-            raise SpecError(source, field, f"{name!r} already names {first[name.lower()]} (OCIO compares names "
-                            "without case); allowed: a name no other colour space has")
+            raise SpecError(
+                source,
+                field,
+                f"{name!r} already names {first[name.lower()]} (OCIO compares names "
+                "without case); allowed: a name no other colour space has",
+            )
         first[name.lower()] = owner
 
 
@@ -137,12 +160,19 @@ def label(value, source: str, field: str, context: bool = True) -> str:
     if not name.strip():
         raise SpecError(source, field, f"{name!r} is blank; required: a name with a visible character")
     if name != name.strip():
-        raise SpecError(source, field, f"{name!r} has a space at either end, which OCIO trims from names; "
-                        "allowed: the name without them")
+        raise SpecError(
+            source,
+            field,
+            f"{name!r} has a space at either end, which OCIO trims from names; allowed: the name without them",
+        )
     token = next((c for c in name if context and c in CONTEXT_TOKENS), None)
     if token is not None:
-        raise SpecError(source, field, f"{name!r} holds {token!r}, which OCIO reads as a context variable in the "
-                        f"names of colour spaces and roles; allowed: a name without {' or '.join(CONTEXT_TOKENS)}")
+        raise SpecError(
+            source,
+            field,
+            f"{name!r} holds {token!r}, which OCIO reads as a context variable in the "
+            f"names of colour spaces and roles; allowed: a name without {' or '.join(CONTEXT_TOKENS)}",
+        )
     return name
 
 
@@ -157,5 +187,9 @@ def toml_key(key: str) -> str:
 def no_comma(name: str, source: str, field: str) -> None:
     """OCIO's lists of names (active displays, inactive spaces) are split at commas."""
     if "," in name:
-        raise SpecError(source, field, f"{name!r} holds a comma, at which OCIO splits its lists of names (active "
-                        "displays, inactive spaces); allowed: a name without commas")
+        raise SpecError(
+            source,
+            field,
+            f"{name!r} holds a comma, at which OCIO splits its lists of names (active "
+            "displays, inactive spaces); allowed: a name without commas",
+        )

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 import re
 import tomllib
-from importlib import resources
 from functools import lru_cache
+from importlib import resources
 from pathlib import Path
 
 import numpy as np
@@ -18,17 +18,51 @@ from generator import tolerances
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.colorimetry.transfer import Linear
+from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.rendering import views as aces_views
 from generator.spec import fields, labels, namespace
-from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
-TOP_KEYS = ("name", "description", "ocio_version", "scene_reference", "chromatic_adaptation", "rgc", "colour_spaces",
-            "inactive", "display_view_spaces", "custom_space", "display", "roles", "file_rule")
-CUSTOM_SPACE_KEYS = ("name", "aliases", "family", "encoding", "description", "gamut", "primaries",
-                     "primaries_spectra", "white", "transfer")
-DISPLAY_KEYS = ("name", "aliases", "views", "gamut", "primaries", "primaries_spectra", "white", "eotf", "peak_luminance",
-                "absolute_luminance", "description")
+TOP_KEYS = (
+    "name",
+    "description",
+    "ocio_version",
+    "scene_reference",
+    "chromatic_adaptation",
+    "rgc",
+    "colour_spaces",
+    "inactive",
+    "display_view_spaces",
+    "custom_space",
+    "display",
+    "roles",
+    "file_rule",
+)
+CUSTOM_SPACE_KEYS = (
+    "name",
+    "aliases",
+    "family",
+    "encoding",
+    "description",
+    "gamut",
+    "primaries",
+    "primaries_spectra",
+    "white",
+    "transfer",
+)
+DISPLAY_KEYS = (
+    "name",
+    "aliases",
+    "views",
+    "gamut",
+    "primaries",
+    "primaries_spectra",
+    "white",
+    "eotf",
+    "peak_luminance",
+    "absolute_luminance",
+    "description",
+)
 
 #: Peak luminance (cd/m²) an SDR display driven in absolute luminance may have.
 ABSOLUTE_PEAK_RANGE = (1.0, 10000.0)
@@ -40,8 +74,13 @@ ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "edr-video", 
 
 #: Views a display may offer: each scene-referred view names its gamut-mapping method
 #: (generator.gamut.METHODS); Raw shows data unchanged.
-VIEW_METHODS = {"Colorimetric": "clip", "Desaturate": "desaturate", "Scale": "scale", "Perceptual": "perceptual",
-                "RGC": "rgc"}
+VIEW_METHODS = {
+    "Colorimetric": "clip",
+    "Desaturate": "desaturate",
+    "Scale": "scale",
+    "Perceptual": "perceptual",
+    "RGC": "rgc",
+}
 VIEWS = (*VIEW_METHODS, "Raw")
 
 #: The ACES studio configs' name for a view without tone mapping: our Colorimetric.
@@ -70,12 +109,21 @@ def default_views(encoding: str, name: str = "") -> tuple[str, ...]:
 
 #: Roles a config must set so hosts load it without warnings, with their default targets.
 DEFAULT_ROLES = {
-    "scene_linear": "ACEScg", "rendering": "ACEScg", "compositing_linear": "ACEScg",
-    "compositing_log": "ACEScct", "color_timing": "ACEScct", "color_picking": "sRGB Encoded Rec.709 (sRGB)",
-    "texture_paint": "sRGB Encoded Rec.709 (sRGB)", "matte_paint": "sRGB Encoded Rec.709 (sRGB)",
-    "data": "Raw", "default": "sRGB Encoded Rec.709 (sRGB)", "aces_interchange": "ACES2065-1",
-    "cie_xyz_d65_interchange": "CIE XYZ-D65 - Display-referred", "default_byte": "sRGB Encoded Rec.709 (sRGB)",
-    "default_float": "ACEScg", "default_sequencer": "sRGB Encoded Rec.709 (sRGB)",
+    "scene_linear": "ACEScg",
+    "rendering": "ACEScg",
+    "compositing_linear": "ACEScg",
+    "compositing_log": "ACEScct",
+    "color_timing": "ACEScct",
+    "color_picking": "sRGB Encoded Rec.709 (sRGB)",
+    "texture_paint": "sRGB Encoded Rec.709 (sRGB)",
+    "matte_paint": "sRGB Encoded Rec.709 (sRGB)",
+    "data": "Raw",
+    "default": "sRGB Encoded Rec.709 (sRGB)",
+    "aces_interchange": "ACES2065-1",
+    "cie_xyz_d65_interchange": "CIE XYZ-D65 - Display-referred",
+    "default_byte": "sRGB Encoded Rec.709 (sRGB)",
+    "default_float": "ACEScg",
+    "default_sequencer": "sRGB Encoded Rec.709 (sRGB)",
     "reference": "ACES2065-1",  # the spec's scene_reference unless [roles] says otherwise
     # scene_linear's target unless [roles] says otherwise: OpenImageIO 2.4 (Debian's oiiotool, OCIO
     # 2.1) reads an EXR as colour space "Linear", and without this role its --ociodisplay failed.
@@ -134,8 +182,12 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
 
     why = not_readable(path)
     if why is not None:
-        raise SpecError(str(path), "-", f"cannot read the spec: it {why}; allowed: a spec's TOML file, a build's "
-                        "folder, its config.ocio or the ocioforge-spec.json beside it")
+        raise SpecError(
+            str(path),
+            "-",
+            f"cannot read the spec: it {why}; allowed: a spec's TOML file, a build's "
+            "folder, its config.ocio or the ocioforge-spec.json beside it",
+        )
     try:
         text = path.read_text(encoding="utf-8-sig")  # a BOM some editors write is not TOML
     except OSError as error:
@@ -163,21 +215,30 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         labels.label(role, source, f"roles.{labels.toml_key(role)}")
         _check_role_name(role, source)
     listed = _listed(raw, source)
-    customs = tuple(_custom_space(t, source, f"custom_space[{i}]", base)
-                    for i, t in enumerate(_tables(raw, "custom_space", source)))
+    customs = tuple(
+        _custom_space(t, source, f"custom_space[{i}]", base) for i, t in enumerate(_tables(raw, "custom_space", source))
+    )
     owners = list(labels.owners(listed, customs, "colour_spaces" in raw and raw["colour_spaces"] != ["*"]))
     labels.distinct(owners, source)
     all_names = [name for name, _, _ in owners]
     displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
     if not displays:
-        raise SpecError(source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's")
+        raise SpecError(
+            source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's"
+        )
     twice = labels.repeated([d.name for d in displays])
     if twice:
         i, earlier = twice
-        raise SpecError(source, f"display[{i}].name", f"{displays[i].name!r} is listed twice (display[{earlier}]); "
-                        "allowed: each display once")
-    view_spaces = labels.boolean(raw["display_view_spaces"] if "display_view_spaces" in raw
-                        else embedded_default("display_view_spaces"), source, "display_view_spaces")
+        raise SpecError(
+            source,
+            f"display[{i}].name",
+            f"{displays[i].name!r} is listed twice (display[{earlier}]); allowed: each display once",
+        )
+    view_spaces = labels.boolean(
+        raw["display_view_spaces"] if "display_view_spaces" in raw else embedded_default("display_view_spaces"),
+        source,
+        "display_view_spaces",
+    )
     defaults = _default_roles(all_names, displays, roles)
     taken = namespace.generated(displays, view_spaces, tuple(defaults), source, tuple(roles))
     namespace.check_free(listed, customs, taken, source)
@@ -187,9 +248,15 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     chosen = next(s for s in (*listed, *customs) if reference.lower() in (n.lower() for n in (s.name, *s.aliases)))
     linear = chosen.curve == "linear" if isinstance(chosen.curve, str) else isinstance(chosen.curve, Linear)
     if chosen.encoding != "scene-linear" or not linear:
-        what = chosen.encoding if chosen.encoding != "scene-linear" else "labelled scene-linear but has a transfer curve"
-        raise SpecError(source, "scene_reference", f"{reference!r} is {what}; allowed: a scene-linear colour space "
-                        "with a linear transfer (ACES2065-1, ACEScg, Linear Rec.709 (sRGB), ...)")
+        what = (
+            chosen.encoding if chosen.encoding != "scene-linear" else "labelled scene-linear but has a transfer curve"
+        )
+        raise SpecError(
+            source,
+            "scene_reference",
+            f"{reference!r} is {what}; allowed: a scene-linear colour space "
+            "with a linear transfer (ACES2065-1, ACEScg, Linear Rec.709 (sRGB), ...)",
+        )
     if keep is not None:
         keep = (*keep, reference, *DEFAULT_ROLES.values(), *roles.values())
     spaces = (*_kept(listed, keep), *customs)
@@ -209,8 +276,9 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         displays=displays,
         roles=chosen_roles,
         file_rules=rules,
-        inactive=_inactive(raw.get("inactive", []), source, names, left_out,
-                           _picked_by_hosts(chosen_roles, rules, names, displays)),
+        inactive=_inactive(
+            raw.get("inactive", []), source, names, left_out, _picked_by_hosts(chosen_roles, rules, names, displays)
+        ),
         display_view_spaces=view_spaces,
         source=recorded(source),
         rgc=fields.rgc_params(raw.get("rgc"), source),
@@ -238,12 +306,15 @@ def parse_version(value, source: str) -> tuple[int, int]:
     """The spec's config version; the oldest supported one is accepted without asking the
     installed PyOpenColorIO (every supported release writes it), which spares its import."""
     if not isinstance(value, str):
-        raise SpecError(source, "ocio_version", f"expected a quoted version like \"2.1\", got {value!r} (a TOML "
-                        f"number loses its digits: 2.10 reads as 2.1); allowed: {_allowed()}")
+        raise SpecError(
+            source,
+            "ocio_version",
+            f'expected a quoted version like "2.1", got {value!r} (a TOML '
+            f"number loses its digits: 2.10 reads as 2.1); allowed: {_allowed()}",
+        )
     written = re.fullmatch(r"([0-9])\.(0|[1-9][0-9]?)", value)
     if written is None:
-        raise SpecError(source, "ocio_version", f"expected a version like \"2.1\", got {value!r}; "
-                        f"allowed: {_allowed()}")
+        raise SpecError(source, "ocio_version", f'expected a version like "2.1", got {value!r}; allowed: {_allowed()}')
     major, minor = int(written[1]), int(written[2])
     if (major, minor) != OCIO_MIN_VERSION and not OCIO_MIN_VERSION <= (major, minor) <= newest_ocio_version():
         raise SpecError(source, "ocio_version", f"{value} is not supported; allowed: {_allowed()}")
@@ -260,10 +331,16 @@ def library_def(name: str, source: str, field: str) -> library.SpaceDef:
     for space in library.SPACES:
         if name.lower() in (n.lower() for n in (space.name, *space.aliases)):
             return space
-    display = next((d.name for d in library.DISPLAYS if name.lower() in (n.lower() for n in (d.name, *d.aliases))), None)
+    display = next(
+        (d.name for d in library.DISPLAYS if name.lower() in (n.lower() for n in (d.name, *d.aliases))), None
+    )
     if display is not None:
-        raise SpecError(source, field, f"{display!r} is a display, not a scene colour space; allowed: a colour space "
-                        "of ocioforge list (displays are in ocioforge list --displays)")
+        raise SpecError(
+            source,
+            field,
+            f"{display!r} is a display, not a scene colour space; allowed: a colour space "
+            "of ocioforge list (displays are in ocioforge list --displays)",
+        )
     choices = [n for s in library.SPACES for n in (s.name, *s.aliases)]
     raise SpecError(source, field, f"unknown colour space {name!r}{fields.suggest(name, choices)}; see ocioforge list")
 
@@ -282,8 +359,12 @@ def named_space(spec: Spec | None, name: str, source: str, field: str) -> Colour
     try:
         return spec.space(name)
     except KeyError:
-        raise SpecError(source, field, f"no colour space {name!r} in {spec.source}{suggest(name, spec.space_names)}; "
-                        "allowed: one of its colour spaces") from None
+        raise SpecError(
+            source,
+            field,
+            f"no colour space {name!r} in {spec.source}{suggest(name, spec.space_names)}; "
+            "allowed: one of its colour spaces",
+        ) from None
 
 
 def from_library(space: library.SpaceDef) -> ColourSpace:
@@ -293,10 +374,16 @@ def from_library(space: library.SpaceDef) -> ColourSpace:
 
     special = space.curve.lower() if space.curve.startswith("ADX") else ""
     return ColourSpace(
-        name=space.name, gamut=gamuts()[space.gamut] if space.gamut else None,
-        curve=Linear() if special else CURVES[space.curve], curve_name=space.curve, aliases=space.aliases,
-        family=space.family, encoding=space.encoding, description=space.description,
-        is_data=space.is_data, special=special,
+        name=space.name,
+        gamut=gamuts()[space.gamut] if space.gamut else None,
+        curve=Linear() if special else CURVES[space.curve],
+        curve_name=space.curve,
+        aliases=space.aliases,
+        family=space.family,
+        encoding=space.encoding,
+        description=space.description,
+        is_data=space.is_data,
+        special=special,
     )
 
 
@@ -305,14 +392,18 @@ def _listed(raw: dict, source: str) -> tuple[library.SpaceDef, ...]:
     value = raw.get("colour_spaces", ["*"])
     if value == ["*"]:
         return library.SPACES
-    return tuple(library_def(n, source, f"colour_spaces[{i}]") for i, n in enumerate(labels.strings(value, source, "colour_spaces")))
+    return tuple(
+        library_def(n, source, f"colour_spaces[{i}]")
+        for i, n in enumerate(labels.strings(value, source, "colour_spaces"))
+    )
 
 
 def _kept(listed, keep: tuple[str, ...] | None) -> tuple[ColourSpace, ...]:
     """The listed library spaces resolved: all, or with ``keep`` those it names."""
     wanted = None if keep is None else {str(k).lower() for k in keep}
-    return tuple(from_library(d) for d in listed
-                 if wanted is None or {n.lower() for n in (d.name, *d.aliases)} & wanted)
+    return tuple(
+        from_library(d) for d in listed if wanted is None or {n.lower() for n in (d.name, *d.aliases)} & wanted
+    )
 
 
 def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut:
@@ -320,7 +411,9 @@ def _gamut(table: dict, source: str, field: str, base: Path, name: str) -> Gamut
 
     given = [k for k in ("gamut", "primaries", "primaries_spectra") if k in table]
     if len(given) != 1:
-        raise SpecError(source, field, "give exactly one of 'gamut' (a library gamut), 'primaries' or 'primaries_spectra'")
+        raise SpecError(
+            source, field, "give exactly one of 'gamut' (a library gamut), 'primaries' or 'primaries_spectra'"
+        )
     if "gamut" in table:
         key = labels.string(table["gamut"], source, f"{field}.gamut")
         if key not in gamuts():
@@ -358,9 +451,13 @@ def _custom_space(table: dict, source: str, field: str, base: Path) -> ColourSpa
     if encoding not in ENCODINGS:
         raise SpecError(source, f"{field}.encoding", f"unknown {encoding!r}; allowed: {', '.join(ENCODINGS)}")
     return ColourSpace(
-        name=name, gamut=_gamut(table, source, field, base, name), curve=curve, curve_name=curve_name,
+        name=name,
+        gamut=_gamut(table, source, field, base, name),
+        curve=curve,
+        curve_name=curve_name,
         aliases=labels.aliases(table.get("aliases", []), source, f"{field}.aliases"),
-        family=labels.string(table.get("family", "Custom"), source, f"{field}.family"), encoding=encoding,
+        family=labels.string(table.get("family", "Custom"), source, f"{field}.family"),
+        encoding=encoding,
         description=labels.string(table.get("description", ""), source, f"{field}.description", text=True),
     )
 
@@ -377,59 +474,95 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     name = labels.table_name(table, source, field)
     views = labels.strings(table["views"], source, f"{field}.views") if "views" in table else None
     if views == ():
-        raise SpecError(source, f"{field}.views", f"empty; allowed: one or more of {', '.join(VIEWS)}, "
-                        "or the key left out for the defaults")
+        raise SpecError(
+            source,
+            f"{field}.views",
+            f"empty; allowed: one or more of {', '.join(VIEWS)}, or the key left out for the defaults",
+        )
     for i, view in enumerate(views or ()):
         if view not in VIEWS and view not in COLORIMETRIC_ALIASES and not aces_views.is_aces_name(view):
-            raise SpecError(source, f"{field}.views[{i}]", f"unknown view {view!r}{fields.suggest(view, _view_names())}; "
-                            f"allowed: {', '.join(VIEWS)}, {', '.join(COLORIMETRIC_ALIASES)}, {aces_views.OWN_ACES2} "
-                            "(the display's own) or an ACES studio view ('ocioforge list --views' shows them)")
+            raise SpecError(
+                source,
+                f"{field}.views[{i}]",
+                f"unknown view {view!r}{fields.suggest(view, _view_names())}; "
+                f"allowed: {', '.join(VIEWS)}, {', '.join(COLORIMETRIC_ALIASES)}, {aces_views.OWN_ACES2} "
+                "(the display's own) or an ACES studio view ('ocioforge list --views' shows them)",
+            )
         if view in views[:i]:
             raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
     known = {n.lower(): d for d in library.DISPLAYS for n in (d.name, *d.aliases)}
     custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
     if custom:
         aliases = labels.aliases(table.get("aliases", []), source, f"{field}.aliases")
-        taken = next(((key, n) for key, names in (("name", (name,)), ("aliases", aliases)) for n in names
-                      if n.lower() in known), None)
+        taken = next(
+            ((key, n) for key, names in (("name", (name,)), ("aliases", aliases)) for n in names if n.lower() in known),
+            None,
+        )
         if taken:
             key, n = taken
-            raise SpecError(source, f"{field}.{key}", f"{n!r} names the library display {known[n.lower()].name!r}, "
-                            "whose gamut and eotf are fixed; allowed: another name for a custom display")
+            raise SpecError(
+                source,
+                f"{field}.{key}",
+                f"{n!r} names the library display {known[n.lower()].name!r}, "
+                "whose gamut and eotf are fixed; allowed: another name for a custom display",
+            )
     if name.lower() in known and not custom:
         fixed = next((k for k in table if k not in LIBRARY_DISPLAY_KEYS), None)
         if fixed:
-            raise SpecError(source, f"{field}.{fixed}", f"{known[name.lower()].name!r} is a library display, whose "
-                            f"{fixed} is fixed; allowed: {', '.join(LIBRARY_DISPLAY_KEYS)} here, or a display of "
-                            "another name with gamut (or primaries) and eotf")
+            raise SpecError(
+                source,
+                f"{field}.{fixed}",
+                f"{known[name.lower()].name!r} is a library display, whose "
+                f"{fixed} is fixed; allowed: {', '.join(LIBRARY_DISPLAY_KEYS)} here, or a display of "
+                "another name with gamut (or primaries) and eotf",
+            )
         d = known[name.lower()]
         gamut = gamuts()[d.gamut]
-        views = _aces(views or default_views(d.encoding, d.name), d.name, gamut, d.peak, d.encoding != "sdr-video",
-                      source, field)
+        views = _aces(
+            views or default_views(d.encoding, d.name), d.name, gamut, d.peak, d.encoding != "sdr-video", source, field
+        )
         return Display(d.name, gamut, CURVES[d.eotf], d.eotf, views, d.aliases, d.peak, d.encoding, d.description)
     if not custom:
-        raise SpecError(source, f"{field}.name", f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
-                        "a custom display needs 'gamut' or 'primaries' and 'eotf'")
+        raise SpecError(
+            source,
+            f"{field}.name",
+            f"unknown display {name!r}{fields.suggest(name, [d.name for d in library.DISPLAYS])}; "
+            "a custom display needs 'gamut' or 'primaries' and 'eotf'",
+        )
     if "eotf" not in table:
-        raise SpecError(source, f"{field}.eotf", "required for a custom display: a library curve (sRGB, gamma 2.4, "
-                        "ST 2084, HLG, ...) or a transfer family")
+        raise SpecError(
+            source,
+            f"{field}.eotf",
+            "required for a custom display: a library curve (sRGB, gamma 2.4, ST 2084, HLG, ...) or a transfer family",
+        )
     eotf_name, eotf = fields.transfer_function(table["eotf"], base, source, f"{field}.eotf")
     hdr = eotf_name in ("ST 2084", "HLG")
     absolute = labels.boolean(table.get("absolute_luminance", False), source, f"{field}.absolute_luminance")
     if absolute and hdr:
-        raise SpecError(source, f"{field}.absolute_luminance", f"an {eotf_name} signal carries its own luminance; "
-                        "allowed: absolute_luminance with an SDR eotf")
+        raise SpecError(
+            source,
+            f"{field}.absolute_luminance",
+            f"an {eotf_name} signal carries its own luminance; allowed: absolute_luminance with an SDR eotf",
+        )
     peak = fields.number(table.get("peak_luminance", 1000.0 if hdr else 100.0), source, f"{field}.peak_luminance")
     if eotf_name == "HLG" and peak != HLG_DISPLAY_PEAK:
-        raise SpecError(source, f"{field}.peak_luminance", f"{peak:g} cd/m²: HLG displays are built for "
-                        f"{HLG_DISPLAY_PEAK:g} cd/m² (BT.2100's reference); allowed: {HLG_DISPLAY_PEAK:g}")
+        raise SpecError(
+            source,
+            f"{field}.peak_luminance",
+            f"{peak:g} cd/m²: HLG displays are built for "
+            f"{HLG_DISPLAY_PEAK:g} cd/m² (BT.2100's reference); allowed: {HLG_DISPLAY_PEAK:g}",
+        )
     low, high = (100.0, 10000.0) if hdr else ABSOLUTE_PEAK_RANGE if absolute else (100.0, 100.0)
     if not low <= peak <= high:
-        raise SpecError(source, f"{field}.peak_luminance", f"{peak:g} cd/m² is outside what a {eotf_name} display "
-                        f"{'driven in absolute luminance ' if absolute else ''}takes; "
-                        "allowed: 100 to 10000 cd/m² for ST 2084 displays; 100 for "
-                        "SDR (code 1 shows display-referred 1.0, 100 cd/m²), or with absolute_luminance = true "
-                        f"{ABSOLUTE_PEAK_RANGE[0]:g} to {ABSOLUTE_PEAK_RANGE[1]:g} (code 1 emits the peak)")
+        raise SpecError(
+            source,
+            f"{field}.peak_luminance",
+            f"{peak:g} cd/m² is outside what a {eotf_name} display "
+            f"{'driven in absolute luminance ' if absolute else ''}takes; "
+            "allowed: 100 to 10000 cd/m² for ST 2084 displays; 100 for "
+            "SDR (code 1 shows display-referred 1.0, 100 cd/m²), or with absolute_luminance = true "
+            f"{ABSOLUTE_PEAK_RANGE[0]:g} to {ABSOLUTE_PEAK_RANGE[1]:g} (code 1 emits the peak)",
+        )
     views = views or default_views("hdr-video" if hdr else "sdr-video")
     gamut = _gamut(table, source, field, base, name)
     given = next((k for k in ("primaries", "primaries_spectra") if k in table), "gamut")
@@ -437,10 +570,18 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
     _check_views_can_hold(views, eotf, gamut, source, field, given)
     if eotf_name == "HLG":
         _check_bt2020(gamut, source, f"{field}.{given}", f"{field}.{'white' if 'white' in table else given}")
-    return Display(name, gamut, eotf, eotf_name, views,
-                   labels.aliases(table.get("aliases", []), source, f"{field}.aliases"), peak,
-                   "hdr-video" if hdr else "sdr-video", labels.string(table.get("description", ""), source, f"{field}.description", text=True),
-                   absolute)
+    return Display(
+        name,
+        gamut,
+        eotf,
+        eotf_name,
+        views,
+        labels.aliases(table.get("aliases", []), source, f"{field}.aliases"),
+        peak,
+        "hdr-video" if hdr else "sdr-video",
+        labels.string(table.get("description", ""), source, f"{field}.description", text=True),
+        absolute,
+    )
 
 
 def _view_names() -> list[str]:
@@ -462,17 +603,29 @@ def _aces(views, name: str, gamut: Gamut, peak: float, bright: bool, source: str
                 try:
                     view = aces_views.own_view(name, peak, gamut.primaries, gamut.whitepoint).name
                 except ValueError as error:
-                    raise SpecError(source, key, f"the display's own ACES 2.0 view cannot be made: {error}; allowed: "
-                                    "a peak luminance, primaries and white the ACES 2.0 Output Transform takes") from None
+                    raise SpecError(
+                        source,
+                        key,
+                        f"the display's own ACES 2.0 view cannot be made: {error}; allowed: "
+                        "a peak luminance, primaries and white the ACES 2.0 Output Transform takes",
+                    ) from None
         if aces_views.is_aces_name(view):
             found = aces_views.resolve(view, name, peak, gamut.primaries, gamut.whitepoint)
             if found is None:
-                raise SpecError(source, key, f"unknown ACES view {view!r}; allowed: {aces_views.OWN_ACES2} or an ACES "
-                                "studio view ('ocioforge list --views' shows them)")
+                raise SpecError(
+                    source,
+                    key,
+                    f"unknown ACES view {view!r}; allowed: {aces_views.OWN_ACES2} or an ACES "
+                    "studio view ('ocioforge list --views' shows them)",
+                )
             why = aces_views.cannot_show(found, gamut.primaries, peak, bright)
             if why:
-                raise SpecError(source, key, f"{name!r} cannot show {view!r}: {why}; allowed: a view whose peak and "
-                                "limiting primaries the display holds")
+                raise SpecError(
+                    source,
+                    key,
+                    f"{name!r} cannot show {view!r}: {why}; allowed: a view whose peak and "
+                    "limiting primaries the display holds",
+                )
         if view in out:
             raise SpecError(source, key, f"{view!r} is listed twice; allowed: each view once")
         out.append(view)
@@ -490,16 +643,24 @@ def _check_views_can_hold(views, eotf, gamut: Gamut, source: str, field: str, gi
     from generator.tolerances import DISPLAY_MIN_LUMINANCE_SHARE
 
     if "Perceptual" in views and isinstance(eotf, Power) and eotf.exponent < 1.0:
-        raise SpecError(source, f"{field}.eotf", f"the Perceptual view needs an exponent of at least 1, got "
-                        f"{eotf.exponent:g}; allowed: such an exponent, or views without Perceptual")
+        raise SpecError(
+            source,
+            f"{field}.eotf",
+            f"the Perceptual view needs an exponent of at least 1, got "
+            f"{eotf.exponent:g}; allowed: such an exponent, or views without Perceptual",
+        )
     if "Desaturate" not in views:
         return
     shares = normalised_primary_matrix(gamut.primaries, gamut.whitepoint)[1]
     for label, (x, y), share in zip(("red", "green", "blue"), gamut.primaries, shares):
         if not share >= DISPLAY_MIN_LUMINANCE_SHARE:
-            raise SpecError(source, f"{field}.{given}", f"the {label} primary (x {x:g}, y {y:g}) gives {share:.3g} of "
-                            f"white's luminance, and the Desaturate view, which keeps luminance, needs at least "
-                            f"{DISPLAY_MIN_LUMINANCE_SHARE:g}; allowed: such primaries, or views without Desaturate")
+            raise SpecError(
+                source,
+                f"{field}.{given}",
+                f"the {label} primary (x {x:g}, y {y:g}) gives {share:.3g} of "
+                f"white's luminance, and the Desaturate view, which keeps luminance, needs at least "
+                f"{DISPLAY_MIN_LUMINANCE_SHARE:g}; allowed: such primaries, or views without Desaturate",
+            )
 
 
 def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
@@ -510,8 +671,12 @@ def _check_bt2020(gamut, source: str, field: str, white: str) -> None:
     bt2020 = gamuts()["Rec.2020"]
     for ours, theirs, key in ((gamut.primaries, bt2020.primaries, field), (gamut.whitepoint, bt2020.whitepoint, white)):
         if not np.allclose(ours, theirs, rtol=0, atol=tolerances.GAMUT_SAME_XY_ABSOLUTE):
-            raise SpecError(source, key, "an HLG display is BT.2100's, on BT.2020 primaries and D65 (x 0.3127, "
-                            "y 0.3290); allowed: gamut = \"Rec.2020\" (or its primaries and white)")
+            raise SpecError(
+                source,
+                key,
+                "an HLG display is BT.2100's, on BT.2020 primaries and D65 (x 0.3127, "
+                'y 0.3290); allowed: gamut = "Rec.2020" (or its primaries and white)',
+            )
 
 
 #: Roles whose colour space hosts take without asking (Blender's images, renders, sequencer
@@ -535,8 +700,9 @@ def _picked_by_hosts(roles, rules, names: dict[str, str], displays) -> dict[str,
     return picked
 
 
-def _inactive(value, source: str, names: dict[str, str], left_out: tuple[str, ...],
-              picked: dict[str, str]) -> tuple[str, ...]:
+def _inactive(
+    value, source: str, names: dict[str, str], left_out: tuple[str, ...], picked: dict[str, str]
+) -> tuple[str, ...]:
     """The colour spaces kept out of menus (``names``: every name and alias of the config's,
     generated ones too, to the space's own name), each by its own name: OCIO takes no alias
     there, and a space named by its alias stayed in every menu. None may be one hosts pick
@@ -546,17 +712,28 @@ def _inactive(value, source: str, names: dict[str, str], left_out: tuple[str, ..
     chosen: dict[str, int] = {}
     for i, name in enumerate(labels.strings(value, source, "inactive")):
         if name.lower() not in names:
-            raise SpecError(source, f"inactive[{i}]", f"{name!r} is not among the colour spaces; allowed: a colour "
-                            "space of the spec, the display reference or a '<view> - <display>' space, by name or alias")
+            raise SpecError(
+                source,
+                f"inactive[{i}]",
+                f"{name!r} is not among the colour spaces; allowed: a colour "
+                "space of the spec, the display reference or a '<view> - <display>' space, by name or alias",
+            )
         own = names[name.lower()]
         if own in picked:
-            raise SpecError(source, f"inactive[{i}]", f"{name!r} is {picked[own]}, which hosts take without asking "
-                            "(Blender lists no inactive space: it crashed reading a file that led to one, and showed "
-                            "a display whose space was inactive wrong); allowed: a space of the spec no file rule "
-                            f"and none of the roles {', '.join(HOST_ROLES)} name, or a '<view> - <display>' space")
+            raise SpecError(
+                source,
+                f"inactive[{i}]",
+                f"{name!r} is {picked[own]}, which hosts take without asking "
+                "(Blender lists no inactive space: it crashed reading a file that led to one, and showed "
+                "a display whose space was inactive wrong); allowed: a space of the spec no file rule "
+                f"and none of the roles {', '.join(HOST_ROLES)} name, or a '<view> - <display>' space",
+            )
         if own in chosen:
-            raise SpecError(source, f"inactive[{i}]", f"{name!r} names {own!r}, as inactive[{chosen[own]}] does; "
-                            "allowed: each colour space once")
+            raise SpecError(
+                source,
+                f"inactive[{i}]",
+                f"{name!r} names {own!r}, as inactive[{chosen[own]}] does; allowed: each colour space once",
+            )
         chosen[own] = i
     return tuple(own for own in chosen if own not in left_out)
 
@@ -567,12 +744,20 @@ def _check_data(spaces, displays, roles, source: str) -> None:
     allowed = "allowed: list 'Raw' (the library's data space) in colour_spaces"
     for i, display in enumerate(displays):
         if "Raw" in display.views and not data:
-            raise SpecError(source, f"display[{i}].views", f"{display.name!r} offers the Raw view, which shows a data "
-                            f"colour space, and the spec has none; {allowed}, or leave Raw out of its views")
+            raise SpecError(
+                source,
+                f"display[{i}].views",
+                f"{display.name!r} offers the Raw view, which shows a data "
+                f"colour space, and the spec has none; {allowed}, or leave Raw out of its views",
+            )
     target = dict(roles).get("data")
     if target is not None and target.lower() not in data:
-        raise SpecError(source, "roles.data", f"{target!r} is not a data colour space (hosts read files of the data "
-                        f"role unconverted, and this space converts); {allowed}, and name it or its alias")
+        raise SpecError(
+            source,
+            "roles.data",
+            f"{target!r} is not a data colour space (hosts read files of the data "
+            f"role unconverted, and this space converts); {allowed}, and name it or its alias",
+        )
 
 
 #: Edits (insertions, deletions, substitutions) within which a role the spec names is taken for a
@@ -599,9 +784,13 @@ def _check_role_name(role: str, source: str) -> None:
         return
     near = sorted(known for known in DEFAULT_ROLES if _edits(key, known) <= ROLE_TYPO_EDITS)
     if near:
-        raise SpecError(source, f"roles.{labels.toml_key(role)}", f"unknown role (did you mean "
-                        f"{', '.join(map(repr, near))}?); allowed: {', '.join(DEFAULT_ROLES)}, or a custom role "
-                        "not spelt within two letters of one of them")
+        raise SpecError(
+            source,
+            f"roles.{labels.toml_key(role)}",
+            f"unknown role (did you mean "
+            f"{', '.join(map(repr, near))}?); allowed: {', '.join(DEFAULT_ROLES)}, or a custom role "
+            "not spelt within two letters of one of them",
+        )
 
 
 def _default_roles(names, displays, spec_roles) -> dict[str, str]:
@@ -624,14 +813,24 @@ def _roles(table, defaults: dict, reference: str, source: str, names: set[str]) 
         roles["linear"] = roles["scene_linear"]
     for role, target in roles.items():
         if not isinstance(target, str):
-            raise SpecError(source, f"roles.{labels.toml_key(role)}", f"expected a string naming a colour space, got {target!r}")
+            raise SpecError(
+                source, f"roles.{labels.toml_key(role)}", f"expected a string naming a colour space, got {target!r}"
+            )
         if target.lower() not in names:
             if role in given:
-                raise SpecError(source, f"roles.{role}", f"{target!r} is not among the spec's scene colour spaces; "
-                                "allowed: a colour space of colour_spaces or custom_space, by name or alias, or "
-                                f"{namespace.DISPLAY_REFERENCE!r}")
-            raise SpecError(source, f"roles.{role}", f"the default target {target!r} is not among the colour spaces; "
-                            f"allowed: list it in colour_spaces, or set {role} under [roles]")
+                raise SpecError(
+                    source,
+                    f"roles.{role}",
+                    f"{target!r} is not among the spec's scene colour spaces; "
+                    "allowed: a colour space of colour_spaces or custom_space, by name or alias, or "
+                    f"{namespace.DISPLAY_REFERENCE!r}",
+                )
+            raise SpecError(
+                source,
+                f"roles.{role}",
+                f"the default target {target!r} is not among the colour spaces; "
+                f"allowed: list it in colour_spaces, or set {role} under [roles]",
+            )
     return tuple(sorted(roles.items()))
 
 
@@ -646,8 +845,12 @@ def _check_glob(rule: FileRule, source: str, field: str) -> None:
         ocio.FileRules().insertRule(0, "check", "check", rule.pattern, rule.extension)
     except Exception as error:  # PyOpenColorIO.Exception
         key = "pattern" if "[" in rule.pattern or "]" in rule.pattern else "extension"
-        raise SpecError(source, f"{field}.{key}", f"OpenColorIO cannot read it ({str(error).splitlines()[0]}); "
-                        "allowed: a glob of *, ? and complete [...] sets") from None
+        raise SpecError(
+            source,
+            f"{field}.{key}",
+            f"OpenColorIO cannot read it ({str(error).splitlines()[0]}); "
+            "allowed: a glob of *, ? and complete [...] sets",
+        ) from None
 
 
 def _check_regex(rule: FileRule, source: str, field: str) -> None:
@@ -658,8 +861,12 @@ def _check_regex(rule: FileRule, source: str, field: str) -> None:
     try:
         ocio.FileRules().insertRule(0, "check", "check", rule.regex)
     except Exception as error:  # PyOpenColorIO.Exception
-        raise SpecError(source, f"{field}.regex", f"OpenColorIO cannot read it ({str(error).splitlines()[0]}); "
-                        "allowed: a non-empty ECMAScript regular expression") from None
+        raise SpecError(
+            source,
+            f"{field}.regex",
+            f"OpenColorIO cannot read it ({str(error).splitlines()[0]}); "
+            "allowed: a non-empty ECMAScript regular expression",
+        ) from None
 
 
 def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]:
@@ -677,36 +884,60 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
         if "regex" in values:
             glob = next((k for k in ("pattern", "extension") if k in values), None)
             if glob:
-                raise SpecError(source, f"{field}.{glob}", "a rule matches by its regex or by pattern and extension, "
-                                "not both; allowed: regex alone, or pattern and extension")
+                raise SpecError(
+                    source,
+                    f"{field}.{glob}",
+                    "a rule matches by its regex or by pattern and extension, "
+                    "not both; allowed: regex alone, or pattern and extension",
+                )
             values.update(pattern="", extension="")
         rule = FileRule(**values)
         labels.label(rule.name, source, f"{field}.name", context=False)
         empty = next((k for k in ("pattern", "extension") if k in table and getattr(rule, k) == ""), None)
         if empty:
-            raise SpecError(source, f"{field}.{empty}", "empty, which OCIO refuses; allowed: a glob ('*' matches "
-                            "every file), or the key left out")
+            raise SpecError(
+                source,
+                f"{field}.{empty}",
+                "empty, which OCIO refuses; allowed: a glob ('*' matches every file), or the key left out",
+            )
         if rule.extension.startswith("."):
-            raise SpecError(source, f"{field}.extension", f"{rule.extension!r} starts with a dot, and OCIO puts one "
-                            f"before the extension, so the rule would match only names ending in "
-                            f"'.{rule.extension}'; allowed: the extension without its dot, {rule.extension[1:]!r}")
+            raise SpecError(
+                source,
+                f"{field}.extension",
+                f"{rule.extension!r} starts with a dot, and OCIO puts one "
+                f"before the extension, so the rule would match only names ending in "
+                f"'.{rule.extension}'; allowed: the extension without its dot, {rule.extension[1:]!r}",
+            )
         if "regex" in table:
             _check_regex(rule, source, field)
         else:
             _check_glob(rule, source, field)
         if rule.name.lower() == "colorspacenamepathsearch":
-            raise SpecError(source, f"{field}.name", "OCIO reserves 'ColorSpaceNamePathSearch' for its rule that "
-                            "finds a colour space's name in the file path, which takes no colour_space; allowed: "
-                            "another name")
+            raise SpecError(
+                source,
+                f"{field}.name",
+                "OCIO reserves 'ColorSpaceNamePathSearch' for its rule that "
+                "finds a colour space's name in the file path, which takes no colour_space; allowed: "
+                "another name",
+            )
         if rule.name.lower() in (r.name.lower() for r in rules):
-            raise SpecError(source, f"{field}.name", f"{rule.name!r} names an earlier rule too; allowed: one rule a name")
+            raise SpecError(
+                source, f"{field}.name", f"{rule.name!r} names an earlier rule too; allowed: one rule a name"
+            )
         matching = next((k for k in ("pattern", "extension", "regex") if k in table), None)
         if rule.name == "Default" and matching:
-            raise SpecError(source, f"{field}.{matching}", "the Default rule matches every file; allowed: name and "
-                            "colour_space alone")
+            raise SpecError(
+                source,
+                f"{field}.{matching}",
+                "the Default rule matches every file; allowed: name and colour_space alone",
+            )
         if rule.colour_space.lower() not in names:
-            raise SpecError(source, f"{field}.colour_space", f"{rule.colour_space!r} is not among the colour spaces; "
-                            "allowed: a colour space, display or role of the config")
+            raise SpecError(
+                source,
+                f"{field}.colour_space",
+                f"{rule.colour_space!r} is not among the colour spaces; "
+                "allowed: a colour space, display or role of the config",
+            )
         rules.append(rule)
     if not rules or rules[-1].name != "Default":
         raise SpecError(source, "file_rule", "the last file rule must be named 'Default'")

@@ -19,8 +19,10 @@ DISPLAY_REFERENCE = "CIE XYZ-D65 - Display-referred"
 DISPLAY_REFERENCE_ALIASES = ("cie_xyz_d65_display", "lin_ciexyzd65_display")
 #: The view that shows data unchanged: it has no display-view space.
 RAW_VIEW = "Raw"
-_GENERATED = ("the build names the display reference, each display, each role and, with display_view_spaces, "
-              "each '<view> - <display>'")
+_GENERATED = (
+    "the build names the display reference, each display, each role and, with display_view_spaces, "
+    "each '<view> - <display>'"
+)
 
 
 def display_view_space(view: str, display: str) -> str:
@@ -39,8 +41,9 @@ class Owner:
     space: str = ""
 
 
-def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, source: str,
-              spec_roles=()) -> dict[str, Owner]:
+def generated(
+    displays: tuple[Display, ...], display_view_spaces: bool, roles, source: str, spec_roles=()
+) -> dict[str, Owner]:
     """Every name the build gives beside the spec's colour spaces (lower case) and its owner.
 
     A name taken twice is an error naming the field that came second: the display reference
@@ -69,8 +72,15 @@ def generated(displays: tuple[Display, ...], display_view_spaces: bool, roles, s
         for j, view in enumerate(display.views):
             if view != RAW_VIEW:
                 space = display_view_space(view, display.name)
-                add(space, Owner(f"display[{i}].views[{j}]", f"the generated display-view colour space of view "
-                                 f"{view!r} on display[{i}] (display_view_spaces = true)", space))
+                add(
+                    space,
+                    Owner(
+                        f"display[{i}].views[{j}]",
+                        f"the generated display-view colour space of view "
+                        f"{view!r} on display[{i}] (display_view_spaces = true)",
+                        space,
+                    ),
+                )
     for role in dict.fromkeys(spec_roles):
         add(role, Owner(f"roles.{role}", f"the role {role!r}"))
     return taken
@@ -95,10 +105,15 @@ def check_free(library_spaces, custom_spaces, taken: dict[str, Owner], source: s
         for name in (space.name, *space.aliases):
             if name.lower() in taken:
                 owner = taken[name.lower()]
-                raise SpecError(source, owner.field or "colour_spaces", f"{name!r} names the library colour space "
-                                f"{space.name!r} as well as {owner.what}; allowed: a name no colour space uses")
+                raise SpecError(
+                    source,
+                    owner.field or "colour_spaces",
+                    f"{name!r} names the library colour space "
+                    f"{space.name!r} as well as {owner.what}; allowed: a name no colour space uses",
+                )
 
 
 def _taken(source: str, field: str, name: str, taken: dict[str, Owner]) -> SpecError:
-    return SpecError(source, field, f"{name!r} is taken by {taken[name.lower()].what}; allowed: a name of its own "
-                     f"({_GENERATED})")
+    return SpecError(
+        source, field, f"{name!r} is taken by {taken[name.lower()].what}; allowed: a name of its own ({_GENERATED})"
+    )

@@ -12,6 +12,7 @@ import dataclasses
 import json
 import math
 from pathlib import Path
+from typing import ClassVar
 
 import numpy as np
 
@@ -21,8 +22,10 @@ from generator.spec import fields
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
 FILENAME = "ocioforge-spec.json"
-_CURVE_TYPES = {cls.__name__: cls for cls in (transfer.Linear, transfer.Power, transfer.PiecewisePower,
-                                              transfer.LogCamera, transfer.Tabulated)}
+_CURVE_TYPES = {
+    cls.__name__: cls
+    for cls in (transfer.Linear, transfer.Power, transfer.PiecewisePower, transfer.LogCamera, transfer.Tabulated)
+}
 
 
 def _curve_to_json(curve) -> dict:
@@ -73,8 +76,14 @@ def loads(text: str, source: str = FILENAME) -> Spec:
 class _Reader:
     """Reads the stored JSON back into records, every value checked as it is read."""
 
-    KINDS = {str: "a string", bool: "true or false", int: "an integer", float: "a finite number", list: "a list",
-             dict: "an object"}
+    KINDS: ClassVar[dict] = {
+        str: "a string",
+        bool: "true or false",
+        int: "an integer",
+        float: "a finite number",
+        list: "a list",
+        dict: "an object",
+    }
 
     def __init__(self, source: str):
         self.source = source
@@ -103,7 +112,9 @@ class _Reader:
         """A list of at least ``least`` values, each read by ``read(value, field)``."""
         values = self.typed(value, list, field)
         if len(values) < least:
-            raise self.fail(field, f"expected {least} {'entry' if least == 1 else 'entries'} or more, got {len(values)}")
+            raise self.fail(
+                field, f"expected {least} {'entry' if least == 1 else 'entries'} or more, got {len(values)}"
+            )
         return tuple(read(v, f"{field}[{i}]") for i, v in enumerate(values))
 
     def strings(self, value, field: str) -> tuple[str, ...]:
@@ -127,8 +138,14 @@ class _Reader:
         if d["adaptation"] is not None and self.typed(d["adaptation"], str, f"{field}.adaptation") not in CATS:
             raise self.fail(f"{field}.adaptation", f"unknown {d['adaptation']!r}")
         adapting = None if d["adapting_white"] is None else self.white(d["adapting_white"], f"{field}.adapting_white")
-        gamut = Gamut(self.typed(d["name"], str, f"{field}.name"), primaries, white, adapting,
-                      self.typed(d["citation"], str, f"{field}.citation"), d["adaptation"])
+        gamut = Gamut(
+            self.typed(d["name"], str, f"{field}.name"),
+            primaries,
+            white,
+            adapting,
+            self.typed(d["citation"], str, f"{field}.citation"),
+            d["adaptation"],
+        )
         with np.errstate(all="ignore"):
             if not np.all(np.isfinite(gamut.rgb_to_xyz)):  # a primary at y = 0 is XYZ's alone
                 raise self.fail(f"{field}.primaries", "they give no RGB to XYZ matrix")
@@ -174,11 +191,17 @@ class _Reader:
         if gamut is None and not (is_data or special):
             raise self.fail(f"{field}.gamut", "a colour space that is not data has no gamut")
         return ColourSpace(
-            name=self.typed(d["name"], str, f"{field}.name"), gamut=gamut, curve=self.curve(d["curve"], f"{field}.curve"),
+            name=self.typed(d["name"], str, f"{field}.name"),
+            gamut=gamut,
+            curve=self.curve(d["curve"], f"{field}.curve"),
             curve_name=self.typed(d["curve_name"], str, f"{field}.curve_name"),
-            aliases=self.strings(d["aliases"], f"{field}.aliases"), family=self.typed(d["family"], str, f"{field}.family"),
+            aliases=self.strings(d["aliases"], f"{field}.aliases"),
+            family=self.typed(d["family"], str, f"{field}.family"),
             encoding=self.typed(d["encoding"], str, f"{field}.encoding"),
-            description=self.typed(d["description"], str, f"{field}.description"), is_data=is_data, special=special)
+            description=self.typed(d["description"], str, f"{field}.description"),
+            is_data=is_data,
+            special=special,
+        )
 
     def display(self, data, field: str) -> Display:
         from generator.rendering.views import is_aces_name
@@ -186,18 +209,31 @@ class _Reader:
 
         d = self.table(data, [f.name for f in dataclasses.fields(Display)], field)
         views = self.items(d["views"], f"{field}.views", lambda v, f: self.typed(v, str, f), 1)
-        unknown = next((i for i, v in enumerate(views) if v not in VIEWS and v not in COLORIMETRIC_ALIASES
-                        and not is_aces_name(v)), None)
+        unknown = next(
+            (
+                i
+                for i, v in enumerate(views)
+                if v not in VIEWS and v not in COLORIMETRIC_ALIASES and not is_aces_name(v)
+            ),
+            None,
+        )
         if unknown is not None:
             raise self.fail(f"{field}.views[{unknown}]", f"unknown view {views[unknown]!r}")
         peak = self.typed(d["peak"], float, f"{field}.peak")
         if peak <= 0.0:
             raise self.fail(f"{field}.peak", f"{peak:g} is not positive")
         return Display(
-            self.typed(d["name"], str, f"{field}.name"), self.gamut(d["gamut"], f"{field}.gamut"),
-            self.curve(d["eotf"], f"{field}.eotf"), self.typed(d["eotf_name"], str, f"{field}.eotf_name"), views,
-            self.strings(d["aliases"], f"{field}.aliases"), peak, self.typed(d["encoding"], str, f"{field}.encoding"),
-            self.typed(d["description"], str, f"{field}.description"), self.typed(d["absolute"], bool, f"{field}.absolute"))
+            self.typed(d["name"], str, f"{field}.name"),
+            self.gamut(d["gamut"], f"{field}.gamut"),
+            self.curve(d["eotf"], f"{field}.eotf"),
+            self.typed(d["eotf_name"], str, f"{field}.eotf_name"),
+            views,
+            self.strings(d["aliases"], f"{field}.aliases"),
+            peak,
+            self.typed(d["encoding"], str, f"{field}.encoding"),
+            self.typed(d["description"], str, f"{field}.description"),
+            self.typed(d["absolute"], bool, f"{field}.absolute"),
+        )
 
     def pair(self, value, field: str) -> tuple[str, str]:
         if not isinstance(value, list) or len(value) != 2:
@@ -205,8 +241,11 @@ class _Reader:
         return tuple(self.typed(v, str, f"{field}[{i}]") for i, v in enumerate(value))
 
     def rule(self, value, field: str) -> FileRule:
-        keys = ["name", "colour_space", *(["regex"] if isinstance(value, dict) and "regex" in value
-                                          else ["pattern", "extension"])]
+        keys = [
+            "name",
+            "colour_space",
+            *(["regex"] if isinstance(value, dict) and "regex" in value else ["pattern", "extension"]),
+        ]
         d = {k: self.typed(v, str, f"{field}.{k}") for k, v in self.table(value, keys, field).items()}
         if "regex" in d and not d["regex"]:
             raise self.fail(f"{field}.regex", "empty")
@@ -246,15 +285,20 @@ class _Reader:
         if self.typed(d["chromatic_adaptation"], str, "chromatic_adaptation") not in CATS:
             raise self.fail("chromatic_adaptation", f"unknown chromatic adaptation {d['chromatic_adaptation']!r}")
         spec = Spec(
-            name=self.typed(d["name"], str, "name"), description=self.typed(d["description"], str, "description"),
-            ocio_version=self.version(d["ocio_version"]), scene_reference=self.typed(d["scene_reference"], str,
-                                                                                       "scene_reference"),
+            name=self.typed(d["name"], str, "name"),
+            description=self.typed(d["description"], str, "description"),
+            ocio_version=self.version(d["ocio_version"]),
+            scene_reference=self.typed(d["scene_reference"], str, "scene_reference"),
             chromatic_adaptation=d["chromatic_adaptation"],
             colour_spaces=self.items(d["colour_spaces"], "colour_spaces", self.space, 1),
             displays=self.items(d["displays"], "displays", self.display, 1),
-            roles=self.items(d["roles"], "roles", self.pair), file_rules=self.items(d["file_rules"], "file_rules", self.rule),
+            roles=self.items(d["roles"], "roles", self.pair),
+            file_rules=self.items(d["file_rules"], "file_rules", self.rule),
             display_view_spaces=self.typed(d["display_view_spaces"], bool, "display_view_spaces"),
-            inactive=self.strings(d["inactive"], "inactive"), source=self.typed(d["source"], str, "source"), rgc=rgc)
+            inactive=self.strings(d["inactive"], "inactive"),
+            source=self.typed(d["source"], str, "source"),
+            rgc=rgc,
+        )
         self.check_names(spec)
         return spec
 
@@ -267,14 +311,18 @@ class _Reader:
         from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces, generated
 
         spaces = {n.lower() for n in spec.space_names}
-        targets = spaces | {n.lower() for d in spec.displays for n in (d.name, *d.aliases)} | {DISPLAY_REFERENCE.lower()}
+        targets = (
+            spaces | {n.lower() for d in spec.displays for n in (d.name, *d.aliases)} | {DISPLAY_REFERENCE.lower()}
+        )
         refers = [("scene_reference", spec.scene_reference, spaces)]
         taken = generated(spec.displays, spec.display_view_spaces, (), self.source)
         every = set(colour_spaces(spec.colour_spaces, taken))  # aliases too (older builds)
         refers += [(f"inactive[{i}]", name, every) for i, name in enumerate(spec.inactive)]
         refers += [(f"roles[{i}][1]", target, targets) for i, (_, target) in enumerate(spec.roles)]
-        refers += [(f"file_rules[{i}].colour_space", r.colour_space, targets | {role for role, _ in spec.roles})
-                   for i, r in enumerate(spec.file_rules)]
+        refers += [
+            (f"file_rules[{i}].colour_space", r.colour_space, targets | {role for role, _ in spec.roles})
+            for i, r in enumerate(spec.file_rules)
+        ]
         for field, name, names in refers:
             if name.lower() not in names:
                 raise self.fail(field, f"{name!r} names nothing the spec defines")
@@ -303,8 +351,12 @@ def read(path: Path) -> Spec:
     try:
         text = path.read_text(encoding="utf-8")
     except OSError:
-        raise SpecError(str(path), "-", "no resolved spec here; allowed: a build's config.ocio or the "
-                        f"{FILENAME} beside it (ocioforge build writes both)") from None
+        raise SpecError(
+            str(path),
+            "-",
+            "no resolved spec here; allowed: a build's config.ocio or the "
+            f"{FILENAME} beside it (ocioforge build writes both)",
+        ) from None
     except UnicodeDecodeError:
         raise SpecError(str(path), "-", "not UTF-8 text; allowed: the file a build writes (build again)") from None
     return loads(text, str(path))

@@ -108,7 +108,7 @@ class Spec:
     inactive: tuple[str, ...] = ()
     source: str = "<default>"
     #: The ACES Reference Gamut Compression's parameters, for every RGC view and bake.
-    rgc: RGCParams = RGCParams()
+    rgc: RGCParams = RGCParams()  # noqa: RUF009 (frozen, shared safely)
     #: Names of the spec's colour spaces a load for one command left out (see
     #: :func:`generator.spec.load.load`'s ``keep``): offered when a name is mistyped, never built.
     left_out: tuple[str, ...] = field(default=(), compare=False, metadata={"resolved": False})

@@ -145,8 +145,9 @@ def hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
     return (np.nan_to_num(total) * peak).reshape(linear.shape)
 
 
-def mapped_allowance(src: paths.Endpoint, back: np.ndarray, display: Display, view: str, codes: np.ndarray,
-                     expected: np.ndarray) -> np.ndarray | None:
+def mapped_allowance(
+    src: paths.Endpoint, back: np.ndarray, display: Display, view: str, codes: np.ndarray, expected: np.ndarray
+) -> np.ndarray | None:
     """:func:`float32_allowance` for a gamut-mapped view: the float32 shift of the display's
     linear values (and the mapping operator's own departure) applied to the mapped light,
     which the display encoding then meets where it is: a mapping can move a channel from
@@ -173,8 +174,10 @@ def _encoded_shift(display: Display, expected: np.ndarray, shift: np.ndarray) ->
     either way, within the display's range."""
     with np.errstate(all="ignore"):
         light = np.clip(reference.display_decode(display, expected), 0.0, display.clip_high)
-        moved = [reference.display_encode(display, np.clip(light + sign * shift, 0.0, display.clip_high))
-                 for sign in (1.0, -1.0)]
+        moved = [
+            reference.display_encode(display, np.clip(light + sign * shift, 0.0, display.clip_high))
+            for sign in (1.0, -1.0)
+        ]
         allowance = np.maximum(np.abs(moved[0] - expected), np.abs(moved[1] - expected))
     return np.where(np.isfinite(allowance), allowance, 0.0)
 
@@ -193,8 +196,9 @@ def view_allowance(spec: Spec, src, back, display, view, codes, expected, clip_e
     return mapped_allowance(src, back, display, view, codes, expected)
 
 
-def lattice_allowance(spec: Spec, src: paths.Endpoint, back: np.ndarray, display: Display, method: str,
-                      codes: np.ndarray) -> np.ndarray | None:
+def lattice_allowance(
+    spec: Spec, src: paths.Endpoint, back: np.ndarray, display: Display, method: str, codes: np.ndarray
+) -> np.ndarray | None:
     """For a view defined by its lattice (:func:`paths.lattice_codes`): the float32 shift of
     the display's linear values (:func:`float32_shift`) carried through the file with the
     file's own rounding (:func:`lattice_file_allowance`). The file's pre-shaper is the
@@ -217,8 +221,9 @@ def lattice_allowance(spec: Spec, src: paths.Endpoint, back: np.ndarray, display
 _BOX = np.array([d for d in np.ndindex(3, 3, 3) if d != (1, 1, 1)], dtype=np.float64) - 1.0
 
 
-def lattice_file_allowance(spec: Spec, display: Display, method: str, linear: np.ndarray,
-                           shift: np.ndarray | None = None) -> np.ndarray:
+def lattice_file_allowance(
+    spec: Spec, display: Display, method: str, linear: np.ndarray, shift: np.ndarray | None = None
+) -> np.ndarray:
     """How far float32 evaluation may move the codes of a view file defined by its lattice at
     display-linear ``linear`` (1.0 = 100 cd/m²): each lattice coordinate may move by what the
     input's ``shift`` (if any) moves it, plus its float32 rounding (FLOAT32_MATRIX_ROUNDINGS u
@@ -239,11 +244,14 @@ def lattice_file_allowance(spec: Spec, display: Display, method: str, linear: np
 
     with np.errstate(all="ignore"):
         start = coordinates(lat, linear / peak).reshape(linear.shape)
-        reach = tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF + \
-            index_rounding(lat, linear / peak).reshape(linear.shape)
+        reach = tolerances.FLOAT32_MATRIX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF + index_rounding(
+            lat, linear / peak
+        ).reshape(linear.shape)
         if shift is not None:
-            moves = [np.abs(coordinates(lat, (linear + sign * np.nan_to_num(shift)) / peak).reshape(linear.shape) - start)
-                     for sign in (1.0, -1.0)]
+            moves = [
+                np.abs(coordinates(lat, (linear + sign * np.nan_to_num(shift)) / peak).reshape(linear.shape) - start)
+                for sign in (1.0, -1.0)
+            ]
             reach = reach + np.maximum(*moves)
         base, worst = codes(start), np.zeros_like(linear)
         for direction in _BOX:
@@ -288,8 +296,9 @@ def pq_table_departure(curve, size: int, light: np.ndarray) -> np.ndarray:
     return np.nan_to_num(np.maximum(np.abs(inverse - exact), np.abs(fast - exact)))
 
 
-def _pq_builtin_departure(spec: Spec, owner: str, curve_name: str, curve, decode, top: float,
-                          expected: np.ndarray) -> np.ndarray | None:
+def _pq_builtin_departure(
+    spec: Spec, owner: str, curve_name: str, curve, decode, top: float, expected: np.ndarray
+) -> np.ndarray | None:
     """:func:`pq_table_departure` at codes ``expected`` of the curve ``owner`` encodes with,
     over the libraries that read the config, where the ST-2084 builtin expresses it (light
     from ``decode``, clipped to [0, ``top``]); None otherwise."""
@@ -308,8 +317,15 @@ def builtin_encoding_allowance(spec: Spec, display: Display, expected: np.ndarra
     """The code departure of OCIO's own evaluation of ``display``'s encoding at codes ``expected``,
     per sample and channel, over the libraries that read the config (:func:`pq_table_departure`
     for a display the ST-2084 builtin encodes); None when the encoding is exact."""
-    return _pq_builtin_departure(spec, display.name, display.eotf_name, display.eotf,
-                                 lambda codes: reference.display_decode(display, codes), display.clip_high, expected)
+    return _pq_builtin_departure(
+        spec,
+        display.name,
+        display.eotf_name,
+        display.eotf,
+        lambda codes: reference.display_decode(display, codes),
+        display.clip_high,
+        expected,
+    )
 
 
 def scene_encoding_allowance(spec: Spec, space, expected: np.ndarray) -> np.ndarray | None:
@@ -321,15 +337,19 @@ def scene_encoding_allowance(spec: Spec, space, expected: np.ndarray) -> np.ndar
     return _pq_builtin_departure(spec, space.name, space.curve_name, space.curve, space.curve.decode, PQ_PEAK, expected)
 
 
-def with_encoding(allowance: np.ndarray | None, spec: Spec, display: Display | None,
-                  expected: np.ndarray | None, space=None) -> np.ndarray | None:
+def with_encoding(
+    allowance: np.ndarray | None, spec: Spec, display: Display | None, expected: np.ndarray | None, space=None
+) -> np.ndarray | None:
     """``allowance`` plus :func:`builtin_encoding_allowance` for a check whose output is
     ``display``'s codes ``expected``, or :func:`scene_encoding_allowance` for one whose output
     is scene ``space``'s codes (unchanged otherwise)."""
     if expected is None or (display is None and space is None):
         return allowance
-    encoding = (builtin_encoding_allowance(spec, display, expected) if display is not None
-                else scene_encoding_allowance(spec, space, expected))
+    encoding = (
+        builtin_encoding_allowance(spec, display, expected)
+        if display is not None
+        else scene_encoding_allowance(spec, space, expected)
+    )
     if encoding is None:
         return allowance
     return encoding if allowance is None else allowance + encoding

@@ -16,9 +16,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from generator.verify.checks import VIEW, Check
-from generator.verify.paths import RAW
 from generator.verify.hosts import TOO_NEW, NotRunnable, read_output, run_host, write_inputs
 from generator.verify.judge import Output
+from generator.verify.paths import RAW
 
 SCRIPT = Path(__file__).with_name("blender_job.py")
 
@@ -67,13 +67,22 @@ class BlenderEngine:
         unique = list(sources.values())
         inputs = dict(zip(sources, write_inputs(unique, workdir, "blender")))
         outputs = [workdir / f"blender-{i:04d}-out.png" for i in range(len(checks))]
-        jobs = [{"input": str(inputs[(c.src, id(c.probes))]), "src": c.src, "display": c.display, "view": c.view,
-                 "output": str(out)} for c, out in zip(checks, outputs)]
+        jobs = [
+            {
+                "input": str(inputs[(c.src, id(c.probes))]),
+                "src": c.src,
+                "display": c.display,
+                "view": c.view,
+                "output": str(out),
+            }
+            for c, out in zip(checks, outputs)
+        ]
         request, status_path = workdir / "blender-jobs.json", workdir / "blender-status.json"
         request.write_text(json.dumps({"jobs": jobs, "status": str(status_path)}), encoding="utf-8")
         env = {**os.environ, "OCIO": str(config)}  # OCIO's overrides set aside by verify()
-        result = run_host([self.executable(), "-b", "--factory-startup", "--python", str(SCRIPT), "--",
-                           str(request)], env)
+        result = run_host(
+            [self.executable(), "-b", "--factory-startup", "--python", str(SCRIPT), "--", str(request)], env
+        )
         if TOO_NEW in result.stdout + result.stderr:
             raise NotRunnable(next(line for line in (result.stdout + result.stderr).splitlines() if TOO_NEW in line))
         try:
@@ -81,5 +90,7 @@ class BlenderEngine:
         except (OSError, ValueError):
             message = (result.stderr or result.stdout or "no output").strip().splitlines()[-1]
             status = {str(out): f"Blender did not finish: {message}" for out in outputs}
-        return [[read_output(out, c, "PNG uint16", "" if status.get(str(out)) == "ok" else status.get(str(out), ""))]
-                for c, out in zip(checks, outputs)]
+        return [
+            [read_output(out, c, "PNG uint16", "" if status.get(str(out)) == "ok" else status.get(str(out), ""))]
+            for c, out in zip(checks, outputs)
+        ]

@@ -16,10 +16,10 @@ import numpy as np
 
 from generator import tolerances
 from generator.colorimetry import reference
+from generator.spec.schema import Display, Spec
 from generator.verify import paths, probes
 from generator.verify.allowance import determinate, float32_allowance, view_allowance, with_encoding
 from generator.verify.probes import Family, Probes, Sizes
-from generator.spec.schema import Display, Spec
 
 TO_REFERENCE, FROM_REFERENCE, VIEW, LUT = "to reference", "from reference", "view", "LUT file"
 KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
@@ -121,19 +121,21 @@ def _band(end: paths.Endpoint | None, codes: np.ndarray, curve=None) -> np.ndarr
     return keep
 
 
-def _judging(out: paths.Endpoint | None, display: Display | None, baked_src: paths.Endpoint | None,
-             view: str = "") -> dict:
+def _judging(
+    out: paths.Endpoint | None, display: Display | None, baked_src: paths.Endpoint | None, view: str = ""
+) -> dict:
     """Metric, tolerance, scale and target for an output kind (a baked source, a view)."""
     method = paths.view_method(view) if view else None
     if view and paths.is_aces13(view):
         # OCIO's ACES 1.x builtins depart from the CTL (black's offset, the red modifier's
         # saturation, rescaled tone-curve slopes): held to what was measured against them.
-        return dict(metric=ITP if display.is_hdr else CODES, target=display,
-                    tolerance=tolerances.ACES13_OCIO_RED_DARK_DELTA_E_ITP if display.is_hdr
-                    else tolerances.ACES13_OCIO_CODES)
+        return dict(
+            metric=ITP if display.is_hdr else CODES,
+            target=display,
+            tolerance=tolerances.ACES13_OCIO_RED_DARK_DELTA_E_ITP if display.is_hdr else tolerances.ACES13_OCIO_CODES,
+        )
     if method is not None and method not in paths.ANALYTIC_METHODS:
-        return dict(metric=ITP if display.is_hdr else CODES, tolerance=view_lut_tolerance(display),
-                    target=display)
+        return dict(metric=ITP if display.is_hdr else CODES, tolerance=view_lut_tolerance(display), target=display)
     if baked_src is not None and baked_src.baked and (out is None or out.output == paths.LINEAR):
         gain = float(np.abs(baked_src.matrix).sum(1).max())
         return dict(metric=COLOUR, tolerance=tolerances.BAKED_CURVE_RELATIVE, scale=gain)
@@ -172,8 +174,13 @@ def _representable(end: paths.Endpoint, ref: np.ndarray, codes: np.ndarray) -> n
         return _inside(codes, end.code_range) & (colour_relative_error(back, ref) <= tolerances.REPRESENTABLE_RELATIVE)
 
 
-def _keep(src: paths.Endpoint | None, dst: paths.Endpoint | None, display: Display | None, inputs: np.ndarray,
-          expected: np.ndarray | None) -> np.ndarray | None:
+def _keep(
+    src: paths.Endpoint | None,
+    dst: paths.Endpoint | None,
+    display: Display | None,
+    inputs: np.ndarray,
+    expected: np.ndarray | None,
+) -> np.ndarray | None:
     """The samples compared: away from baked discontinuities; for bounded encodings (ADX)
     valid inputs inside the code range and colours it represents; above
     HLG_BUILTIN_BLACK for HLG displays."""
@@ -201,28 +208,58 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
     for end in ends.values():
         if end.decode is not None:
             inputs = input_probes(end, scene, sizes)
-            expected = _evaluate(lambda v: ref.encode(end.decode(v)), inputs.values)
-            out.append(Check(TO_REFERENCE, end.name, end.name, ref.name, probes=inputs, expected=expected,
-                             output=ref.output, keep=_keep(end, None, None, inputs.values, expected),
-                             allowance=_input_rounding(end, ref, inputs.values), **_judging(ref, None, end)))
-        decoded = [] if end.decode is None else [Family(f.name, _evaluate(end.decode, f.values), f.notes) for f in
-                                                 probes.code_families(*end.code_range, sizes)]
+            expected = _evaluate(lambda v: ref.encode(end.decode(v)), inputs.values)  # noqa: B023 (called at once)
+            out.append(
+                Check(
+                    TO_REFERENCE,
+                    end.name,
+                    end.name,
+                    ref.name,
+                    probes=inputs,
+                    expected=expected,
+                    output=ref.output,
+                    keep=_keep(end, None, None, inputs.values, expected),
+                    allowance=_input_rounding(end, ref, inputs.values),
+                    **_judging(ref, None, end),
+                )
+            )
+        decoded = (
+            []
+            if end.decode is None
+            else [
+                Family(f.name, _evaluate(end.decode, f.values), f.notes)
+                for f in probes.code_families(*end.code_range, sizes)
+            ]
+        )
         inputs = Probes(tuple(decoded) + scene)
         expected, problem = _expected(end.encode, inputs.values, f"evaluation of {end.name!r}")
         allowance = None
         if expected is not None and end.output in (paths.CODE, paths.DISPLAY):
             if end.view:
-                allowance = view_allowance(spec, ref, end.matrix, end.display, end.view, inputs.values, expected,
-                                            end.encode)
+                allowance = view_allowance(
+                    spec, ref, end.matrix, end.display, end.view, inputs.values, expected, end.encode
+                )
             else:
                 allowance = float32_allowance(ref, end.matrix, end.encode, inputs.values)
             allowance = with_encoding(allowance, spec, end.display, expected, _scene_space(spec, end))
         keep = _keep(None, end, end.display, inputs.values, expected)
         if end.valid is not None and keep is not None:
             keep &= determinate(ref, end, inputs.values)
-        out.append(Check(FROM_REFERENCE, end.name, ref.name, end.name, probes=inputs, expected=expected,
-                         output=end.output, problem=problem, allowance=allowance, keep=keep,
-                         **_judging(end, end.display, None, end.view)))
+        out.append(
+            Check(
+                FROM_REFERENCE,
+                end.name,
+                ref.name,
+                end.name,
+                probes=inputs,
+                expected=expected,
+                output=end.output,
+                problem=problem,
+                allowance=allowance,
+                keep=keep,
+                **_judging(end, end.display, None, end.view),
+            )
+        )
     return out
 
 
@@ -279,22 +316,45 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
             for src, inputs in sources:
                 common = dict(probes=inputs, display=display.name, view=view)
                 if view == paths.RAW:
-                    out.append(Check(VIEW, f"{display.name} / {view}", src.name, output=paths.DATA,
-                                     expected=inputs.values.copy(), **common))
+                    out.append(
+                        Check(
+                            VIEW,
+                            f"{display.name} / {view}",
+                            src.name,
+                            output=paths.DATA,
+                            expected=inputs.values.copy(),
+                            **common,
+                        )
+                    )
                     continue
                 through = None if fn is None else (lambda v, f=fn, s=src: f(s.decode(v)))
                 expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
-                allowance = with_encoding(view_allowance(spec, src, back, display, view, inputs.values, expected, clip),
-                                          spec, display, expected)
-                out.append(Check(VIEW, f"{display.name} / {view}", src.name, output=paths.DISPLAY, expected=expected,
-                                 problem=problem, allowance=allowance,
-                                 keep=_keep(src, None, display, inputs.values, expected), **common,
-                                 **_judging(None, display, None, view)))
+                allowance = with_encoding(
+                    view_allowance(spec, src, back, display, view, inputs.values, expected, clip),
+                    spec,
+                    display,
+                    expected,
+                )
+                out.append(
+                    Check(
+                        VIEW,
+                        f"{display.name} / {view}",
+                        src.name,
+                        output=paths.DISPLAY,
+                        expected=expected,
+                        problem=problem,
+                        allowance=allowance,
+                        keep=_keep(src, None, display, inputs.values, expected),
+                        **common,
+                        **_judging(None, display, None, view),
+                    )
+                )
     return out
 
 
-def conversion_check(spec: Spec, ends: dict, inputs: Probes, src: str, dst: str = "", display: str = "",
-                     view: str = "") -> Check:
+def conversion_check(
+    spec: Spec, ends: dict, inputs: Probes, src: str, dst: str = "", display: str = "", view: str = ""
+) -> Check:
     """The check of one conversion a config runs on ``inputs`` (``ocioforge convert``'s frames):
     ``src`` to the colour space ``dst``, or to ``display`` through ``view`` (names as the config
     spells them), judged as the space and view checks judge theirs: the same expectation, metric,
@@ -306,25 +366,56 @@ def conversion_check(spec: Spec, ends: dict, inputs: Probes, src: str, dst: str 
     target = _endpoint(spec, ends, dst)
     if source is None or target is None or paths.DATA in (source.output, target.output) or source is target:
         identity = source is not None and target is not None
-        return Check(TO_REFERENCE, f"{src} -> {dst}", src, dst, probes=inputs, output=paths.DATA,
-                     expected=values.copy() if identity else None,
-                     problem="" if identity else "the stored spec has no such colour space")
-    expected, problem = _expected(None if source.decode is None or target.encode is None else
-                                  (lambda v: target.encode(source.decode(v))), values, f"path {src!r} -> {dst!r}")
+        return Check(
+            TO_REFERENCE,
+            f"{src} -> {dst}",
+            src,
+            dst,
+            probes=inputs,
+            output=paths.DATA,
+            expected=values.copy() if identity else None,
+            problem="" if identity else "the stored spec has no such colour space",
+        )
+    expected, problem = _expected(
+        None if source.decode is None or target.encode is None else (lambda v: target.encode(source.decode(v))),
+        values,
+        f"path {src!r} -> {dst!r}",
+    )
     allowance = None
     if expected is not None and target.output in (paths.CODE, paths.DISPLAY):
-        allowance = (view_allowance(spec, source, target.matrix, target.display, target.view, values, expected,
-                                    ends[target.display.name].encode) if target.view
-                     else float32_allowance(source, target.matrix, target.encode, values))
+        allowance = (
+            view_allowance(
+                spec,
+                source,
+                target.matrix,
+                target.display,
+                target.view,
+                values,
+                expected,
+                ends[target.display.name].encode,
+            )
+            if target.view
+            else float32_allowance(source, target.matrix, target.encode, values)
+        )
         allowance = with_encoding(allowance, spec, target.display, expected, _scene_space(spec, target))
     elif expected is not None and source.baked:
         allowance = _input_rounding(source, target, values)
     keep = _keep(source, target, target.display, values, expected)
     if target.valid is not None and keep is not None:
         keep &= determinate(source, target, values)
-    return Check(TO_REFERENCE, f"{src} -> {dst}", src, dst, probes=inputs, expected=expected, output=target.output,
-                 problem=problem, allowance=allowance, keep=keep,
-                 **_judging(target, target.display, source, target.view))
+    return Check(
+        TO_REFERENCE,
+        f"{src} -> {dst}",
+        src,
+        dst,
+        probes=inputs,
+        expected=expected,
+        output=target.output,
+        problem=problem,
+        allowance=allowance,
+        keep=keep,
+        **_judging(target, target.display, source, target.view),
+    )
 
 
 def _view_conversion(spec: Spec, ends: dict, source, inputs: Probes, display: str, view: str) -> Check:
@@ -332,20 +423,37 @@ def _view_conversion(spec: Spec, ends: dict, source, inputs: Probes, display: st
     common = dict(probes=inputs, display=display, view=view)
     target = next((d for d in spec.displays if d.name == display), None)
     if source is None or target is None:
-        return Check(VIEW, f"{display} / {view}", "" if source is None else source.name, output=paths.DISPLAY,
-                     problem="the stored spec has no such colour space or display", **common)
+        return Check(
+            VIEW,
+            f"{display} / {view}",
+            "" if source is None else source.name,
+            output=paths.DISPLAY,
+            problem="the stored spec has no such colour space or display",
+            **common,
+        )
     if view == paths.RAW or source.output == paths.DATA:
-        return Check(VIEW, f"{display} / {view}", source.name, output=paths.DATA, expected=inputs.values.copy(),
-                     **common)
+        return Check(
+            VIEW, f"{display} / {view}", source.name, output=paths.DATA, expected=inputs.values.copy(), **common
+        )
     fn = paths.view_function(spec, target, view)
     through = None if fn is None or source.decode is None else (lambda v: fn(source.decode(v)))
     expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
     back, clip = ends[display].matrix, ends[display].encode
-    allowance = with_encoding(view_allowance(spec, source, back, target, view, inputs.values, expected, clip),
-                              spec, target, expected)
-    return Check(VIEW, f"{display} / {view}", source.name, output=paths.DISPLAY, expected=expected, problem=problem,
-                 allowance=allowance, keep=_keep(source, None, target, inputs.values, expected), **common,
-                 **_judging(None, target, None, view))
+    allowance = with_encoding(
+        view_allowance(spec, source, back, target, view, inputs.values, expected, clip), spec, target, expected
+    )
+    return Check(
+        VIEW,
+        f"{display} / {view}",
+        source.name,
+        output=paths.DISPLAY,
+        expected=expected,
+        problem=problem,
+        allowance=allowance,
+        keep=_keep(source, None, target, inputs.values, expected),
+        **common,
+        **_judging(None, target, None, view),
+    )
 
 
 def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
@@ -361,8 +469,11 @@ def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
     if LUT in kinds:
         from generator.verify import lut_checks  # it builds on this module
 
-        out += (lut_checks.lut_checks(spec, sizes) + lut_checks.view_lut_checks(spec, scene, sizes)
-                + lut_checks.aces_lut_checks(spec, sizes))
+        out += (
+            lut_checks.lut_checks(spec, sizes)
+            + lut_checks.view_lut_checks(spec, scene, sizes)
+            + lut_checks.aces_lut_checks(spec, sizes)
+        )
     return out
 
 

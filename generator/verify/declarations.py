@@ -49,13 +49,23 @@ def differences(cfg, spec: Spec) -> list[str]:
             out.append(f"role {role} is {held!r}, the spec's {target!r}")
     out += [f"role {role} is not the spec's" for role in sorted(set(roles) - {r for r, _ in spec.roles})]
     rules = cfg.getFileRules()
-    held_rules = [(rules.getName(i), rules.getPattern(i), rules.getExtension(i), rules.getRegex(i),
-                   _canonical(cfg, rules.getColorSpace(i))) for i in range(rules.getNumEntries())]
+    held_rules = [
+        (
+            rules.getName(i),
+            rules.getPattern(i),
+            rules.getExtension(i),
+            rules.getRegex(i),
+            _canonical(cfg, rules.getColorSpace(i)),
+        )
+        for i in range(rules.getNumEntries())
+    ]
     built = [(r.name, r.pattern, r.extension, r.regex, _canonical(cfg, r.colour_space)) for r in spec.file_rules]
     if held_rules[:-1] != built[:-1] or held_rules[-1][-1] != built[-1][-1]:
         index = next((i for i, (a, b) in enumerate(zip(held_rules, built)) if a != b), min(len(held_rules), len(built)))
-        out.append(f"file rule {index + 1} is {held_rules[index] if index < len(held_rules) else None}, "
-                   f"the spec's {built[index] if index < len(built) else None}")
+        out.append(
+            f"file rule {index + 1} is {held_rules[index] if index < len(held_rules) else None}, "
+            f"the spec's {built[index] if index < len(built) else None}"
+        )
     inactive = set(_names(cfg.getInactiveColorSpaces()))
     if inactive != set(spec.inactive):
         out.append(f"inactive spaces are {sorted(inactive)}, the spec's {sorted(spec.inactive)}")
@@ -75,12 +85,16 @@ def differences(cfg, spec: Spec) -> list[str]:
     from generator.ocio.emit import LUT_FOLDER
 
     if cfg.getSearchPath() != LUT_FOLDER:
-        out.append(f"the search path is {cfg.getSearchPath()!r}, the build's {LUT_FOLDER!r} (the folder beside the "
-                   "config, wherever it is copied)")
+        out.append(
+            f"the search path is {cfg.getSearchPath()!r}, the build's {LUT_FOLDER!r} (the folder beside the "
+            "config, wherever it is copied)"
+        )
     for space in (*spec.colour_spaces, *spec.displays):
         held = cfg.getColorSpace(space.name)
         menu = _menu(space)
-        shown = None if held is None else (held.getFamily(), held.getEncoding(), held.isData(), list(held.getCategories()))
+        shown = (
+            None if held is None else (held.getFamily(), held.getEncoding(), held.isData(), list(held.getCategories()))
+        )
         if held is not None and shown != menu:
             out.append(f"{space.name}'s family, encoding, data flag and categories are {shown}, the spec's {menu}")
         for alias in space.aliases:
@@ -96,8 +110,10 @@ def differences(cfg, spec: Spec) -> list[str]:
         if held is None:
             out.append(f"{built.getName()!r}, which the build writes, is missing")
         elif _declared(held) != _declared(built):
-            out.append(f"{built.getName()}'s family, encoding, data flag, categories and aliases are {_declared(held)}, "
-                       f"the build's {_declared(built)}")
+            out.append(
+                f"{built.getName()}'s family, encoding, data flag, categories and aliases are {_declared(held)}, "
+                f"the build's {_declared(built)}"
+            )
     return out
 
 
@@ -112,19 +128,23 @@ def _additions(cfg, spec: Spec) -> list[str]:
     out = []
     version = (cfg.getMajorVersion(), cfg.getMinorVersion())
     if version != tuple(spec.ocio_version):
-        out.append(f"the config is OCIO {version[0]}.{version[1]}, the spec's {spec.ocio_version[0]}."
-                   f"{spec.ocio_version[1]}")
+        out.append(
+            f"the config is OCIO {version[0]}.{version[1]}, the spec's {spec.ocio_version[0]}.{spec.ocio_version[1]}"
+        )
     rules = cfg.getViewingRules()
     if rules.getNumEntries():
-        out.append(f"viewing rules {[rules.getName(i) for i in range(rules.getNumEntries())]} choose views per "
-                   "image, which the build does not write")
+        out.append(
+            f"viewing rules {[rules.getName(i) for i in range(rules.getNumEntries())]} choose views per "
+            "image, which the build does not write"
+        )
     named = [t.getName() for t in cfg.getNamedTransforms(ocio.NAMEDTRANSFORM_ALL)]
     if named:
         out.append(f"named transforms {named}, which the build does not write, appear in hosts' menus")
     names = list(cfg.getEnvironmentVarNames())
     if names:
-        out.append(f"environment variables {names}, which the build does not write, make what a view reads depend "
-                   "on the shell")
+        out.append(
+            f"environment variables {names}, which the build does not write, make what a view reads depend on the shell"
+        )
     for owner, source in _file_sources(cfg):
         if source != source.strip() or "/" in source or "\\" in source or "$" in source or "%" in source:
             out.append(f"{owner} reads {source!r}, where the build reads a file of its LUT folder by its bare name")

@@ -94,8 +94,12 @@ class OcioEngine:
 
 
 #: The flags OCIO's default set adds to the lossless one, each a possible cause of a difference.
-DEFAULT_EXTRAS = ("OPTIMIZATION_FAST_LOG_EXP_POW", "OPTIMIZATION_LUT_INV_FAST", "OPTIMIZATION_COMP_LUT1D",
-                  "OPTIMIZATION_COMP_SEPARABLE_PREFIX")
+DEFAULT_EXTRAS = (
+    "OPTIMIZATION_FAST_LOG_EXP_POW",
+    "OPTIMIZATION_LUT_INV_FAST",
+    "OPTIMIZATION_COMP_LUT1D",
+    "OPTIMIZATION_COMP_SEPARABLE_PREFIX",
+)
 
 
 def isolate(cfg, transforms: list, values: np.ndarray, exact, odd, error_of) -> tuple[float, str, float]:
@@ -116,7 +120,9 @@ def isolate(cfg, transforms: list, values: np.ndarray, exact, odd, error_of) -> 
 
     worst = (-1.0, "")
     for index, transform in enumerate(transforms):
-        direction = "inverse" if getattr(transform, "getDirection", lambda: None)() == ocio.TRANSFORM_DIR_INVERSE else ""
+        direction = (
+            "inverse" if getattr(transform, "getDirection", lambda: None)() == ocio.TRANSFORM_DIR_INVERSE else ""
+        )
         worst = max(worst, (error_of(run(index)), f"{type(transform).__name__} {direction}".strip()))
     return (*worst, error_of(run(-1)))
 
@@ -141,11 +147,14 @@ def explain_default_flags(config_path: Path, check: Check, error_of) -> str:
         error = error_of(apply(proc.getOptimizedCPUProcessor(without), check.probes.values))
         if error <= check.tolerance:
             transforms = list(proc.createGroupTransform())
-            alone, op, split = isolate(cfg, transforms, check.probes.values, cpu_with(without), cpu_with(default),
-                                       error_of)
+            alone, op, split = isolate(
+                cfg, transforms, check.probes.values, cpu_with(without), cpu_with(default), error_of
+            )
             if split > check.tolerance:
-                return (f"OCIO default flags: {name} (its operator not isolated: the chain run operator by operator "
-                        f"departs {split:.2g} by itself); without the flag: {error:.2g}")
+                return (
+                    f"OCIO default flags: {name} (its operator not isolated: the chain run operator by operator "
+                    f"departs {split:.2g} by itself); without the flag: {error:.2g}"
+                )
             return f"OCIO default flags: {name} in {op} (alone: {alone:.2g}); without the flag: {error:.2g}"
     return ""
 

@@ -94,8 +94,13 @@ def chromaticity(spec: Spec, display: Display | None = None, spaces: bool = Fals
         _triangle(axes, d.gamut.primaries, d.name)
     if display is not None:
         sizes = probes.SIZES["quick"]
-        scene = np.concatenate([probes.monochromatic(spec, sizes.wavelength_step).values,
-                                probes.camera_gamut(spec).values, probes.colorchecker(spec, "D65").values])
+        scene = np.concatenate(
+            [
+                probes.monochromatic(spec, sizes.wavelength_step).values,
+                probes.camera_gamut(spec).values,
+                probes.colorchecker(spec, "D65").values,
+            ]
+        )
         source = _xy(apply_matrix(reference.scene_to_display_reference(spec), scene))
         axes.scatter(source[:, 0], source[:, 1], s=8, c="black", label="probe colours")
         for index, (name, rgb) in enumerate(_mapped(spec, display, scene).items()):

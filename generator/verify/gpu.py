@@ -80,20 +80,35 @@ def gpu_apply(ctx, proc, values: np.ndarray) -> np.ndarray:
         raise RuntimeError("the shader has uniforms (dynamic properties), which no config of ocioforge writes")
     resources: list = []
     try:
-        resources.append(program := ctx.program(vertex_shader=_VERTEX, fragment_shader=f"#version {GLSL_VERSION} core\n"
-                                                f"{desc.getShaderText()}{_MAIN}"))
+        resources.append(
+            program := ctx.program(
+                vertex_shader=_VERTEX, fragment_shader=f"#version {GLSL_VERSION} core\n{desc.getShaderText()}{_MAIN}"
+            )
+        )
         unit = 1
         for table in desc.getTextures():
             data = np.ascontiguousarray(table.getValues(), dtype=np.float32).tobytes()
             components = 1 if table.channel == ocio.GpuShaderDesc.TEXTURE_RED_CHANNEL else 3
-            _texture(ctx.texture((table.width, table.height), components, data, dtype="f4"),
-                     table.interpolation, resources, unit, program, table.samplerName)
+            _texture(
+                ctx.texture((table.width, table.height), components, data, dtype="f4"),
+                table.interpolation,
+                resources,
+                unit,
+                program,
+                table.samplerName,
+            )
             unit += 1
         for table in desc.get3DTextures():
             data = np.ascontiguousarray(table.getValues(), dtype=np.float32).tobytes()
             edge = table.edgeLen
-            _texture(ctx.texture3d((edge, edge, edge), 3, data, dtype="f4"),
-                     table.interpolation, resources, unit, program, table.samplerName)
+            _texture(
+                ctx.texture3d((edge, edge, edge), 3, data, dtype="f4"),
+                table.interpolation,
+                resources,
+                unit,
+                program,
+                table.samplerName,
+            )
             unit += 1
         count = len(values)
         width, height = min(count, ROW), -(-count // ROW)
@@ -141,8 +156,10 @@ class GpuEngine:
 
         ctx = open_device()
         try:
-            return (f"PyOpenColorIO {ocio.__version__} GLSL {GLSL_VERSION // 100}.{GLSL_VERSION % 100 // 10}, default "
-                    f"flags, on {ctx.info['GL_RENDERER']} (OpenGL {ctx.info['GL_VERSION']})")
+            return (
+                f"PyOpenColorIO {ocio.__version__} GLSL {GLSL_VERSION // 100}.{GLSL_VERSION % 100 // 10}, default "
+                f"flags, on {ctx.info['GL_RENDERER']} (OpenGL {ctx.info['GL_VERSION']})"
+            )
         finally:
             ctx.release()
 
@@ -175,9 +192,7 @@ def culprit(config_path: Path, check: Check, error_of) -> str:
     chain departs (its optimiser merges or drops operators there)."""
     import PyOpenColorIO as ocio
 
-    from generator.verify.engines import cpu_with, isolate, uncached_config
-
-    from generator.verify.engines import apply
+    from generator.verify.engines import apply, cpu_with, isolate, uncached_config
 
     cfg = uncached_config(config_path)
     proc = processor(cfg, check, config_path.parent)
@@ -187,14 +202,24 @@ def culprit(config_path: Path, check: Check, error_of) -> str:
     transforms = list(proc.createGroupTransform())
     ctx = open_device()
     try:
-        alone, name, split = isolate(cfg, transforms, check.probes.values, cpu_with(ocio.OPTIMIZATION_LOSSLESS),
-                                     lambda proc, values: gpu_apply(ctx, proc, values), error_of)
+        alone, name, split = isolate(
+            cfg,
+            transforms,
+            check.probes.values,
+            cpu_with(ocio.OPTIMIZATION_LOSSLESS),
+            lambda proc, values: gpu_apply(ctx, proc, values),
+            error_of,
+        )
     finally:
         ctx.release()
     if split > check.tolerance:
-        return (f"OCIO's GPU path (its operator not isolated: the chain run operator by operator on the CPU departs "
-                f"{split:.2g} by itself)")
+        return (
+            f"OCIO's GPU path (its operator not isolated: the chain run operator by operator on the CPU departs "
+            f"{split:.2g} by itself)"
+        )
     if alone > check.tolerance:
         return f"OCIO's GPU path: {name} drawn alone, the rest on the CPU, gives {alone:.2g}"
-    return (f"OCIO's GPU path: its shader of the whole chain (no operator drawn alone departs beyond {alone:.2g}: "
-            "OCIO optimises the chain as a whole for the GPU)")
+    return (
+        f"OCIO's GPU path: its shader of the whole chain (no operator drawn alone departs beyond {alone:.2g}: "
+        "OCIO optimises the chain as a whole for the GPU)"
+    )

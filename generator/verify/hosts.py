@@ -85,7 +85,11 @@ class OiiotoolEngine:
         return _beside_python("oiiotool")
 
     def missing(self, config: Path) -> str:
-        return "" if self.executable() else "oiiotool is not installed (pip package openimageio or Debian's openimageio-tools)"
+        return (
+            ""
+            if self.executable()
+            else "oiiotool is not installed (pip package openimageio or Debian's openimageio-tools)"
+        )
 
     def version(self) -> str:
         result = run_host([self.executable(), "--colorconfiginfo"])
@@ -94,8 +98,17 @@ class OiiotoolEngine:
 
     def _ops(self, check: Check, stem: Path) -> list[str]:
         if check.kind == VIEW:
-            return ["--iscolorspace", check.src, "--ociodisplay", check.display, check.view, "-o", f"{stem}.exr",
-                    "-o:datatype=uint16", f"{stem}.tif"]
+            return [
+                "--iscolorspace",
+                check.src,
+                "--ociodisplay",
+                check.display,
+                check.view,
+                "-o",
+                f"{stem}.exr",
+                "-o:datatype=uint16",
+                f"{stem}.tif",
+            ]
         if check.kind == LUT:
             return ["--ociofiletransform", Path(check.lut).name, "-o", f"{stem}.exr"]
         return ["--colorconvert", check.src, check.dst, "-o", f"{stem}.exr"]
@@ -168,5 +181,7 @@ class OcioconvertEngine:
         loading = [r for c, r in zip(checks, results) if c.kind != LUT]  # --lut reads no config
         if loading and all(TOO_NEW in r.stdout + r.stderr for r in loading):
             raise NotRunnable(_message(loading[0]))
-        return [[read_output(t, c, "EXR float", _message(r) if r.returncode else "")]
-                for c, t, r in zip(checks, targets, results)]
+        return [
+            [read_output(t, c, "EXR float", _message(r) if r.returncode else "")]
+            for c, t, r in zip(checks, targets, results)
+        ]

@@ -138,5 +138,18 @@ def judge(check: Check, engine: str, output: Output) -> Outcome:
     worst = float(errors[worst_index])
     violations, note = policy_violations(check, actual, output.step)
     verdict = PASS if worst <= check.tolerance and not violations else FAIL
-    return Outcome(check, name, verdict, worst, percentile_99(errors), check.probes.describe(worst_index), compared,
-                   undefined, violations, note, errors, actual if verdict == FAIL else None, output.step)
+    return Outcome(
+        check,
+        name,
+        verdict,
+        worst,
+        percentile_99(errors),
+        check.probes.describe(worst_index),
+        compared,
+        undefined,
+        violations,
+        note,
+        errors,
+        actual if verdict == FAIL else None,
+        output.step,
+    )

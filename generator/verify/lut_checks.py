@@ -26,21 +26,34 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
     and on a ramp."""
     from generator.ocio.emit import LUT_FOLDER
 
-    curves = {curve_label(spec, s.name, s.curve_name): s.curve
-              for s in spec.colour_spaces if paths.space_is_baked(spec, s)}
-    curves.update({curve_label(spec, d.name, d.eotf_name): d.eotf for d in spec.displays if paths.eotf_is_baked(spec, d)})
+    curves = {
+        curve_label(spec, s.name, s.curve_name): s.curve for s in spec.colour_spaces if paths.space_is_baked(spec, s)
+    }
+    curves.update(
+        {curve_label(spec, d.name, d.eotf_name): d.eotf for d in spec.displays if paths.eotf_is_baked(spec, d)}
+    )
     out = []
     for name, curve in curves.items():
         baked = baked_lut(name, curve)
         nodes = len(baked.values)
         u = np.concatenate([np.arange(4 * (nodes - 1) + 1) / (4.0 * (nodes - 1)), np.linspace(0.0, 1.0, sizes.ramp)])
         lo, hi = baked.domain
-        codes = lo + (hi - lo) * u ** baked.shaper
+        codes = lo + (hi - lo) * u**baked.shaper
         inputs = Probes((Family("LUT nodes and between", np.repeat(u[:, None], 3, axis=1)),))
         keep = _band(None, np.repeat(codes[:, None], 3, axis=1), curve)
-        out.append(Check(LUT, f"{LUT_FOLDER}/{baked.filename}", src=name, lut=f"{LUT_FOLDER}/{baked.filename}",
-                         probes=inputs, expected=np.repeat(curve.decode(codes)[:, None], 3, axis=1), output=paths.LINEAR,
-                         tolerance=tolerances.BAKED_CURVE_RELATIVE, keep=keep))
+        out.append(
+            Check(
+                LUT,
+                f"{LUT_FOLDER}/{baked.filename}",
+                src=name,
+                lut=f"{LUT_FOLDER}/{baked.filename}",
+                probes=inputs,
+                expected=np.repeat(curve.decode(codes)[:, None], 3, axis=1),
+                output=paths.LINEAR,
+                tolerance=tolerances.BAKED_CURVE_RELATIVE,
+                keep=keep,
+            )
+        )
     return out
 
 
@@ -49,17 +62,17 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
     the display's codes, or to display light that the verifier then encodes in float64,
     applied tetrahedrally) against its view's mapping (:func:`_lattice_probes` for a view
     defined by its lattice)."""
-    from generator.ocio.emit import LUT_FOLDER
-
     from generator.luts.view import HSV_METHOD, LATTICE_DEFINED, ends_in_light, view_filename
+    from generator.ocio.emit import LUT_FOLDER
 
     out = []
     for display in spec.displays:
         to_display = reference.normalised_display_matrix(spec, display)
         families = probes.code_families(0.0, 1.0, sizes) + [
             f if f.name == probes.NON_FINITE else Family(f.name, apply_matrix(to_display, f.values), f.notes)
-            for f in scene]
-        inputs = Probes(tuple(families))
+            for f in scene
+        ]
+        Probes(tuple(families))
         for view in display.views:
             method = paths.view_method(view)
             if method is None or method in paths.ANALYTIC_METHODS:
@@ -77,10 +90,22 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
             else:
                 fn = paths.view_function(spec, display, view)
                 checked = Probes((*families, *_output_table_greys(spec, display, method)))
-                expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), checked.values)
-            out.append(Check(LUT, name, src=view, lut=name, interpolation="tetrahedral", probes=checked,
-                             expected=expected, output=paths.DISPLAY, encode=encode, allowance=allowance,
-                             **_judging(None, display, None, view)))
+                expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), checked.values)  # noqa: B023
+            out.append(
+                Check(
+                    LUT,
+                    name,
+                    src=view,
+                    lut=name,
+                    interpolation="tetrahedral",
+                    probes=checked,
+                    expected=expected,
+                    output=paths.DISPLAY,
+                    encode=encode,
+                    allowance=allowance,
+                    **_judging(None, display, None, view),
+                )
+            )
     return out
 
 
@@ -101,12 +126,27 @@ def aces_lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
             single[channel, :, channel] = axis
         rng = np.random.default_rng(21)
         random = aces_lattice.axis_value(rng.random((sizes.random, 3)), lat.upper, lat.toe)
-        inputs = Probes((Family("AP1 greys on and between nodes", np.repeat(axis[:, None], 3, axis=1)),
-                         Family("AP1 single channels", single.reshape(-1, 3)), Family("AP1 random", random)))
+        inputs = Probes(
+            (
+                Family("AP1 greys on and between nodes", np.repeat(axis[:, None], 3, axis=1)),
+                Family("AP1 single channels", single.reshape(-1, 3)),
+                Family("AP1 random", random),
+            )
+        )
         name = f"{LUT_FOLDER}/{aces_lattice.file_name(view)}"
-        out.append(Check(LUT, name, src=view.name, lut=name, interpolation="tetrahedral", probes=inputs,
-                         expected=aces_lattice.file_output(lat, inputs.values), output=paths.LINEAR,
-                         tolerance=tolerances.ACES_LATTICE_FILE_RELATIVE))
+        out.append(
+            Check(
+                LUT,
+                name,
+                src=view.name,
+                lut=name,
+                interpolation="tetrahedral",
+                probes=inputs,
+                expected=aces_lattice.file_output(lat, inputs.values),
+                output=paths.LINEAR,
+                tolerance=tolerances.ACES_LATTICE_FILE_RELATIVE,
+            )
+        )
     return out
 
 
@@ -139,8 +179,11 @@ def _lattice_probes(spec: Spec, display: Display, method: str, families: list[Fa
 
     lat, peak = view_lattice(spec, display, method), display.clip_high
     through = paths.lattice_codes(spec, display, method)
-    lattice_families = (*families, Family("a colour in every lattice cell", cell_inputs(lat)),
-                        Family("a channel on every shaper entry and between", shaper_inputs(lat)))
+    lattice_families = (
+        *families,
+        Family("a colour in every lattice cell", cell_inputs(lat)),
+        Family("a channel on every shaper entry and between", shaper_inputs(lat)),
+    )
     axis = lat.pre.inverse(preimages(lat.size, lat.shaper, lat.domain))
     nodes = Family("lattice nodes (the mapping itself)", grid(axis).reshape(-1, 3))
     with np.errstate(all="ignore"):
@@ -164,20 +207,38 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
     finite = [f for f in families if f.name != probes.NON_FINITE]
     values = [Family(f.name, _float32(hsv_axes.ocio_rgb_to_hsv(f.values)), f.notes) for f in finite]
     shared = Probes((*values, Family("every entry of the table", _float32(hsv_axes.table_inputs()))))
-    coordinates = Probes(tuple(Family(f.name, _float32(hsv_axes.shared_coordinates(f.values)), f.notes)
-                               for f in values))
+    coordinates = Probes(
+        tuple(Family(f.name, _float32(hsv_axes.shared_coordinates(f.values)), f.notes) for f in values)
+    )
     shared_name = f"{LUT_FOLDER}/{hsv.SHARED_FILE}"
     fn = paths.view_function(spec, display, view)
 
     light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
     expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
     name = f"{LUT_FOLDER}/{view_filename(spec, display, HSV_METHOD)}"
-    return [Check(LUT, shared_name, src=view, lut=shared_name, probes=shared,
-                  expected=hsv_axes.shared_coordinates(shared.values), output=paths.CODE),
-            Check(LUT, name, src=view, lut=name, probes=coordinates, expected=expected, output=paths.DISPLAY,
-                  encode=partial(_encode_hsv, display),
-                  allowance=hsv_file_allowance(display, view, light * display.clip_high, expected),
-                  **_judging(None, display, None, view))]
+    return [
+        Check(
+            LUT,
+            shared_name,
+            src=view,
+            lut=shared_name,
+            probes=shared,
+            expected=hsv_axes.shared_coordinates(shared.values),
+            output=paths.CODE,
+        ),
+        Check(
+            LUT,
+            name,
+            src=view,
+            lut=name,
+            probes=coordinates,
+            expected=expected,
+            output=paths.DISPLAY,
+            encode=partial(_encode_hsv, display),
+            allowance=hsv_file_allowance(display, view, light * display.clip_high, expected),
+            **_judging(None, display, None, view),
+        ),
+    ]
 
 
 def _float32(values: np.ndarray) -> np.ndarray:

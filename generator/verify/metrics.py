@@ -9,7 +9,9 @@ from generator import tolerances
 
 def relative_error(actual, expected) -> np.ndarray:
     expected = np.asarray(expected, dtype=np.float64)
-    return np.abs(np.asarray(actual, dtype=np.float64) - expected) / np.maximum(np.abs(expected), tolerances.RELATIVE_FLOOR)
+    return np.abs(np.asarray(actual, dtype=np.float64) - expected) / np.maximum(
+        np.abs(expected), tolerances.RELATIVE_FLOOR
+    )
 
 
 def colour_relative_error(actual, expected) -> np.ndarray:
@@ -34,8 +36,10 @@ def delta_e_itp(display, code_a, code_b) -> np.ndarray:
     from generator.colorimetry.matrices import rgb_to_rgb
 
     to_2020 = rgb_to_rgb(display.gamut, gamuts()["Rec.2020"], "none")
-    ictcp = [colour.RGB_to_ICtCp(np.einsum("ij,...j->...i", to_2020, reference.display_decode(display, code) * 100.0))
-             for code in (code_a, code_b)]
+    ictcp = [
+        colour.RGB_to_ICtCp(np.einsum("ij,...j->...i", to_2020, reference.display_decode(display, code) * 100.0))
+        for code in (code_a, code_b)
+    ]
     return np.asarray(colour.delta_E(ictcp[0], ictcp[1], method="ITP"), dtype=np.float64)
 
 

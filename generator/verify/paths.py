@@ -24,8 +24,8 @@ Two documented policies of the generated configs enter the expectation:
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
@@ -109,16 +109,30 @@ def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
     if space.special:
         return _adx_endpoint(spec, space)
     if space.is_data:
-        return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
-                        lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
-                        matrix=np.eye(3), linear=space.curve.decode, curve=space.curve)
+        return Endpoint(
+            space.name,
+            lambda c: reference.to_reference(spec, space, c),
+            lambda r: reference.from_reference(spec, space, r),
+            (lo, hi),
+            output,
+            matrix=np.eye(3),
+            linear=space.curve.decode,
+            curve=space.curve,
+        )
     matrix = reference.space_matrix(spec, space)
     baked = space_is_baked(spec, space)
     domain = (lo, hi) if baked else builtin_code_domain(space.curve_name, spec.ocio_version)
     if domain is None:
-        return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
-                        lambda r: reference.from_reference(spec, space, r), (lo, hi), output,
-                        matrix=matrix, linear=space.curve.decode, curve=space.curve)
+        return Endpoint(
+            space.name,
+            lambda c: reference.to_reference(spec, space, c),
+            lambda r: reference.from_reference(spec, space, r),
+            (lo, hi),
+            output,
+            matrix=matrix,
+            linear=space.curve.decode,
+            curve=space.curve,
+        )
     low, high = domain
 
     def decode(codes):
@@ -128,8 +142,17 @@ def _scene_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
         return np.clip(reference.from_reference(spec, space, ref), low, high)
 
     label = curve_label(spec, space.name, space.curve_name) if baked else ""
-    return Endpoint(space.name, decode, encode, (lo, hi), output, baked=label,
-                    matrix=matrix, linear=lambda c: space.curve.decode(np.clip(c, low, high)), curve=space.curve)
+    return Endpoint(
+        space.name,
+        decode,
+        encode,
+        (lo, hi),
+        output,
+        baked=label,
+        matrix=matrix,
+        linear=lambda c: space.curve.decode(np.clip(c, low, high)),
+        curve=space.curve,
+    )
 
 
 def _adx_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
@@ -156,9 +179,16 @@ def _adx_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
             above = np.nextafter(density(codes).astype(np.float16), np.float16(np.inf)).astype(np.float64)
             return np.all(10.0 ** adx.cid_to_log_exposure(above) <= HALF_MAX, axis=-1)
 
-    return Endpoint(space.name, lambda c: reference.to_reference(spec, space, c),
-                    lambda r: reference.from_reference(spec, space, r), code_range(spec, space), CODE,
-                    matrix=reference.adx_reference_matrix(spec) @ adx.EXP_TO_ACES, linear=exposure, valid=valid)
+    return Endpoint(
+        space.name,
+        lambda c: reference.to_reference(spec, space, c),
+        lambda r: reference.from_reference(spec, space, r),
+        code_range(spec, space),
+        CODE,
+        matrix=reference.adx_reference_matrix(spec) @ adx.EXP_TO_ACES,
+        linear=exposure,
+        valid=valid,
+    )
 
 
 def _display_endpoint(spec: Spec, display: Display) -> Endpoint:
@@ -168,16 +198,30 @@ def _display_endpoint(spec: Spec, display: Display) -> Endpoint:
     def light(codes):
         return np.clip(reference.display_decode(display, codes), 0.0, display.clip_high)
 
-    return Endpoint(display.name, lambda c: apply_matrix(back, light(c)),
-                    lambda r: reference.colorimetric_view(spec, display, r), (0.0, 1.0), DISPLAY, display,
-                    matrix=back, linear=light)
+    return Endpoint(
+        display.name,
+        lambda c: apply_matrix(back, light(c)),
+        lambda r: reference.colorimetric_view(spec, display, r),
+        (0.0, 1.0),
+        DISPLAY,
+        display,
+        matrix=back,
+        linear=light,
+    )
 
 
 def _xyz_endpoint(spec: Spec) -> Endpoint:
     matrix = reference.scene_to_display_reference(spec)
     inverse = np.linalg.inv(matrix)
-    return Endpoint(DISPLAY_REFERENCE, lambda c: apply_matrix(inverse, c), lambda r: apply_matrix(matrix, r),
-                    (0.0, 1.0), LINEAR, matrix=inverse, linear=lambda c: np.asarray(c, dtype=np.float64))
+    return Endpoint(
+        DISPLAY_REFERENCE,
+        lambda c: apply_matrix(inverse, c),
+        lambda r: apply_matrix(matrix, r),
+        (0.0, 1.0),
+        LINEAR,
+        matrix=inverse,
+        linear=lambda c: np.asarray(c, dtype=np.float64),
+    )
 
 
 #: Gamut-mapping methods the config expresses analytically; the others are a baked
@@ -233,8 +277,9 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
 
     def mapped(ref):
         linear = apply_matrix(to_display, ref)
-        return reference.map_display_linear(display, method, linear if bounds is None else np.clip(linear, *bounds),
-                                            params)
+        return reference.map_display_linear(
+            display, method, linear if bounds is None else np.clip(linear, *bounds), params
+        )
 
     return mapped
 
@@ -307,8 +352,9 @@ def display_view_spaces(spec: Spec) -> list[Endpoint]:
     RGC's analytic inverse has no evaluation here (no decode: checked forward only)."""
     if not spec.display_view_spaces:
         return []
-    return [display_view_endpoint(spec, display, view) for display in spec.displays for view in display.views
-            if view != RAW]
+    return [
+        display_view_endpoint(spec, display, view) for display in spec.displays for view in display.views if view != RAW
+    ]
 
 
 def display_view_endpoint(spec: Spec, display: Display, view: str) -> Endpoint:
@@ -317,9 +363,17 @@ def display_view_endpoint(spec: Spec, display: Display, view: str) -> Endpoint:
 
     shown = _display_endpoint(spec, display)
     colorimetric = view_method(view) in ("clip", *INVERTED_AS_COLORIMETRIC)
-    return Endpoint(display_view_space(view, display.name), shown.decode if colorimetric else None,
-                    view_function(spec, display, view), (0.0, 1.0), DISPLAY, display, matrix=shown.matrix,
-                    linear=shown.linear if colorimetric else None, view=view)
+    return Endpoint(
+        display_view_space(view, display.name),
+        shown.decode if colorimetric else None,
+        view_function(spec, display, view),
+        (0.0, 1.0),
+        DISPLAY,
+        display,
+        matrix=shown.matrix,
+        linear=shown.linear if colorimetric else None,
+        view=view,
+    )
 
 
 def endpoints(spec: Spec) -> dict[str, Endpoint]:
@@ -342,8 +396,14 @@ class LazyEndpoints(dict):
         self.makers[DISPLAY_REFERENCE] = lambda: _xyz_endpoint(spec)
         self.makers.update({d.name: (lambda d=d: _display_endpoint(spec, d)) for d in spec.displays})
         if spec.display_view_spaces:
-            self.makers.update({display_view_space(v, d.name): (lambda d=d, v=v: display_view_endpoint(spec, d, v))
-                                for d in spec.displays for v in d.views if v != RAW})
+            self.makers.update(
+                {
+                    display_view_space(v, d.name): (lambda d=d, v=v: display_view_endpoint(spec, d, v))
+                    for d in spec.displays
+                    for v in d.views
+                    if v != RAW
+                }
+            )
 
     def __missing__(self, name: str) -> Endpoint:
         if name not in self.makers:

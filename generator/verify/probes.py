@@ -105,12 +105,15 @@ def code_families(lo: float, hi: float, sizes: Sizes, lut: tuple[int, float] | N
     axis = lo + (hi - lo) * (np.arange(n) + 0.5) / n
     lattice = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
     rng = np.random.default_rng(SEED)
-    out = [Family("ramp", np.concatenate(ramps)), Family("lattice", lattice),
-           Family("random", rng.uniform(lo, hi, (sizes.random, 3)))]
+    out = [
+        Family("ramp", np.concatenate(ramps)),
+        Family("lattice", lattice),
+        Family("random", rng.uniform(lo, hi, (sizes.random, 3))),
+    ]
     if lut is not None:
         nodes, shaper = lut
         u = np.arange(2 * nodes - 1) / (2.0 * (nodes - 1))
-        out.append(Family("LUT nodes and midpoints", np.repeat((lo + (hi - lo) * u ** shaper)[:, None], 3, axis=1)))
+        out.append(Family("LUT nodes and midpoints", np.repeat((lo + (hi - lo) * u**shaper)[:, None], 3, axis=1)))
     return out
 
 
@@ -211,6 +214,14 @@ def non_finite() -> Family:
 def scene_families(spec: Spec, sizes: Sizes) -> tuple[Family, ...]:
     """The scene-referred families, in the scene reference (non-finite last)."""
     checker = colorchecker(spec, "D65")
-    return (checker, colorchecker(spec, "A"), monochromatic(spec, sizes.wavelength_step), camera_gamut(spec),
-            display_faces(spec, max(8, sizes.random // 16)), negatives(max(16, sizes.random // 16)),
-            near_black(max(16, sizes.random // 16)), over_range(checker), non_finite())
+    return (
+        checker,
+        colorchecker(spec, "A"),
+        monochromatic(spec, sizes.wavelength_step),
+        camera_gamut(spec),
+        display_faces(spec, max(8, sizes.random // 16)),
+        negatives(max(16, sizes.random // 16)),
+        near_black(max(16, sizes.random // 16)),
+        over_range(checker),
+        non_finite(),
+    )

@@ -75,8 +75,13 @@ def engine_registry() -> dict:
     from generator.verify.gpu import GpuEngine
     from generator.verify.hosts import OcioconvertEngine, OiiotoolEngine
 
-    return {"ocio": IN_PROCESS, "oiiotool": (OiiotoolEngine(),), "ocioconvert": (OcioconvertEngine(),),
-            "blender": (BlenderEngine(),), "gpu": (GpuEngine(),)}
+    return {
+        "ocio": IN_PROCESS,
+        "oiiotool": (OiiotoolEngine(),),
+        "ocioconvert": (OcioconvertEngine(),),
+        "blender": (BlenderEngine(),),
+        "gpu": (GpuEngine(),),
+    }
 
 
 def load(config_path: str | Path) -> tuple[Path, Spec]:
@@ -84,8 +89,12 @@ def load(config_path: str | Path) -> tuple[Path, Spec]:
     from generator.files import not_readable
 
     if str(config_path).startswith("ocio://"):  # Path() would fold the URI's slashes
-        raise SpecError(str(config_path), "-", "is one of OpenColorIO's builtin configs, which no spec built; "
-                        "allowed: a build's folder or its config.ocio, beside its ocioforge-spec.json")
+        raise SpecError(
+            str(config_path),
+            "-",
+            "is one of OpenColorIO's builtin configs, which no spec built; "
+            "allowed: a build's folder or its config.ocio, beside its ocioforge-spec.json",
+        )
     path = Path(config_path)
     why = not_readable(path)
     if why is not None:
@@ -108,8 +117,12 @@ def _same_declarations(path: Path, cfg, spec: Spec) -> None:
     found = differences(cfg, spec)
     if found:
         more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
-        raise SpecError(str(path), "-", f"it declares what its stored spec does not build: {found[0]}{more}; allowed: "
-                        "a config as ocioforge build wrote it, beside its ocioforge-spec.json (rebuild it)")
+        raise SpecError(
+            str(path),
+            "-",
+            f"it declares what its stored spec does not build: {found[0]}{more}; allowed: "
+            "a config as ocioforge build wrote it, beside its ocioforge-spec.json (rebuild it)",
+        )
 
 
 def _same_inventory(path: Path, cfg, spec: Spec) -> None:
@@ -120,19 +133,34 @@ def _same_inventory(path: Path, cfg, spec: Spec) -> None:
 
     from generator.verify.paths import endpoints
 
-    held = {"colour spaces": set(cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)),
-            # every display and view it defines, whatever OCIO_ACTIVE_DISPLAYS / _VIEWS narrow them to
-            "displays/views": {f"{d} / {v}" for d in cfg.getDisplaysAll()
-                               for v in cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, d)}}
-    built = {"colour spaces": set(endpoints(spec)),
-             "displays/views": {f"{d.name} / {v}" for d in spec.displays for v in d.views}}
+    held = {
+        "colour spaces": set(cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)),
+        # every display and view it defines, whatever OCIO_ACTIVE_DISPLAYS / _VIEWS narrow them to
+        "displays/views": {
+            f"{d} / {v}" for d in cfg.getDisplaysAll() for v in cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, d)
+        },
+    }
+    built = {
+        "colour spaces": set(endpoints(spec)),
+        "displays/views": {f"{d.name} / {v}" for d in spec.displays for v in d.views},
+    }
     for what in held:
         extra, missing = sorted(held[what] - built[what]), sorted(built[what] - held[what])
         if extra or missing:
-            names = "; ".join(part for part in (f"holds {', '.join(map(repr, extra[:3]))}" if extra else "",
-                                                f"lacks {', '.join(map(repr, missing[:3]))}" if missing else "") if part)
-            raise SpecError(str(path), "-", f"its {what} are not what its stored spec builds ({names}); allowed: a "
-                            "config as ocioforge build wrote it, beside its ocioforge-spec.json (rebuild it)")
+            names = "; ".join(
+                part
+                for part in (
+                    f"holds {', '.join(map(repr, extra[:3]))}" if extra else "",
+                    f"lacks {', '.join(map(repr, missing[:3]))}" if missing else "",
+                )
+                if part
+            )
+            raise SpecError(
+                str(path),
+                "-",
+                f"its {what} are not what its stored spec builds ({names}); allowed: a "
+                "config as ocioforge build wrote it, beside its ocioforge-spec.json (rebuild it)",
+            )
 
 
 def _worst(check: Check, values: np.ndarray, step: float = 0.0) -> float:
@@ -148,8 +176,9 @@ def _explain(config: Path, outcome: Outcome) -> Outcome:
     """A default-flags failure the flags explain becomes APPROX, with the flag and operator named."""
     if outcome.violations or outcome.errors is None:
         return outcome
-    why = explain_default_flags(config, outcome.check,
-                                lambda values: _worst(outcome.check, judged_output(outcome.check, values)))
+    why = explain_default_flags(
+        config, outcome.check, lambda values: _worst(outcome.check, judged_output(outcome.check, values))
+    )
     return _approx(outcome, why) if why else outcome
 
 
@@ -164,8 +193,9 @@ def _inherit(config: Path, outcome: Outcome, explained: dict) -> Outcome:
     proc = processor(cfg, outcome.check, config.parent)
     import PyOpenColorIO as ocio
 
-    ours = judged_output(outcome.check, apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT),
-                                               outcome.check.probes.values))
+    ours = judged_output(
+        outcome.check, apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT), outcome.check.probes.values)
+    )
     against = replace(outcome.check, expected=ours)
     gap = _worst(against, outcome.values, outcome.step)
     if gap > outcome.check.tolerance:
@@ -199,7 +229,9 @@ def run_engine(engine, config: Path, spec: Spec, checks: list[Check], workdir: P
         except NotRunnable as error:
             reason = str(error)
     if reason:
-        return EngineRun(engine.name, skipped=reason), [Outcome(c, engine.name, NOT_RUN, note=reason) for c in supported]
+        return EngineRun(engine.name, skipped=reason), [
+            Outcome(c, engine.name, NOT_RUN, note=reason) for c in supported
+        ]
     outcomes = [judge(check, engine.name, out) for check, outs in zip(supported, outputs) for out in outs]
     return EngineRun(engine.name, engine.version(), time.perf_counter() - started), outcomes
 
@@ -222,11 +254,15 @@ def _explained(config: Path, outcomes: list[Outcome], extra: list[Outcome] = ())
     default, lossless = (e.name for e in IN_PROCESS)
     everything = [*outcomes, *extra]
     exact = {id(o.check) for o in everything if o.engine == lossless and o.verdict == PASS}
-    everything = [_explain(config, o) if o.engine == default and o.verdict == FAIL and id(o.check) in exact else o
-                  for o in everything]
+    everything = [
+        _explain(config, o) if o.engine == default and o.verdict == FAIL and id(o.check) in exact else o
+        for o in everything
+    ]
     explained = {id(o.check): o for o in everything if o.engine == default and o.verdict == APPROX}
-    return [_inherit(config, o, explained) if o.engine not in (default, lossless) else o
-            for o in everything[:len(outcomes)]]
+    return [
+        _inherit(config, o, explained) if o.engine not in (default, lossless) else o
+        for o in everything[: len(outcomes)]
+    ]
 
 
 def _remove(folder: Path, attempts: int = 5) -> None:
@@ -240,8 +276,15 @@ def _remove(folder: Path, attempts: int = 5) -> None:
         time.sleep(0.1)
 
 
-def verify(config_path: str | Path, engines=("ocio",), density: str = "full", kinds=checks_module.KINDS,
-           workdir: str | Path | None = None, only: str = "", strict: bool = False) -> Verification:
+def verify(
+    config_path: str | Path,
+    engines=("ocio",),
+    density: str = "full",
+    kinds=checks_module.KINDS,
+    workdir: str | Path | None = None,
+    only: str = "",
+    strict: bool = False,
+) -> Verification:
     """Verify the config at ``config_path`` through the named engine families: the checks
     of the given ``kinds`` whose title contains ``only`` (every one when empty; SpecError when
     it matches none). ``strict``: an engine that cannot run fails the verification (one the user
@@ -262,8 +305,12 @@ def _verify(config_path, engines, density, kinds, workdir, only, strict) -> Veri
         raise SpecError("--engines", ",".join(unknown), f"unknown engine; allowed: {', '.join(registry)}")
     checks = [c for c in checks_module.build_checks(spec, density, kinds) if only in c.title]
     if only and not checks:
-        raise SpecError("--only", only, "matches no check title (titles are 'SPACE -> SPACE', "
-                                        "'DISPLAY / VIEW from SPACE' and LUT file paths such as 'luts/NAME.clf')")
+        raise SpecError(
+            "--only",
+            only,
+            "matches no check title (titles are 'SPACE -> SPACE', "
+            "'DISPLAY / VIEW from SPACE' and LUT file paths such as 'luts/NAME.clf')",
+        )
     timings = {"checks": time.perf_counter() - started}
     runs, outcomes = [], []
     tmp = tempfile.mkdtemp(prefix="ocioforge-verify-", dir=workdir)
@@ -278,5 +325,6 @@ def _verify(config_path, engines, density, kinds, workdir, only, strict) -> Veri
         _remove(Path(tmp))
     explainers = {e.name: e.explain for family in engines for e in registry[family] if hasattr(e, "explain")}
     outcomes = [_engine_explained(config, o, explainers) for o in _explained(config, outcomes, extra)]
-    return Verification(config, spec, tuple(checks), tuple(outcomes), tuple(runs),
-                        time.perf_counter() - started, timings, strict)
+    return Verification(
+        config, spec, tuple(checks), tuple(outcomes), tuple(runs), time.perf_counter() - started, timings, strict
+    )

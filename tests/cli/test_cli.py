@@ -21,17 +21,20 @@ def run(capsys, *argv):
 
 
 def test_help_starts_without_heavy_imports():
-    probe = ("import sys\nfrom generator.cli import main\n"
-             "try:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
-             "print(sorted(m for m in ('colour', 'scipy', 'matplotlib', 'PyOpenColorIO', 'OpenImageIO') if m in sys.modules))")
+    probe = (
+        "import sys\nfrom generator.cli import main\n"
+        "try:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
+        "print(sorted(m for m in ('colour', 'scipy', 'matplotlib', 'PyOpenColorIO', 'OpenImageIO') if m in sys.modules))"
+    )
     result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=60)
     assert "Commands" in result.stdout or "build" in result.stdout
     assert result.stdout.strip().splitlines()[-1] == "[]"
 
 
 def test_console_script_runs():
-    result = subprocess.run([sys.executable, "-m", "generator", "--version"], capture_output=True, text=True,
-                            timeout=60)
+    result = subprocess.run(
+        [sys.executable, "-m", "generator", "--version"], capture_output=True, text=True, timeout=60
+    )
     assert result.returncode == 0 and "ocioforge" in result.stdout
 
 
@@ -51,8 +54,10 @@ def test_build_writes_a_named_config_and_refuses_to_overwrite(tmp_path, capsys):
 
 
 def test_build_counts_the_inactive_colour_spaces_it_writes(tmp_path, capsys):
-    (tmp_path / "show.toml").write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "ARRI LogC4", '
-                                        '"sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["ARRI LogC4"]\n')
+    (tmp_path / "show.toml").write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "ARRI LogC4", '
+        '"sRGB Encoded Rec.709 (sRGB)", "Raw"]\ninactive = ["ARRI LogC4"]\n'
+    )
     code, stdout, err = run(capsys, "build", str(tmp_path / "show.toml"), "-o", str(tmp_path / "show"))
     import PyOpenColorIO as ocio
 
@@ -170,24 +175,37 @@ def test_a_build_failing_while_written_leaves_no_folders_it_made(tmp_path, capsy
     """A table no 1D LUT holds is found while the folder is staged: the folders made for the
     output go too, and the error names the space."""
     codes = sorted([(i / 39) ** 1.7 for i in range(40)] + [0.33331, 0.33333])  # uneven rows, a step between two
-    (tmp_path / "rough.csv").write_text("".join(f"{x:.6f},{x * 0.3 + (0.2 if x > 0.33332 else 0.0):.6f}\n"
-                                                for x in codes))
-    (tmp_path / "rough.toml").write_text('colour_spaces = ["*"]\n[[custom_space]]\nname = "Rough"\ngamut = "Rec.709"\n'
-                                         'transfer = { family = "tabulated", file = "rough.csv" }\n')
+    (tmp_path / "rough.csv").write_text(
+        "".join(f"{x:.6f},{x * 0.3 + (0.2 if x > 0.33332 else 0.0):.6f}\n" for x in codes)
+    )
+    (tmp_path / "rough.toml").write_text(
+        'colour_spaces = ["*"]\n[[custom_space]]\nname = "Rough"\ngamut = "Rec.709"\n'
+        'transfer = { family = "tabulated", file = "rough.csv" }\n'
+    )
     code, _, err = run(capsys, "build", str(tmp_path / "rough.toml"), "-o", str(tmp_path / "a" / "b" / "show"))
     assert code == 2 and err.count("\n") == 1 and "custom_space[name = 'Rough'].transfer" in err, err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["rough.csv", "rough.toml"]
 
 
-@pytest.mark.parametrize(("name", "words"), [("../escape", "cannot name a folder"), ("", "cannot name a folder"),
-                                             ("..", "cannot name a folder"), ("show\nbuild", "control character"),
-                                             ("a/b", "cannot name a folder"), ("CON", "keeps it for a device"),
-                                             ("aux.show", "keeps it for a device"), ("Com1", "keeps it for a device"),
-                                             ("show.", "drops a final dot"), ("show..", "drops a final dot")])
+@pytest.mark.parametrize(
+    ("name", "words"),
+    [
+        ("../escape", "cannot name a folder"),
+        ("", "cannot name a folder"),
+        ("..", "cannot name a folder"),
+        ("show\nbuild", "control character"),
+        ("a/b", "cannot name a folder"),
+        ("CON", "keeps it for a device"),
+        ("aux.show", "keeps it for a device"),
+        ("Com1", "keeps it for a device"),
+        ("show.", "drops a final dot"),
+        ("show..", "drops a final dot"),
+    ],
+)
 def test_a_spec_name_that_cannot_name_the_default_folder_is_refused(tmp_path, capsys, monkeypatch, name, words):
     """Without -o a build goes to configs/<name>: a name no folder takes is one line, exit 2."""
     monkeypatch.chdir(tmp_path)
-    (tmp_path / "show.toml").write_text(f"name = {name!r}\n".replace("'", '"').replace("\n\"", "\\n\""))
+    (tmp_path / "show.toml").write_text(f"name = {name!r}\n".replace("'", '"').replace('\n"', '\\n"'))
     code, _, err = run(capsys, "build", "show.toml")
     assert code == 2 and err.count("\n") == 1 and words in err, err
     assert sorted(p.name for p in tmp_path.rglob("*")) == ["show.toml"]
@@ -217,8 +235,11 @@ def test_terminated_build_leaves_nothing(tmp_path):
     import signal
     import time
 
-    build = subprocess.Popen([sys.executable, "-m", "generator", "build", "-o", str(tmp_path / "show")],
-                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    build = subprocess.Popen(
+        [sys.executable, "-m", "generator", "build", "-o", str(tmp_path / "show")],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.DEVNULL,
+    )
     deadline = time.monotonic() + 60
     while not any(tmp_path.iterdir()) and build.poll() is None and time.monotonic() < deadline:
         time.sleep(0.01)
@@ -238,14 +259,17 @@ def test_bad_spec_gives_one_line_exit_2_and_writes_nothing(tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
 
 
-@pytest.mark.parametrize("argv, words", [
-    (("build", "--ocio-version", "1.9"), "allowed: 2.1 to"),
-    (("build", "nowhere.toml"), "cannot read"),
-    (("matrix", "acescg", "lin_rec709", "--cat", "Sharp"), "allowed: Bradford"),
-    (("matrix", "acescg", "raw"), "no RGB primaries"),
-    (("info", "nothing_like_this"), "unknown colour space"),
-    (("matrix", "acescg"), "Missing argument"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (("build", "--ocio-version", "1.9"), "allowed: 2.1 to"),
+        (("build", "nowhere.toml"), "cannot read"),
+        (("matrix", "acescg", "lin_rec709", "--cat", "Sharp"), "allowed: Bradford"),
+        (("matrix", "acescg", "raw"), "no RGB primaries"),
+        (("info", "nothing_like_this"), "unknown colour space"),
+        (("matrix", "acescg"), "Missing argument"),
+    ],
+)
 def test_bad_arguments_exit_2_with_one_line(tmp_path, capsys, monkeypatch, argv, words):
     monkeypatch.chdir(tmp_path)
     code, _, err = run(capsys, *argv)
@@ -329,7 +353,9 @@ def test_list_piped_gives_one_unwrapped_line_a_row(capsys):
     lines = out.splitlines()
     assert lines[0].split("\t")[0] == "colour space" and len(lines) == len(library.SPACES) + 1
     assert all(line.count("\t") == 4 for line in lines)
-    assert any(line.startswith("Gamma 2.4 Encoded Rec.709\t") and "Gamma 2.4 Rec.709 - Texture" in line for line in lines)
+    assert any(
+        line.startswith("Gamma 2.4 Encoded Rec.709\t") and "Gamma 2.4 Rec.709 - Texture" in line for line in lines
+    )
 
 
 def test_an_unknown_command_lists_the_commands(capsys):
@@ -378,16 +404,26 @@ def test_a_swallowed_sigterm_still_stops_the_command_before_it_writes(tmp_path, 
         return real_bake(req)
 
     monkeypatch.setattr(bake, "bake", terminated_meanwhile)
-    code, _, _ = run(capsys, "bake", "--from", "ACEScg", "--to", "sRGB - Display", "--size", "9",
-                     "-o", str(tmp_path / "a.clf"))
+    code, _, _ = run(
+        capsys, "bake", "--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(tmp_path / "a.clf")
+    )
     assert code == 128 + signal.SIGTERM and list(tmp_path.iterdir()) == []
     assert run(capsys, "list")[0] == 0  # the next command in the process is not stopped
 
 
-@pytest.mark.parametrize("argv", [("build", "-o", ""), ("build", "--ocio-version", ""), ("build", ""),
-                                  ("verify", ""), ("init", ""), ("plot", "", "-o", "a.png"),
-                                  ("bake", "--from", " ", "--to", "srgb_display", "-o", "a.clf"),
-                                  ("matrix", "acescg", "")])
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ("build", "-o", ""),
+        ("build", "--ocio-version", ""),
+        ("build", ""),
+        ("verify", ""),
+        ("init", ""),
+        ("plot", "", "-o", "a.png"),
+        ("bake", "--from", " ", "--to", "srgb_display", "-o", "a.clf"),
+        ("matrix", "acescg", ""),
+    ],
+)
 def test_an_empty_value_is_refused(tmp_path, capsys, monkeypatch, argv):
     """An empty -o had meant configs/<name>, an empty --ocio-version the spec's, an empty path '.'."""
     monkeypatch.chdir(tmp_path)
@@ -403,11 +439,14 @@ def test_verify_refuses_an_empty_only(capsys, build_config, only):
     assert code == 2 and err.count("\n") == 1 and "--only" in err and "is empty" in err and out == "", err
 
 
-@pytest.mark.parametrize("argv, option", [
-    (("bake", "--from", "acescct", "--from", "acescg", "--to", "srgb_display", "-o", "a.clf"), "--from"),
-    (("bake", "--from", "acescg", "--to", "srgb_display", "--size", "5", "--size", "9", "-o", "a.clf"), "--size"),
-    (("build", "-o", "a", "--output", "b"), "--output"),
-])
+@pytest.mark.parametrize(
+    "argv, option",
+    [
+        (("bake", "--from", "acescct", "--from", "acescg", "--to", "srgb_display", "-o", "a.clf"), "--from"),
+        (("bake", "--from", "acescg", "--to", "srgb_display", "--size", "5", "--size", "9", "-o", "a.clf"), "--size"),
+        (("build", "-o", "a", "--output", "b"), "--output"),
+    ],
+)
 def test_an_option_given_twice_is_refused(tmp_path, capsys, monkeypatch, argv, option):
     monkeypatch.chdir(tmp_path)
     code, _, err = run(capsys, *argv)
@@ -417,8 +456,20 @@ def test_an_option_given_twice_is_refused(tmp_path, capsys, monkeypatch, argv, o
 
 def test_names_and_keywords_are_read_in_any_case_and_without_surrounding_blanks(tmp_path, capsys):
     out = tmp_path / "a.clf"
-    code, printed, err = run(capsys, "bake", "--from", " acescg", "--to", "srgb_display ", "--gamut-map", "CLIP",
-                             "--size", "9", "-o", str(out))
+    code, printed, err = run(
+        capsys,
+        "bake",
+        "--from",
+        " acescg",
+        "--to",
+        "srgb_display ",
+        "--gamut-map",
+        "CLIP",
+        "--size",
+        "9",
+        "-o",
+        str(out),
+    )
     assert code == 0 and "gamut mapping clip" in printed and out.exists(), err
     _, plain, _ = run(capsys, "matrix", "acescg", "lin_rec709", "--format", "json")
     code, padded, err = run(capsys, "matrix", " acescg", "lin_rec709 ", "--format", "JSON")
@@ -442,8 +493,9 @@ def test_an_empty_source_date_epoch_is_unset():
     import os
 
     env = {**os.environ, "SOURCE_DATE_EPOCH": ""}
-    done = subprocess.run([sys.executable, "-m", "generator", "info", "acescg"], capture_output=True, text=True,
-                          timeout=120, env=env)
+    done = subprocess.run(
+        [sys.executable, "-m", "generator", "info", "acescg"], capture_output=True, text=True, timeout=120, env=env
+    )
     assert done.returncode == 0 and done.stderr == "", done.stderr
 
 
@@ -480,7 +532,9 @@ def test_plot_maps_onto_the_display_asked_for(build_config, tmp_path, capsys):
     config = build_config((2, 1))
     first, chosen = tmp_path / "first.png", tmp_path / "pq.png"
     assert run(capsys, "plot", str(config), "-o", str(first), "--mapping")[0] == 0
-    assert run(capsys, "plot", str(config), "-o", str(chosen), "--mapping", "--display", "rec.2100-pq - display")[0] == 0
+    assert (
+        run(capsys, "plot", str(config), "-o", str(chosen), "--mapping", "--display", "rec.2100-pq - display")[0] == 0
+    )
     assert first.read_bytes() != chosen.read_bytes()
     code, _, err = run(capsys, "plot", str(config), "-o", str(tmp_path / "x.png"), "--mapping", "--display", "Nope")
     assert code == 2 and err.count("\n") == 1 and "unknown display 'Nope'; allowed: sRGB - Display" in err, err
@@ -493,14 +547,21 @@ def test_matrix_takes_a_shows_own_spaces_as_its_config_converts(tmp_path, capsys
     (tmp_path / "show.toml").write_text(
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "ARRI LogC4", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[custom_space]]\nname = "Caméra B"\nprimaries = [[0.70, 0.29], [0.17, 0.80], [0.13, 0.05]]\nwhite = "D65"\n',
-        encoding="utf-8")
+        encoding="utf-8",
+    )
     spec = load.load(tmp_path / "show.toml")
-    code, out, err = run(capsys, "matrix", "Caméra B", "ACEScg", "--spec", str(tmp_path / "show.toml"), "--format", "json")
-    expected = np.linalg.solve(reference.space_matrix(spec, spec.space("ACEScg")),
-                               reference.space_matrix(spec, spec.space("Caméra B")))
+    code, out, err = run(
+        capsys, "matrix", "Caméra B", "ACEScg", "--spec", str(tmp_path / "show.toml"), "--format", "json"
+    )
+    expected = np.linalg.solve(
+        reference.space_matrix(spec, spec.space("ACEScg")), reference.space_matrix(spec, spec.space("Caméra B"))
+    )
     assert code == 0 and np.allclose(json.loads(out)["matrix"], expected, rtol=0, atol=1e-15), err
     library = run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "json")[1]
-    assert run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "json", "--spec", str(tmp_path / "show.toml"))[1] == library
+    assert (
+        run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "json", "--spec", str(tmp_path / "show.toml"))[1]
+        == library
+    )
     code, _, err = run(capsys, "matrix", "Nope", "ACEScg", "--spec", str(tmp_path / "show.toml"))
     assert code == 2 and "no colour space 'Nope' in show.toml" in err and err.count("\n") == 1, err
 
@@ -513,13 +574,19 @@ def test_info_takes_a_shows_own_space_with_its_reference_and_version(tmp_path, c
         'ocio_version = "2.3"\nscene_reference = "ACEScg"\nchromatic_adaptation = "CAT16"\n'
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[custom_space]]\nname = "Wall"\naliases = ["led_wall"]\nprimaries = [[0.70, 0.29], [0.17, 0.80], [0.13, 0.05]]\n'
-        'white = 6000\ntransfer = { family = "gamma", exponent = 2.4 }\n', encoding="utf-8")
+        'white = 6000\ntransfer = { family = "gamma", exponent = 2.4 }\n',
+        encoding="utf-8",
+    )
     spec = load.load(tmp_path / "show.toml")
     code, out, err = run(capsys, "info", "LED_wall", "--spec", str(tmp_path / "show.toml"))
     assert code == 0 and "name:      Wall" in out and "to ACEScg (CAT16):" in out, err
     rows = out.split("to ACEScg (CAT16):\n")[1].splitlines()[:3]
-    assert np.allclose([[float(v) for v in row.split()] for row in rows],
-                       reference.space_matrix(spec, spec.space("Wall")), rtol=0, atol=5e-11)
+    assert np.allclose(
+        [[float(v) for v in row.split()] for row in rows],
+        reference.space_matrix(spec, spec.space("Wall")),
+        rtol=0,
+        atol=5e-11,
+    )
     assert "OCIO 2.3: analytic (Power)  (the spec builds this version)" in out and out.count("the spec builds") == 1
     assert "(the spec builds" not in run(capsys, "info", "acescct")[1]
     code, _, err = run(capsys, "info", "arri_logc4", "--spec", str(tmp_path / "show.toml"))
@@ -532,14 +599,18 @@ def test_a_config_that_is_a_device_is_refused_unread(capsys):
     assert code == 2 and err.count("\n") == 1 and "not a regular file" in err, err
 
 
-@pytest.mark.parametrize("command, name, words", [
-    ("init", "nd/sub/show.toml", "its folder"),  # made nd/sub, and left it when the write failed
-    ("init", "show.toml/", "ends in a slash"),   # wrote show.toml
-    ("plot", "nd/sub/gamuts.png", "its folder"),
-    ("plot", "gamuts", "is a folder"),           # said: unknown image format ''
-])
-def test_a_file_output_in_no_folder_or_naming_one_is_refused_and_makes_nothing(capsys, tmp_path, monkeypatch,
-                                                                              build_config, command, name, words):
+@pytest.mark.parametrize(
+    "command, name, words",
+    [
+        ("init", "nd/sub/show.toml", "its folder"),  # made nd/sub, and left it when the write failed
+        ("init", "show.toml/", "ends in a slash"),  # wrote show.toml
+        ("plot", "nd/sub/gamuts.png", "its folder"),
+        ("plot", "gamuts", "is a folder"),  # said: unknown image format ''
+    ],
+)
+def test_a_file_output_in_no_folder_or_naming_one_is_refused_and_makes_nothing(
+    capsys, tmp_path, monkeypatch, build_config, command, name, words
+):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "gamuts").mkdir()
     args = ["init", name] if command == "init" else ["plot", str(build_config((2, 1))), "-o", name]
@@ -555,12 +626,15 @@ def test_plot_display_without_mapping_is_refused(capsys, tmp_path, build_config)
     assert not any(tmp_path.iterdir())
 
 
-@pytest.mark.parametrize("name, how", [
-    ("ARRI LogC4", "(CAT02, as its publisher)"),
-    ("DaVinci Intermediate WideGamut", "(CAT02, as the ACES studio config)"),  # said: as its publisher
-    ("ACEScg", "(the same white: no adaptation)"),  # said: Bradford, though AP1 and AP0 share ACES white
-    ("sRGB Encoded Rec.709 (sRGB)", "(Bradford)"),
-])
+@pytest.mark.parametrize(
+    "name, how",
+    [
+        ("ARRI LogC4", "(CAT02, as its publisher)"),
+        ("DaVinci Intermediate WideGamut", "(CAT02, as the ACES studio config)"),  # said: as its publisher
+        ("ACEScg", "(the same white: no adaptation)"),  # said: Bradford, though AP1 and AP0 share ACES white
+        ("sRGB Encoded Rec.709 (sRGB)", "(Bradford)"),
+    ],
+)
 def test_info_says_how_and_on_whose_authority_a_gamut_adapts(capsys, name, how):
     code, out, _ = run(capsys, "info", name)
     assert code == 0 and f"to ACES2065-1 {how}:" in out, out
@@ -584,9 +658,16 @@ def test_a_full_standard_output_is_named_and_loses_no_file(tmp_path):
     """A report printed to a full device: the error names standard output (it read as a full disk,
     the build half-written), and verify writes its report folder before printing its verdict."""
     with open("/dev/full", "w") as full:
+
         def ocioforge(*argv):
-            return subprocess.run([sys.executable, "-m", "generator", *argv], stdout=full, stderr=subprocess.PIPE,
-                                  text=True, timeout=300, cwd=tmp_path)
+            return subprocess.run(
+                [sys.executable, "-m", "generator", *argv],
+                stdout=full,
+                stderr=subprocess.PIPE,
+                text=True,
+                timeout=300,
+                cwd=tmp_path,
+            )
 
         built = ocioforge("build", "-o", "show")
         checked = ocioforge("verify", "show", "--quick", "--engines", "ocio", "--report", "report")
@@ -601,22 +682,42 @@ def test_bake_view_writes_the_displays_aces_view_in_any_case(tmp_path, capsys):
     """``--view ACES 2.0`` is the display's first ACES 2.0 studio view, as in a spec; names are
     matched in any case, and the report says which view was baked."""
     out = tmp_path / "a.cube"
-    code, printed, err = run(capsys, "bake", "--from", "acescct", "--to", "srgb_display", "--view", "aces 2.0",
-                             "--size", "9", "-o", str(out))
+    code, printed, err = run(
+        capsys, "bake", "--from", "acescct", "--to", "srgb_display", "--view", "aces 2.0", "--size", "9", "-o", str(out)
+    )
     assert code == 0 and "view ACES 2.0 - SDR 100 nits (Rec.709), 9^3" in printed and out.exists(), err
     again = tmp_path / "b.cube"
-    code, _, err = run(capsys, "bake", "--from", "ACEScct", "--to", "sRGB - Display", "--view",
-                       "ACES 2.0 - SDR 100 nits (rec.709)", "--size", "9", "-o", str(again))
+    code, _, err = run(
+        capsys,
+        "bake",
+        "--from",
+        "ACEScct",
+        "--to",
+        "sRGB - Display",
+        "--view",
+        "ACES 2.0 - SDR 100 nits (rec.709)",
+        "--size",
+        "9",
+        "-o",
+        str(again),
+    )
     assert code == 0 and again.read_bytes() == out.read_bytes(), err
 
 
-@pytest.mark.parametrize("args, words", [
-    (("--view", "ACES 2.0 - HDR 1000 nits (P3 D65)"), "cannot show 'ACES 2.0 - HDR 1000 nits (P3 D65)': it is an HDR view"),
-    (("--view", "ACES 3.0"), "unknown ACES view 'ACES 3.0'"),
-    (("--view", "ACES 2.0", "--gamut-map", "scale"), "--view and --gamut-map exclude each other"),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (
+            ("--view", "ACES 2.0 - HDR 1000 nits (P3 D65)"),
+            "cannot show 'ACES 2.0 - HDR 1000 nits (P3 D65)': it is an HDR view",
+        ),
+        (("--view", "ACES 3.0"), "unknown ACES view 'ACES 3.0'"),
+        (("--view", "ACES 2.0", "--gamut-map", "scale"), "--view and --gamut-map exclude each other"),
+    ],
+)
 def test_bake_view_refuses_in_one_line_and_writes_nothing(tmp_path, capsys, args, words):
-    code, out, err = run(capsys, "bake", "--from", "ACEScct", "--to", "sRGB - Display", *args,
-                         "-o", str(tmp_path / "a.clf"))
+    code, out, err = run(
+        capsys, "bake", "--from", "ACEScct", "--to", "sRGB - Display", *args, "-o", str(tmp_path / "a.clf")
+    )
     assert code == 2 and err.startswith("error: ") and err.count("\n") == 1 and words in err and out == "", err
     assert list(tmp_path.iterdir()) == []

@@ -85,9 +85,14 @@ def test_a_folder_of_footage_is_said_not_to_be_a_build_without_force_too(tmp_pat
 
 
 @pytest.mark.parametrize("kind", ("fifo", "socket", "device"))
-@pytest.mark.parametrize("argv", (["plot", "{config}", "-o", "{out}.png", "--force"],
-                                  [*BAKE, "-o", "{out}.clf", "--force"],
-                                  ["init", "{out}.toml", "--force"]))
+@pytest.mark.parametrize(
+    "argv",
+    (
+        ["plot", "{config}", "-o", "{out}.png", "--force"],
+        [*BAKE, "-o", "{out}.clf", "--force"],
+        ["init", "{out}.toml", "--force"],
+    ),
+)
 def test_a_device_or_pipe_is_never_replaced(config, tmp_path, capsys, kind, argv):
     out = tmp_path / "out"
     suffix = next(a for a in argv if a.startswith("{out}")).removeprefix("{out}")
@@ -152,8 +157,19 @@ def test_a_report_is_written_whole_or_not_at_all(config, tmp_path, capsys):
 def test_a_spi3d_is_not_replaced_when_its_shaper_cannot_be(tmp_path, capsys):
     (tmp_path / "pair.spi3d").write_bytes(b"keep")
     (tmp_path / "pair.spi1d").mkdir()
-    code, _, err = run(capsys, "bake", "--from", "ACEScct", "--to", "sRGB - Display", "--size", "9",
-                       "-o", tmp_path / "pair.spi3d", "--force")
+    code, _, err = run(
+        capsys,
+        "bake",
+        "--from",
+        "ACEScct",
+        "--to",
+        "sRGB - Display",
+        "--size",
+        "9",
+        "-o",
+        tmp_path / "pair.spi3d",
+        "--force",
+    )
     assert one_line(code, err, "pair.spi1d: is a folder; allowed: "), err
     assert (tmp_path / "pair.spi3d").read_bytes() == b"keep"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pair.spi1d", "pair.spi3d"]
@@ -162,19 +178,22 @@ def test_a_spi3d_is_not_replaced_when_its_shaper_cannot_be(tmp_path, capsys):
 LONG = "x" * 300
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["build", "-o", "{tmp}/" + LONG], "File name too long"),
-    ([*BAKE, "-o", "{tmp}/" + LONG + ".clf"], "File name too long"),
-    (["verify", "{tmp}/" + LONG + "/config.ocio"], "File name too long"),
-    (["verify", "{config}", "--report", "{tmp}/" + LONG], "File name too long"),
-    (["plot", "{tmp}/" + LONG + "/config.ocio", "-o", "{tmp}/a.png"], "File name too long"),
-    (["build", "-o", "{tmp}/l1"], "is a link to 'l2', which does not exist (or is a loop of links)"),
-    ([*BAKE, "-o", "{tmp}/l1", "--format", "clf", "--force"], "is a link to nothing"),
-    ([*BAKE, "-o", "{tmp}/l1/a.clf"], "Too many levels of symbolic links"),
-    ([*BAKE, "-o", ".", "--format", "clf"], "names no file of its own"),
-    ([*BAKE, "-o", "/", "--format", "spi3d"], "names no file of its own"),
-    (["build", "-o", "{tmp}/x/.."], "names no folder of its own"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["build", "-o", "{tmp}/" + LONG], "File name too long"),
+        ([*BAKE, "-o", "{tmp}/" + LONG + ".clf"], "File name too long"),
+        (["verify", "{tmp}/" + LONG + "/config.ocio"], "File name too long"),
+        (["verify", "{config}", "--report", "{tmp}/" + LONG], "File name too long"),
+        (["plot", "{tmp}/" + LONG + "/config.ocio", "-o", "{tmp}/a.png"], "File name too long"),
+        (["build", "-o", "{tmp}/l1"], "is a link to 'l2', which does not exist (or is a loop of links)"),
+        ([*BAKE, "-o", "{tmp}/l1", "--format", "clf", "--force"], "is a link to nothing"),
+        ([*BAKE, "-o", "{tmp}/l1/a.clf"], "Too many levels of symbolic links"),
+        ([*BAKE, "-o", ".", "--format", "clf"], "names no file of its own"),
+        ([*BAKE, "-o", "/", "--format", "spi3d"], "names no file of its own"),
+        (["build", "-o", "{tmp}/x/.."], "names no folder of its own"),
+    ],
+)
 def test_a_path_that_cannot_be_used_is_one_line(config, tmp_path, capsys, monkeypatch, argv, words):
     """A name too long, a loop of links, a path naming no file: one line, exit 2, nothing left
     behind (each was a traceback, exit 1; build -o x/.. left x/ and x/....old.XXXX)."""
@@ -198,11 +217,14 @@ def test_a_deleted_working_directory_is_one_line(tmp_path, capsys, monkeypatch, 
     assert one_line(code, err, "the working directory: No such file or directory"), err
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["verify", "a\nb.ocio"], "a\\nb.ocio"),
-    (["build", "no\npe.toml"], "no\\npe.toml"),
-    (["build", "-o", "afile/x\ny"], "afile/x\\ny"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["verify", "a\nb.ocio"], "a\\nb.ocio"),
+        (["build", "no\npe.toml"], "no\\npe.toml"),
+        (["build", "-o", "afile/x\ny"], "afile/x\\ny"),
+    ],
+)
 def test_a_path_holding_a_newline_is_one_line(tmp_path, capsys, monkeypatch, argv, words):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "afile").write_bytes(b"")

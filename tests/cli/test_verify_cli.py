@@ -31,7 +31,9 @@ def run(command, *args):
 
 
 def test_verify_prints_a_row_per_check_and_a_summary(config, tmp_path):
-    result = run("verify", config, "--engines", "ocio", "--quick", "--only", " -> ACES2065-1", "--report", tmp_path / "report")
+    result = run(
+        "verify", config, "--engines", "ocio", "--quick", "--only", " -> ACES2065-1", "--report", tmp_path / "report"
+    )
     assert result.exit_code == 0, result.output
     lines = result.output.splitlines()
     assert lines[0].split() == ["check", "item", "engine", "max", "p99", "tolerance", "verdict"]
@@ -45,19 +47,24 @@ def test_verify_prints_a_row_per_check_and_a_summary(config, tmp_path):
 
 
 def test_verify_fails_and_names_the_broken_lut(config):
-    (config.parent / "luts" / "n_log_to_linear.spi1d").write_text("Version 1\nFrom 0 1\nLength 2\nComponents 1\n{\n 0\n 1\n}\n")
+    (config.parent / "luts" / "n_log_to_linear.spi1d").write_text(
+        "Version 1\nFrom 0 1\nLength 2\nComponents 1\n{\n 0\n 1\n}\n"
+    )
     result = run("verify", config, "--engines", "ocio", "--quick", "--summary")
     assert result.exit_code == 1
     assert "FAIL: LUT file luts/n_log_to_linear.spi1d" in result.output
     assert "worst input" in result.output
 
 
-@pytest.mark.parametrize("args, message", [
-    (["missing/config.ocio"], "no such config file"),
-    (["{config}", "--engines", "ocio,nuke"], "unknown engine"),
-    (["{config}", "--engines", "ocio", "--quick", "--only", "zzz"], "--only:zzz: matches no check title"),
-    (["{config}", "--engines", ","], "--engines names none"),
-])
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["missing/config.ocio"], "no such config file"),
+        (["{config}", "--engines", "ocio,nuke"], "unknown engine"),
+        (["{config}", "--engines", "ocio", "--quick", "--only", "zzz"], "--only:zzz: matches no check title"),
+        (["{config}", "--engines", ","], "--engines names none"),
+    ],
+)
 def test_verify_bad_input_is_one_line_and_exit_2(config, args, message):
     result = run("verify", *[a.format(config=config) for a in args])
     assert result.exit_code == 2
@@ -91,9 +98,24 @@ def test_plot_refuses_an_unknown_format_and_writes_nothing(config, tmp_path):
     assert not list(tmp_path.glob("diagram*"))
 
 
-@pytest.mark.parametrize("argv", (["plot", "{config}", "-o", "{blocked}/diagram.png"],
-                                  ["verify", "{config}", "--engines", "ocio", "--quick", "--only", " -> ACES2065-1",
-                                   "--summary", "--report", "{blocked}/report"]))
+@pytest.mark.parametrize(
+    "argv",
+    (
+        ["plot", "{config}", "-o", "{blocked}/diagram.png"],
+        [
+            "verify",
+            "{config}",
+            "--engines",
+            "ocio",
+            "--quick",
+            "--only",
+            " -> ACES2065-1",
+            "--summary",
+            "--report",
+            "{blocked}/report",
+        ],
+    ),
+)
 def test_an_unwritable_image_or_report_is_one_line_and_exit_2(config, tmp_path, capsys, argv):
     """The path and the OS's reason, exit status 2 (not verify's 1 for failed checks)."""
     blocked = tmp_path / "blocked"
@@ -113,21 +135,25 @@ def test_verify_refuses_a_config_holding_what_its_spec_does_not(config):
 
     cfg = ocio.Config.CreateFromFile(str(config))
     pasted = ocio.ColorSpace(name="Bogus Space")
-    pasted.setTransform(ocio.MatrixTransform([2, 0, 0, 0, 0, 0.1, 0, 0, 0, 0, 5, 0, 0, 0, 0, 1]),
-                        ocio.COLORSPACE_DIR_TO_REFERENCE)
+    pasted.setTransform(
+        ocio.MatrixTransform([2, 0, 0, 0, 0, 0.1, 0, 0, 0, 0, 5, 0, 0, 0, 0, 1]), ocio.COLORSPACE_DIR_TO_REFERENCE
+    )
     cfg.addColorSpace(pasted)
     config.write_text(cfg.serialize())
     result = run("verify", config, "--engines", "ocio", "--quick")
     assert result.exit_code == 2 and "holds 'Bogus Space'" in result.stderr and result.stderr.count("\n") == 1
 
 
-@pytest.mark.parametrize("edit, words", [
-    (lambda d: d.update(chromatic_adaptation="foo"), "unknown chromatic adaptation 'foo'"),
-    (lambda d: d.update(scene_reference="Nope"), ":scene_reference: 'Nope' names nothing the spec defines"),
-    (lambda d: d.update(ocio_version=["9", "9"]), ":ocio_version[0]: expected an integer, got '9'"),
-    (lambda d: d["colour_spaces"][1]["gamut"].update(primaries=[[0.7, 0.3]]), "expected 3 entries or more, got 1"),
-    (lambda d: d["colour_spaces"][0].update(gamut=None), "has no gamut"),
-])
+@pytest.mark.parametrize(
+    "edit, words",
+    [
+        (lambda d: d.update(chromatic_adaptation="foo"), "unknown chromatic adaptation 'foo'"),
+        (lambda d: d.update(scene_reference="Nope"), ":scene_reference: 'Nope' names nothing the spec defines"),
+        (lambda d: d.update(ocio_version=["9", "9"]), ":ocio_version[0]: expected an integer, got '9'"),
+        (lambda d: d["colour_spaces"][1]["gamut"].update(primaries=[[0.7, 0.3]]), "expected 3 entries or more, got 1"),
+        (lambda d: d["colour_spaces"][0].update(gamut=None), "has no gamut"),
+    ],
+)
 def test_an_edited_stored_spec_is_one_line_and_exit_2(config, edit, words):
     """What later commands take for granted is checked as the stored spec is read (each of these
     raised a traceback, exit 1, deep inside verify)."""
@@ -144,7 +170,9 @@ def test_verify_reads_every_display_whatever_the_active_ones(config, monkeypatch
     holds every display and view its spec builds, and verify checks them all."""
     monkeypatch.setenv("OCIO_ACTIVE_DISPLAYS", "sRGB - Display")
     monkeypatch.setenv("OCIO_ACTIVE_VIEWS", "Colorimetric,Raw")
-    result = run("verify", config, "--engines", "ocio", "--quick", "--only", "Display P3 - Display / Scale", "--summary")
+    result = run(
+        "verify", config, "--engines", "ocio", "--quick", "--only", "Display P3 - Display / Scale", "--summary"
+    )
     assert result.exit_code == 0, result.output
 
 
@@ -194,12 +222,15 @@ def test_verify_takes_a_builds_folder_for_its_config(config, capsys, tmp_path):
     assert "is a folder without config.ocio; allowed: " in err and err.count("\n") == 1, err
 
 
-@pytest.mark.parametrize("argv, words", [
-    (["verify", "ocio://default"], "is one of OpenColorIO's builtin configs"),  # said: ocio:/default, no such file
-    (["verify", "{config}", "--engines", ","], "ocio,oiiotool,ocioconvert,blender,gpu"),  # gpu was left out
-    # root passes os.access everywhere: /proc took the run, then failed making its folder
-    (["verify", "{config}", "--engines", "ocio", "--report", "/proc/ocioforge-report"], "cannot write"),
-])
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["verify", "ocio://default"], "is one of OpenColorIO's builtin configs"),  # said: ocio:/default, no such file
+        (["verify", "{config}", "--engines", ","], "ocio,oiiotool,ocioconvert,blender,gpu"),  # gpu was left out
+        # root passes os.access everywhere: /proc took the run, then failed making its folder
+        (["verify", "{config}", "--engines", "ocio", "--report", "/proc/ocioforge-report"], "cannot write"),
+    ],
+)
 def test_what_verify_cannot_do_is_one_line_before_any_check(config, capsys, argv, words):
     with pytest.raises(SystemExit) as exited:
         main([a.format(config=config) for a in argv])

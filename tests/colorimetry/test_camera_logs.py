@@ -12,7 +12,6 @@ import pytest
 from generator import tolerances
 from generator.colorimetry.curves import CURVES
 
-
 # --- LogCamera records against colour-science's implementation of the vendor formula -------
 
 COLOUR = {

@@ -8,16 +8,47 @@ import pytest
 
 from generator import tolerances
 from generator.colorimetry.curves import CURVES, HALF_MAX
-from generator.colorimetry.transfer import Function, LogCamera, PiecewisePower, probed_values, float32_departure
+from generator.colorimetry.transfer import Function, LogCamera, PiecewisePower, float32_departure, probed_values
 
 LOG_CAMERA = {
-    "ACEScct", "ARRI LogC3 (EI800)", "ARRI LogC4", "S-Log3", "Log3G10", "V-Log", "BMDFilm Gen5",
-    "DaVinci Intermediate", "D-Log", "F-Log", "F-Log2", "L-Log", "T-Log", "T-LogE", "JPLog2",
+    "ACEScct",
+    "ARRI LogC3 (EI800)",
+    "ARRI LogC4",
+    "S-Log3",
+    "Log3G10",
+    "V-Log",
+    "BMDFilm Gen5",
+    "DaVinci Intermediate",
+    "D-Log",
+    "F-Log",
+    "F-Log2",
+    "L-Log",
+    "T-Log",
+    "T-LogE",
+    "JPLog2",
 }
 FUNCTION = {
-    "ACEScc", "Canon Log 2", "Canon Log 3", "Apple Log", "N-Log", "Samsung Log", "Mi-Log", "ST 2084", "HLG",
+    "ACEScc",
+    "Canon Log 2",
+    "Canon Log 3",
+    "Apple Log",
+    "N-Log",
+    "Samsung Log",
+    "Mi-Log",
+    "ST 2084",
+    "HLG",
 }
-OTHER = {"linear", "sRGB", "sRGB extended", "Rec.709", "Gamma 1.8", "Gamma 2.2", "Adobe RGB (1998)", "Gamma 2.4", "Gamma 2.6"}
+OTHER = {
+    "linear",
+    "sRGB",
+    "sRGB extended",
+    "Rec.709",
+    "Gamma 1.8",
+    "Gamma 2.2",
+    "Adobe RGB (1998)",
+    "Gamma 2.4",
+    "Gamma 2.6",
+}
 
 
 def relative(actual, expected) -> np.ndarray:
@@ -229,20 +260,26 @@ def test_a_log_without_a_toe_is_judged_the_same_however_its_samples_fall_near_th
     assert max(figures) <= tolerances.CURVE_FLOAT32_RELATIVE / 5 and abs(figures[0] - figures[1]) < 1e-7
 
 
-@pytest.mark.parametrize("gamma, offset", [(2.4, 0.055), (1.0 / 0.45, 0.099), (2.4, 1e-9), (10.0, 1e-4), (1.0000001, 0.05)])
+@pytest.mark.parametrize(
+    "gamma, offset", [(2.4, 0.055), (1.0 / 0.45, 0.099), (2.4, 1e-9), (10.0, 1e-4), (1.0000001, 0.05)]
+)
 def test_the_float32_piecewise_power_is_ocios(gamma, offset):
     """PiecewisePower.float32 is OCIO's CPU renderer of ExponentWithLinearTransform, bit for bit:
     its clamps of gamma and offset (OCIO_MONCURVE_EPS) and float32 parameters included."""
     curve = PiecewisePower(gamma, offset)
     codes, light = (v.astype(np.float32) for v in probed_values(curve, 257))
-    transform = ocio.ExponentWithLinearTransform(gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0],
-                                                 negativeStyle=ocio.NEGATIVE_LINEAR)
+    transform = ocio.ExponentWithLinearTransform(
+        gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0], negativeStyle=ocio.NEGATIVE_LINEAR
+    )
     config = ocio.Config.CreateRaw()
     ours = curve.float32(codes, light)
-    for values, direction, emulated in ((codes, ocio.TRANSFORM_DIR_FORWARD, ours[0]),
-                                        (light, ocio.TRANSFORM_DIR_INVERSE, ours[1])):
+    for values, direction, emulated in (
+        (codes, ocio.TRANSFORM_DIR_FORWARD, ours[0]),
+        (light, ocio.TRANSFORM_DIR_INVERSE, ours[1]),
+    ):
         transform.setDirection(direction)
         pixels = np.ascontiguousarray(np.repeat(values[:, None], 3, axis=1))
         config.getProcessor(transform).getOptimizedCPUProcessor(
-            ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, ocio.OPTIMIZATION_LOSSLESS).applyRGB(pixels)
+            ocio.BIT_DEPTH_F32, ocio.BIT_DEPTH_F32, ocio.OPTIMIZATION_LOSSLESS
+        ).applyRGB(pixels)
         assert np.array_equal(pixels[:, 0], emulated, equal_nan=True), direction

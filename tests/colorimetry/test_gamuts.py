@@ -40,8 +40,11 @@ BUILTINS = {
 
 
 #: Camera gamuts with no OCIO builtin, and the ACES studio config's linear space of each.
-STUDIO_SPACES = {"Blackmagic Wide Gamut": "Linear BMD WideGamut Gen5", "DaVinci Wide Gamut": "Linear DaVinci WideGamut",
-                 "D-Gamut": "Linear D-Gamut"}
+STUDIO_SPACES = {
+    "Blackmagic Wide Gamut": "Linear BMD WideGamut Gen5",
+    "DaVinci Wide Gamut": "Linear DaVinci WideGamut",
+    "D-Gamut": "Linear D-Gamut",
+}
 
 
 def test_every_published_adaptation_is_checked():
@@ -61,8 +64,12 @@ def test_published_adaptation_reproduces_the_studio_configs_matrix(name):
     config.getProcessor(STUDIO_SPACES[name], "ACES2065-1").getDefaultCPUProcessor().applyRGB(pixels)
     studio = pixels.astype(np.float64).T
     gamut, aces = gamuts()[name], gamuts()["AP0"]
-    assert np.abs(rgb_to_rgb(gamut, aces, gamut.adaptation) - studio).max() <= tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
-    assert np.abs(rgb_to_rgb(gamut, aces, "Bradford") - studio).max() > 100 * tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+    assert (
+        np.abs(rgb_to_rgb(gamut, aces, gamut.adaptation) - studio).max() <= tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+    )
+    assert (
+        np.abs(rgb_to_rgb(gamut, aces, "Bradford") - studio).max() > 100 * tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+    )
 
 
 @pytest.mark.parametrize("name", sorted(BUILTINS))
@@ -84,8 +91,10 @@ def test_published_adaptation_reproduces_the_builtin_camera_matrix(name):
     derived = rgb_to_rgb(gamut, aces, gamut.adaptation)
     assert np.abs(derived - published).max() <= tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
     if gamut.adaptation != "Bradford":
-        assert np.abs(rgb_to_rgb(gamut, aces, "Bradford") - published).max() > 100 * \
-            tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+        assert (
+            np.abs(rgb_to_rgb(gamut, aces, "Bradford") - published).max()
+            > 100 * tolerances.PUBLISHED_CAMERA_MATRIX_ABSOLUTE
+        )
 
 
 def test_a_camera_space_is_adapted_as_its_publisher_whatever_the_spec():

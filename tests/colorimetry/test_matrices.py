@@ -9,12 +9,28 @@ from generator.tolerances import published_rounding
 
 # (gamut, published RGB->XYZ, decimals, source)
 PUBLISHED_NPM = [
-    ("AP0", [[0.9525523959, 0.0, 0.0000936786], [0.3439664498, 0.7281660966, -0.0721325464],
-             [0.0, 0.0, 1.0088251844]], 10, "SMPTE ST 2065-1:2012, 4.1.2"),
-    ("AP1", [[0.6624541811, 0.1340042065, 0.1561876870], [0.2722287168, 0.6740817658, 0.0536895174],
-             [-0.0055746495, 0.0040607335, 1.0103391003]], 10, "Academy S-2014-004, 4.1.2"),
-    ("Rec.709", [[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]], 4,
-     "IEC 61966-2-1:1999, 5.2"),
+    (
+        "AP0",
+        [[0.9525523959, 0.0, 0.0000936786], [0.3439664498, 0.7281660966, -0.0721325464], [0.0, 0.0, 1.0088251844]],
+        10,
+        "SMPTE ST 2065-1:2012, 4.1.2",
+    ),
+    (
+        "AP1",
+        [
+            [0.6624541811, 0.1340042065, 0.1561876870],
+            [0.2722287168, 0.6740817658, 0.0536895174],
+            [-0.0055746495, 0.0040607335, 1.0103391003],
+        ],
+        10,
+        "Academy S-2014-004, 4.1.2",
+    ),
+    (
+        "Rec.709",
+        [[0.4124, 0.3576, 0.1805], [0.2126, 0.7152, 0.0722], [0.0193, 0.1192, 0.9505]],
+        4,
+        "IEC 61966-2-1:1999, 5.2",
+    ),
 ]
 
 
@@ -32,8 +48,11 @@ def test_rec2020_luminance_row_matches_bt2020():
 
 def test_ap0_to_ap1_matches_academy():
     # Academy S-2014-004, 4.1.3 (same white: no adaptation involved).
-    published = [[1.4514393161, -0.2365107469, -0.2149285693], [-0.0765537734, 1.1762296998, -0.0996759264],
-                 [0.0083161484, -0.0060324498, 0.9977163014]]
+    published = [
+        [1.4514393161, -0.2365107469, -0.2149285693],
+        [-0.0765537734, 1.1762296998, -0.0996759264],
+        [0.0083161484, -0.0060324498, 0.9977163014],
+    ]
     derived = rgb_to_rgb(gamuts()["AP0"], gamuts()["AP1"])
     assert np.abs(derived - published).max() <= published_rounding(10)
 
@@ -51,8 +70,11 @@ def test_bradford_d65_to_d50_matches_lindbloom():
     def xy(X, Z):
         return (X / (X + 1 + Z), 1 / (X + 1 + Z))
 
-    published = [[1.0478112, 0.0228866, -0.0501270], [0.0295424, 0.9904844, -0.0170491],
-                 [-0.0092345, 0.0150436, 0.7521316]]
+    published = [
+        [1.0478112, 0.0228866, -0.0501270],
+        [0.0295424, 0.9904844, -0.0170491],
+        [-0.0092345, 0.0150436, 0.7521316],
+    ]
     derived = adaptation_matrix(xy(0.95047, 1.08883), xy(0.96422, 0.82521), "Bradford")
     assert np.abs(derived - published).max() <= published_rounding(7)
 
@@ -60,9 +82,11 @@ def test_bradford_d65_to_d50_matches_lindbloom():
 def test_aces_to_rec709_bradford_matches_studio_config():
     # The AP0 -> linear Rec.709 matrix of OCIO's ACES studio config (Bradford, D60 -> D65),
     # printed there with 15 significant digits; ours must agree to float64 rounding of those digits.
-    published = [[2.52168618674388, -1.13413098823972, -0.387555198504164],
-                 [-0.276479914229922, 1.37271908766826, -0.096239173438334],
-                 [-0.0153780649660342, -0.152975335867399, 1.16835340083343]]
+    published = [
+        [2.52168618674388, -1.13413098823972, -0.387555198504164],
+        [-0.276479914229922, 1.37271908766826, -0.096239173438334],
+        [-0.0153780649660342, -0.152975335867399, 1.16835340083343],
+    ]
     derived = rgb_to_rgb(gamuts()["AP0"], gamuts()["Rec.709"], "Bradford")
     assert np.abs(derived - published).max() <= published_rounding(14)
 
@@ -98,8 +122,7 @@ def test_cone_matrices_are_colour_sciences_and_adaptation_agrees(cat):
     for source in whites:
         for target in whites:
             if source != target:
-                theirs = matrix_chromatic_adaptation_VonKries(xy_to_XYZ(source), xy_to_XYZ(target),
-                                                              transform=CATS[cat])
+                theirs = matrix_chromatic_adaptation_VonKries(xy_to_XYZ(source), xy_to_XYZ(target), transform=CATS[cat])
                 assert np.array_equal(adaptation_matrix(source, target, cat), theirs)
 
 

@@ -68,6 +68,7 @@ def test_a_perceptual_bake_lands_its_source_gamut_on_the_displays(default_spec):
     rec709 = default_spec.space("Linear Rec.709 (sRGB)")
     cube = np.random.default_rng(2).random((2000, 3))
     linear = reference.apply_matrix(reference.source_gamut_matrix(default_spec, rec709, inner), cube)
-    kept = reference.gamut_map(inner, "perceptual", linear,
-                               reference.method_params(default_spec, "perceptual", None, rec709, inner))
+    kept = reference.gamut_map(
+        inner, "perceptual", linear, reference.method_params(default_spec, "perceptual", None, rec709, inner)
+    )
     np.testing.assert_allclose(kept, linear, rtol=0, atol=1e-12)

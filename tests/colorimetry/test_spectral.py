@@ -50,9 +50,7 @@ def test_cie_rgb_matrix_matches_the_published_1931_matrix():
     """
     npm = colour.normalised_primary_matrix(spectral.cie_rgb_primaries(), spectral.CIE_RGB_WHITEPOINT)
     np.testing.assert_allclose(PUBLISHED_CIE_RGB_TO_XYZ.sum(axis=1), 1.0, rtol=0, atol=1e-12)
-    np.testing.assert_allclose(
-        npm[1], PUBLISHED_CIE_RGB_TO_XYZ[1], rtol=0, atol=tolerances.PUBLISHED_MATRIX_ABSOLUTE
-    )
+    np.testing.assert_allclose(npm[1], PUBLISHED_CIE_RGB_TO_XYZ[1], rtol=0, atol=tolerances.PUBLISHED_MATRIX_ABSOLUTE)
     np.testing.assert_array_equal(np.round(npm[[0, 2]], 2), PUBLISHED_CIE_RGB_TO_XYZ[[0, 2]])
     # In the published scaling, Y of the red primary is 1.
     scaled = npm / PUBLISHED_LUMINANCE_OF_RED
@@ -225,8 +223,9 @@ def test_narrow_primaries_sampled_every_5_or_10_nm_keep_their_chromaticity(tmp_p
 
     peaks = ((632.0, 9.0), (525.0, 15.0), (462.0, 10.0))
     rows = np.arange(380, 781, step)
-    lines = ["wavelength,r,g,b"] + [f"{w}," + ",".join(f"{np.exp(-0.5 * ((w - c) / s) ** 2):.10f}" for c, s in peaks)
-                                    for w in rows]
+    lines = ["wavelength,r,g,b"] + [
+        f"{w}," + ",".join(f"{np.exp(-0.5 * ((w - c) / s) ** 2):.10f}" for c, s in peaks) for w in rows
+    ]
     got = spectral.read_primaries_spectra_csv(_write(tmp_path, "wall.csv", "\n".join(lines) + "\n"))
     cmfs = colour.MSDS_CMFS["CIE 1931 2 Degree Standard Observer"].trim(colour.SpectralShape(380, 780, 1))
     nm = cmfs.wavelengths

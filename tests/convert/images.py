@@ -65,4 +65,4 @@ def ocio_applied(config: Path, values: np.ndarray, src: str, dst: str = "", disp
     proc = cfg.getProcessor(src, display, view, ocio.TRANSFORM_DIR_FORWARD) if display else cfg.getProcessor(src, dst)
     rgb = np.ascontiguousarray(values[..., :3], dtype=np.float32).reshape(-1, 3)
     proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS).applyRGB(rgb)
-    return rgb.reshape(values.shape[:-1] + (3,))
+    return rgb.reshape((*values.shape[:-1], 3))

@@ -19,8 +19,9 @@ def cluster():
         from distributed import LocalCluster
     except ImportError:
         host_missing("Dask distributed is not installed", "pip install -e '.[test,dask]', as make test does")
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                      dashboard_address=None) as local:
+    with LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1", dashboard_address=None
+    ) as local:
         yield local
 
 
@@ -35,8 +36,12 @@ def _frames(tmp_path, count):
 
     folder = tmp_path / "in"
     for f in range(1, count + 1):
-        images.write(folder / f"s.{f:04d}.exr" if folder.mkdir(exist_ok=True) is None else None,
-                     np.tile(images.pixels(f), (4, 4, 1)), "half", compression="zip")
+        images.write(
+            folder / f"s.{f:04d}.exr" if folder.mkdir(exist_ok=True) is None else None,
+            np.tile(images.pixels(f), (4, 4, 1)),
+            "half",
+            compression="zip",
+        )
     return lambda out: sources((str(folder / "s.####.exr"),), None, str(out), ".exr")
 
 
@@ -46,8 +51,9 @@ def test_a_cluster_writes_the_bytes_a_local_run_writes(tmp_path, build_config, c
     config = build_config((2, 1))
     listed = _frames(tmp_path, 4)
     plan, _ = _plan(config, None)
-    local = run(plan, listed(tmp_path / "local"), lambda r: None, jobs=1) if (tmp_path / "local").mkdir() is None \
-        else None
+    local = (
+        run(plan, listed(tmp_path / "local"), lambda r: None, jobs=1) if (tmp_path / "local").mkdir() is None else None
+    )
     (tmp_path / "cluster").mkdir()
     remote = run(plan, listed(tmp_path / "cluster"), lambda r: None, scheduler=cluster.scheduler_address)
     assert all(r.ok for r in local + remote) and len(remote) == 4

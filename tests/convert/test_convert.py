@@ -29,8 +29,9 @@ def config(build_config):
 def test_output_is_pyopencolorio_on_the_same_pixels(tmp_path, capsys, config):
     (tmp_path / "in").mkdir()
     source = images.write(tmp_path / "in" / "p.exr", images.pixels(1, 5), "float", compression="zip")
-    code, out, _ = convert(capsys, source, "--config", config, "--from", "ACEScct", "--to", "ACEScg", "-o",
-                           tmp_path / "out", "--jobs", 1)
+    code, out, _ = convert(
+        capsys, source, "--config", config, "--from", "ACEScct", "--to", "ACEScg", "-o", tmp_path / "out", "--jobs", 1
+    )
     assert code == 0 and "1 written" in out
     written, spec = images.read(tmp_path / "out" / "p.exr")
     values, _ = images.read(source)
@@ -40,14 +41,36 @@ def test_output_is_pyopencolorio_on_the_same_pixels(tmp_path, capsys, config):
     assert spec.get_string_attribute("ocioforge:ColorSpace") == "ACEScg"
 
 
-@pytest.mark.parametrize("fmt, depth, bits", [("png", "uint8", 8), ("png", "uint16", 16), ("tiff", "uint16", 16),
-                                              ("dpx", "uint10", 10), ("exr", "half", 0)])
+@pytest.mark.parametrize(
+    "fmt, depth, bits",
+    [("png", "uint8", 8), ("png", "uint16", 16), ("tiff", "uint16", 16), ("dpx", "uint10", 10), ("exr", "half", 0)],
+)
 def test_formats_hold_the_processor_output_in_their_precision(tmp_path, capsys, config, fmt, depth, bits):
     (tmp_path / "in").mkdir()
     source = images.write(tmp_path / "in" / "p.exr", images.pixels(2), "half")
-    code, out, _ = convert(capsys, source, "--config", config, "--from", "ACEScg", "--display", "sRGB - Display",
-                           "--view", "Colorimetric", "-o", tmp_path / "out", "--format", fmt, "--depth", depth,
-                           "--jobs", 1, "--verify", "--sample", "all")
+    code, out, _ = convert(
+        capsys,
+        source,
+        "--config",
+        config,
+        "--from",
+        "ACEScg",
+        "--display",
+        "sRGB - Display",
+        "--view",
+        "Colorimetric",
+        "-o",
+        tmp_path / "out",
+        "--format",
+        fmt,
+        "--depth",
+        depth,
+        "--jobs",
+        1,
+        "--verify",
+        "--sample",
+        "all",
+    )
     assert code == 0, out
     written_path = next((tmp_path / "out").iterdir())
     values, _ = images.read(source)
@@ -83,14 +106,28 @@ def test_windows_tiles_metadata_and_parts_are_kept(tmp_path, capsys, config):
         assert index == 0 or out.open(str(path), spec, "AppendSubimage")
         assert out.write_image(images.pixels(10 + index, spec.nchannels))
     out.close()
-    code, stdout, _ = convert(capsys, path, "--config", config, "--from", "ACEScg", "--to", "ACEScct", "-o",
-                              tmp_path / "out", "--jobs", 1, "--verify", "--memory", 1)
+    code, stdout, _ = convert(
+        capsys,
+        path,
+        "--config",
+        config,
+        "--from",
+        "ACEScg",
+        "--to",
+        "ACEScct",
+        "-o",
+        tmp_path / "out",
+        "--jobs",
+        1,
+        "--verify",
+        "--memory",
+        1,
+    )
     assert code == 0, stdout
     for index in range(2):
         written, spec = images.read(tmp_path / "out" / "multi.exr", subimage=index)
         values, source = images.read(path, subimage=index)
-        assert (spec.x, spec.y, spec.full_width, spec.full_height, spec.tile_width) == \
-            (5, 3, 80, 60, source.tile_width)
+        assert (spec.x, spec.y, spec.full_width, spec.full_height, spec.tile_width) == (5, 3, 80, 60, source.tile_width)
         assert spec.get_string_attribute("Artist") == "someone" and spec.get_string_attribute("compression") == "piz"
         expected = images.ocio_applied(config, values, "ACEScg", "ACEScct")
         assert np.array_equal(written[..., :3], expected.astype(np.float16).astype(np.float32))
@@ -111,20 +148,56 @@ def test_corrupt_and_truncated_frames_fail_alone(tmp_path, capsys, config):
     frames = images.sequence(tmp_path / "in", "s", range(1, 5))
     frames[1].write_bytes(frames[1].read_bytes()[: len(frames[1].read_bytes()) // 2])  # truncated
     frames[2].write_bytes(b"not an image at all" * 10)  # corrupt
-    code, out, _ = convert(capsys, tmp_path / "in" / "s.####.exr", "--config", config, "--from", "ACEScg", "--to",
-                           "ACEScct", "-o", tmp_path / "out", "--jobs", 2)
+    code, out, _ = convert(
+        capsys,
+        tmp_path / "in" / "s.####.exr",
+        "--config",
+        config,
+        "--from",
+        "ACEScg",
+        "--to",
+        "ACEScct",
+        "-o",
+        tmp_path / "out",
+        "--jobs",
+        2,
+    )
     assert code == 1
     assert "FAILED" in out and "s.0002.exr" in out and "s.0003.exr" in out and "2 written" in out and "2 failed" in out
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["s.0001.exr", "s.0004.exr"]
-    code, out, _ = convert(capsys, tmp_path / "in" / "s.####.exr", "--config", config, "--from", "ACEScg", "--to",
-                           "ACEScct", "-o", tmp_path / "out2", "--jobs", 1, "--fail-fast")
+    code, out, _ = convert(
+        capsys,
+        tmp_path / "in" / "s.####.exr",
+        "--config",
+        config,
+        "--from",
+        "ACEScg",
+        "--to",
+        "ACEScct",
+        "-o",
+        tmp_path / "out2",
+        "--jobs",
+        1,
+        "--fail-fast",
+    )
     assert code == 1 and "1 written" in out and "1 failed" in out and "2 not run" in out
 
 
 def test_skip_existing_resumes_and_force_replaces(tmp_path, capsys, config):
     images.sequence(tmp_path / "in", "s", range(1, 4))
-    args = (tmp_path / "in" / "s.####.exr", "--config", config, "--from", "ACEScg", "--to", "ACEScct", "-o",
-            tmp_path / "out", "--jobs", 1)
+    args = (
+        tmp_path / "in" / "s.####.exr",
+        "--config",
+        config,
+        "--from",
+        "ACEScg",
+        "--to",
+        "ACEScct",
+        "-o",
+        tmp_path / "out",
+        "--jobs",
+        1,
+    )
     assert convert(capsys, *args, "--frames", "1-2")[0] == 0
     before = (tmp_path / "out" / "s.0001.exr").stat().st_mtime_ns
     code, out, _ = convert(capsys, *args, "--skip-existing")
@@ -139,8 +212,9 @@ def test_frames_read_as_their_metadata_or_the_file_rules(tmp_path, capsys, confi
     (tmp_path / "in").mkdir()
     images.write(tmp_path / "in" / "tagged.exr", images.pixels(3), "half", ocioforge__ColorSpace="ACEScct")
     images.write(tmp_path / "in" / "plain.exr", images.pixels(4), "half")
-    code, out, _ = convert(capsys, tmp_path / "in", "--config", config, "--to", "ACEScct", "-o", tmp_path / "out",
-                           "--jobs", 1)
+    code, out, _ = convert(
+        capsys, tmp_path / "in", "--config", config, "--to", "ACEScct", "-o", tmp_path / "out", "--jobs", 1
+    )
     assert code == 0, out
     tagged, _ = images.read(tmp_path / "out" / "tagged.exr")
     assert np.array_equal(tagged, images.read(tmp_path / "in" / "tagged.exr")[0])  # ACEScct to itself
@@ -160,13 +234,26 @@ def test_verify_names_a_frame_that_departs_with_its_worst_pixel(tmp_path, capsys
     text = (folder / "config.ocio").read_text()
     import re
 
-    block = text[text.index("name: ACEScct"):]
+    block = text[text.index("name: ACEScct") :]
     match = re.search(r"matrix: \[([-0-9.e]+)", block)
     edited = block.replace(match.group(0), f"matrix: [{float(match.group(1)) * 1.01!r}", 1)
     (folder / "config.ocio").write_text(text[: text.index("name: ACEScct")] + edited)
     images.sequence(tmp_path / "in", "s", [1])
-    code, out, _ = convert(capsys, tmp_path / "in" / "s.0001.exr", "--config", folder, "--from", "ACEScct", "--to",
-                           "ACEScg", "-o", tmp_path / "out", "--jobs", 1, "--verify")
+    code, out, _ = convert(
+        capsys,
+        tmp_path / "in" / "s.0001.exr",
+        "--config",
+        folder,
+        "--from",
+        "ACEScct",
+        "--to",
+        "ACEScg",
+        "-o",
+        tmp_path / "out",
+        "--jobs",
+        1,
+        "--verify",
+    )
     assert code == 1
     assert "DEPARTS" in out and "pixel (" in out and "above 0.0001" in out and "1 depart" in out
 
@@ -183,8 +270,23 @@ def test_sigkill_leaves_no_partial_frame_under_a_final_name(tmp_path, config):
     big = np.tile(big, (12, 12, 1))  # 768 x 576: frames that take a moment
     for f in range(1, 13):
         images.write(folder / f"s.{f:04d}.exr", big, "float", compression="zip")
-    args = [sys.executable, "-m", "generator", "convert", str(folder / "s.####.exr"), "--config", str(config),
-            "--from", "ACEScg", "--to", "ACEScct", "-o", str(tmp_path / "out"), "--jobs", "2"]
+    args = [
+        sys.executable,
+        "-m",
+        "generator",
+        "convert",
+        str(folder / "s.####.exr"),
+        "--config",
+        str(config),
+        "--from",
+        "ACEScg",
+        "--to",
+        "ACEScct",
+        "-o",
+        str(tmp_path / "out"),
+        "--jobs",
+        "2",
+    ]
     process = subprocess.Popen(args, start_new_session=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and not any(p.suffix == ".exr" for p in (tmp_path / "out").glob("*.exr")):

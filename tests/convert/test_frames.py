@@ -7,15 +7,18 @@ import pytest
 from generator.convert.frames import FramesError, Pattern, parse_frames, parse_pattern, sources
 
 
-@pytest.mark.parametrize("text, expected", [
-    ("plates/A001.####.exr", Pattern("plates/A001.", 4, ".exr")),
-    ("plates/A001.#.exr", Pattern("plates/A001.", 4, ".exr")),
-    ("shot.%04d.exr", Pattern("shot.", 4, ".exr")),
-    ("shot.%d.exr", Pattern("shot.", 1, ".exr")),
-    ("shot_@@@.dpx", Pattern("shot_", 3, ".dpx")),
-    ("shot.@.png", Pattern("shot.", 1, ".png")),
-    ("shot.1001.exr", None),
-])
+@pytest.mark.parametrize(
+    "text, expected",
+    [
+        ("plates/A001.####.exr", Pattern("plates/A001.", 4, ".exr")),
+        ("plates/A001.#.exr", Pattern("plates/A001.", 4, ".exr")),
+        ("shot.%04d.exr", Pattern("shot.", 4, ".exr")),
+        ("shot.%d.exr", Pattern("shot.", 1, ".exr")),
+        ("shot_@@@.dpx", Pattern("shot_", 3, ".dpx")),
+        ("shot.@.png", Pattern("shot.", 1, ".png")),
+        ("shot.1001.exr", None),
+    ],
+)
 def test_patterns_mark_the_frame_number(text, expected):
     assert parse_pattern(text) == expected
 
@@ -32,12 +35,15 @@ def test_pattern_paths_pad_and_grow():
     assert not pattern.regex().match("s.007.exr") and not pattern.regex().match("s.00007.exr")
 
 
-@pytest.mark.parametrize("text, frames", [
-    ("1001-1004", (1001, 1002, 1003, 1004)),
-    ("1-9x4", (1, 5, 9)),
-    ("5,1-2,5", (5, 1, 2)),
-    ("7", (7,)),
-])
+@pytest.mark.parametrize(
+    "text, frames",
+    [
+        ("1001-1004", (1001, 1002, 1003, 1004)),
+        ("1-9x4", (1, 5, 9)),
+        ("5,1-2,5", (5, 1, 2)),
+        ("7", (7,)),
+    ],
+)
 def test_ranges(text, frames):
     assert parse_frames(text) == frames
 
@@ -73,13 +79,16 @@ def test_a_folder_is_its_images_sorted(tmp_path):
     assert [s.path.rsplit("/", 1)[1] for s in found] == ["a.png", "b.exr"]
 
 
-@pytest.mark.parametrize("inputs, frames, message", [
-    (("missing.exr",), None, "does not exist"),
-    (("s.####.exr",), None, "matches no file"),
-    (("a.exr",), "1-2", "no input is a frame pattern"),
-    (("a.exr", "a.png"), None, "would both be written"),
-    (("empty",), None, "holding no image"),
-])
+@pytest.mark.parametrize(
+    "inputs, frames, message",
+    [
+        (("missing.exr",), None, "does not exist"),
+        (("s.####.exr",), None, "matches no file"),
+        (("a.exr",), "1-2", "no input is a frame pattern"),
+        (("a.exr", "a.png"), None, "would both be written"),
+        (("empty",), None, "holding no image"),
+    ],
+)
 def test_inputs_that_name_nothing_are_refused(tmp_path, monkeypatch, inputs, frames, message):
     monkeypatch.chdir(tmp_path)
     _touch(tmp_path, "a.exr", "a.png")

@@ -22,8 +22,7 @@ def display(name: str) -> DisplayGamut:
 
 def source_to_display(source: str, display_name: str) -> np.ndarray:
     """The matrix a caller applies, CAT02 between different whites (colour-science's default)."""
-    return colour.matrix_RGB_to_RGB(
-        colour.RGB_COLOURSPACES[source], colour.RGB_COLOURSPACES[display_name])
+    return colour.matrix_RGB_to_RGB(colour.RGB_COLOURSPACES[source], colour.RGB_COLOURSPACES[display_name])
 
 
 def source_colours(source: str, display_name: str, count: int = 4000, seed: int = 0) -> np.ndarray:

@@ -16,11 +16,11 @@ from tests.gamut import cases
 HARD = ("clip", "desaturate", "scale")
 HALF_MAX = 65504.0  # the largest finite binary16 value, the largest an OpenEXR half image holds
 
-finite_rgb = arrays(np.float64, st.tuples(st.integers(1, 8), st.just(3)),
-                    elements=st.floats(-HALF_MAX, HALF_MAX))
+finite_rgb = arrays(np.float64, st.tuples(st.integers(1, 8), st.just(3)), elements=st.floats(-HALF_MAX, HALF_MAX))
 special = st.sampled_from([np.nan, np.inf, -np.inf])
-any_rgb = arrays(np.float64, st.tuples(st.integers(1, 8), st.just(3)),
-                 elements=st.one_of(st.floats(-HALF_MAX, HALF_MAX), special))
+any_rgb = arrays(
+    np.float64, st.tuples(st.integers(1, 8), st.just(3)), elements=st.one_of(st.floats(-HALF_MAX, HALF_MAX), special)
+)
 
 
 def test_registry_names_and_uniform_signature():

@@ -11,11 +11,27 @@ from hypothesis.extra.numpy import arrays
 
 from generator.gamut import PerceptualParams, perceptual
 from generator.gamut.perceptual import (
-    FOLD_HUE_MARGIN, adapted_matrix, boundary_chroma, compress_along_lines, compress_ratio, cusp_table,
-    display_to_oklab, focus_lightness, fold_hues, hue_folds, line_through, oklab_to_display)
+    FOLD_HUE_MARGIN,
+    adapted_matrix,
+    boundary_chroma,
+    compress_along_lines,
+    compress_ratio,
+    cusp_table,
+    display_to_oklab,
+    focus_lightness,
+    fold_hues,
+    hue_folds,
+    line_through,
+    oklab_to_display,
+)
 from generator.tolerances import (
-    GAMUT_BOUNDARY_ABSOLUTE, GAMUT_FOLD_OKLAB, GAMUT_HUE_MIN_CHROMA, GAMUT_OKLAB_ABSOLUTE,
-    GAMUT_PERCEPTUAL_LIPSCHITZ, GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE)
+    GAMUT_BOUNDARY_ABSOLUTE,
+    GAMUT_FOLD_OKLAB,
+    GAMUT_HUE_MIN_CHROMA,
+    GAMUT_OKLAB_ABSOLUTE,
+    GAMUT_PERCEPTUAL_LIPSCHITZ,
+    GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE,
+)
 from tests.gamut import cases
 
 SOFT = PerceptualParams(threshold=0.8, limit=1.25)
@@ -178,7 +194,7 @@ def test_compressed_chroma_is_exactly_monotone_along_each_line(display_name, sou
 @pytest.mark.parametrize("params", [SOFT, EXACT], ids=["soft", "exact"])
 def test_constant_lightness_chroma_ramps_are_monotone_and_end_on_the_boundary(display_name, params):
     d = cases.display(display_name)
-    rgb, lightness, hue, chroma = constant_lightness_ramps(d)
+    rgb, _lightness, _hue, _chroma = constant_lightness_ramps(d)
     out = perceptual(rgb, d, params)
     _, out_chroma, _ = lch(out, d)
     assert np.min(np.diff(out_chroma, axis=-1)) >= -GAMUT_RGB_RAMP_MONOTONE_ABSOLUTE
@@ -216,7 +232,7 @@ def test_threshold_one_leaves_the_cube_and_clips_the_rest_onto_its_boundary(disp
     assert np.all(turn[coloured] <= kept_within(rgb, d)[coloured])
 
 
-@pytest.mark.parametrize("display_name", cases.DISPLAY_NAMES + ("ITU-R BT.2020",))
+@pytest.mark.parametrize("display_name", (*cases.DISPLAY_NAMES, "ITU-R BT.2020"))
 @pytest.mark.parametrize("threshold", [0.8, 1.0])
 def test_continuous_along_the_cube_edges_and_beyond(display_name, threshold):
     """No jump anywhere near the primaries and secondaries, in or out of the cube: a
@@ -258,9 +274,18 @@ def test_displacement_vanishes_to_second_order_at_the_threshold(display_name):
     assert np.all(moves[1] <= 0.11 * moves[0])  # relative move proportional to the excess: order 2
 
 
-@pytest.mark.parametrize("bad", [dict(threshold=1.1), dict(threshold=-0.1), dict(limit=0.9),
-                                 dict(limit=float("inf")), dict(focus_distance=0.0),
-                                 dict(focus_distance=float("inf")), dict(source_to_display=np.zeros((3, 3)))])
+@pytest.mark.parametrize(
+    "bad",
+    [
+        dict(threshold=1.1),
+        dict(threshold=-0.1),
+        dict(limit=0.9),
+        dict(limit=float("inf")),
+        dict(focus_distance=0.0),
+        dict(focus_distance=float("inf")),
+        dict(source_to_display=np.zeros((3, 3))),
+    ],
+)
 def test_invalid_parameters_are_refused(bad):
     with pytest.raises(ValueError):
         PerceptualParams(**bad)
@@ -274,9 +299,12 @@ def test_brighter_than_white_is_white_and_below_black_is_black(params):
 
 
 @settings(deadline=None, max_examples=60)
-@given(arrays(np.float64, (8, 3), elements=st.one_of(
-    st.floats(-65504.0, 65504.0), st.sampled_from([np.nan, np.inf, -np.inf]))),
-    st.sampled_from([0.0, 0.8, 1.0]))
+@given(
+    arrays(
+        np.float64, (8, 3), elements=st.one_of(st.floats(-65504.0, 65504.0), st.sampled_from([np.nan, np.inf, -np.inf]))
+    ),
+    st.sampled_from([0.0, 0.8, 1.0]),
+)
 def test_with_a_source_gamut_any_input_maps_into_the_cube(rgb, threshold):
     params = PerceptualParams(threshold=threshold, source_to_display=cases.source_to_display("ACEScg", "P3-D65"))
     out = perceptual(rgb, cases.display("P3-D65"), params)
@@ -296,8 +324,9 @@ def test_primaries_listed_clockwise_map_as_the_same_display():
     rgb = np.random.default_rng(3).uniform(-0.3, 1.4, (4096, 3))
     for params in (SOFT, EXACT):
         expected = perceptual(rgb, usual, params)
-        np.testing.assert_allclose(perceptual(rgb[:, swap], clockwise, params)[:, swap], expected, rtol=0,
-                                   atol=GAMUT_BOUNDARY_ABSOLUTE)
+        np.testing.assert_allclose(
+            perceptual(rgb[:, swap], clockwise, params)[:, swap], expected, rtol=0, atol=GAMUT_BOUNDARY_ABSOLUTE
+        )
 
 
 def test_a_gamut_wider_than_the_library_s_is_bracketed():

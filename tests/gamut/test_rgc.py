@@ -18,8 +18,7 @@ CUSTOM = RGCParams(1.25, 1.4, 1.6, 0.7, 0.75, 0.8, 2.3)
 
 
 def ocio_rgc(rgb32: np.ndarray, params: RGCParams) -> np.ndarray:
-    transform = ocio.FixedFunctionTransform(
-        ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, params.as_ocio_params())
+    transform = ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_ACES_GAMUT_COMP_13, params.as_ocio_params())
     cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
     out = np.ascontiguousarray(rgb32, dtype=np.float32).copy()
     cpu.applyRGB(out)
@@ -101,10 +100,16 @@ def test_zero_achromatic_value_is_black_as_in_ocio():
     assert np.array_equal(ocio_rgc(rgb.astype(np.float32), RGCParams()), np.zeros((1, 3)))
 
 
-@pytest.mark.parametrize("bad", [
-    dict(limit_cyan=1.0), dict(threshold_yellow=1.0), dict(threshold_cyan=-0.1),
-    dict(power=0.5), dict(limit_magenta=float("nan")),
-])
+@pytest.mark.parametrize(
+    "bad",
+    [
+        dict(limit_cyan=1.0),
+        dict(threshold_yellow=1.0),
+        dict(threshold_cyan=-0.1),
+        dict(power=0.5),
+        dict(limit_magenta=float("nan")),
+    ],
+)
 def test_invalid_parameters_are_refused(bad):
     with pytest.raises(ValueError):
         RGCParams(**bad)

@@ -26,11 +26,18 @@ def _apply(paths, optimization="OPTIMIZATION_LOSSLESS"):
     return probes.ocio_apply(steps[0] if len(steps) == 1 else ocio.GroupTransform(steps), optimization=optimization)
 
 
-CASES = [(fmt, source, SDR, "sRGB - Display") for fmt in bake.FORMATS for source in ("ACEScct", "ACEScg")
-         if (fmt, source) != ("iridas_cube", "ACEScg")]
-CASES += [("clf", "ACEScct", HDR, "Rec.2100-PQ - Display"), ("resolve_cube", "ARRI LogC4", HDR, "Rec.2100-PQ - Display"),
-          ("clf", "Linear Rec.709 (sRGB)", HDR, "Rec.2100-HLG - Display"),
-          ("clf", "ACEScg", "ACES 1.0 - SDR Video", "Rec.1886 Rec.709 - Display")]
+CASES = [
+    (fmt, source, SDR, "sRGB - Display")
+    for fmt in bake.FORMATS
+    for source in ("ACEScct", "ACEScg")
+    if (fmt, source) != ("iridas_cube", "ACEScg")
+]
+CASES += [
+    ("clf", "ACEScct", HDR, "Rec.2100-PQ - Display"),
+    ("resolve_cube", "ARRI LogC4", HDR, "Rec.2100-PQ - Display"),
+    ("clf", "Linear Rec.709 (sRGB)", HDR, "Rec.2100-HLG - Display"),
+    ("clf", "ACEScg", "ACES 1.0 - SDR Video", "Rec.1886 Rec.709 - Display"),
+]
 
 
 @pytest.mark.parametrize("fmt, source, view, display", CASES)
@@ -40,8 +47,9 @@ def test_files_run_in_ocio_as_their_float64_evaluation(default_spec, tmp_path, f
     apply = _apply(_files(tmp_path, req))
     for aces in aces_probes.sets(req.display, aces_probes.PROBE_SEED, 512).values():
         code, _ = aces_probes.in_source(default_spec, req.source, req.display, view, aces)
-        np.testing.assert_allclose(apply(code), aces_bake.file_output(lat, code), rtol=0,
-                                   atol=tolerances.LUT_ACES_FILE_ABSOLUTE)
+        np.testing.assert_allclose(
+            apply(code), aces_bake.file_output(lat, code), rtol=0, atol=tolerances.LUT_ACES_FILE_ABSOLUTE
+        )
 
 
 def test_the_clf_clamps_ap1_as_the_view_does(default_spec, tmp_path):
@@ -52,7 +60,9 @@ def test_the_clf_clamps_ap1_as_the_view_does(default_spec, tmp_path):
     upper = aces_bake.basis(req.view).upper
     rgb = np.random.default_rng(7).uniform(-0.5, 1.5, (2000, 3)) * np.array([[1.0], [4 * upper]]).repeat(1000, 0)
     assert (rgb < 0).any() and (rgb > upper).any()
-    np.testing.assert_allclose(apply(rgb), apply(np.clip(rgb, 0.0, upper)), rtol=0, atol=tolerances.LUT_ACES_FILE_ABSOLUTE)
+    np.testing.assert_allclose(
+        apply(rgb), apply(np.clip(rgb, 0.0, upper)), rtol=0, atol=tolerances.LUT_ACES_FILE_ABSOLUTE
+    )
 
 
 @pytest.mark.parametrize("fmt, display", sorted(tolerances.LUT_ACES_P99))
@@ -73,7 +83,9 @@ def test_greys_on_nodes_are_the_reference(default_spec):
     from generator.luts.lattice import preimages
 
     grey = lat.pre.position(preimages(9, lat.shaper, lat.domain))[:, None].repeat(3, axis=1)
-    expected = reference.aces_view(default_spec, req.display, SDR, reference.to_reference(default_spec, req.source, grey))
+    expected = reference.aces_view(
+        default_spec, req.display, SDR, reference.to_reference(default_spec, req.source, grey)
+    )
     np.testing.assert_allclose(aces_bake.file_output(lat, grey), expected, rtol=0, atol=1e-5)
 
 

@@ -22,15 +22,22 @@ OCIO_POWER_RELATIVE = 3e-5
 def test_ocio_runs_the_file_as_its_float64_evaluation():
     view = views.catalogue()["ACES 2.0 - SDR 100 nits (Rec.709)"]
     lat = aces_lattice.bake(view, 17)
-    steps = [matrix_transform(views.tables(view).ap0_to_ap1),
-             ocio.RangeTransform(minInValue=0.0, maxInValue=lat.upper, minOutValue=0.0, maxOutValue=lat.upper)]
+    steps = [
+        matrix_transform(views.tables(view).ap0_to_ap1),
+        ocio.RangeTransform(minInValue=0.0, maxInValue=lat.upper, minOutValue=0.0, maxOutValue=lat.upper),
+    ]
     with tempfile.TemporaryDirectory() as folder:
         (Path(folder) / "v.clf").write_bytes(aces_lattice.ocio_file(lat))
         cfg = ocio.Config.CreateRaw()
         cfg.setSearchPath(folder)
-        group = ocio.GroupTransform([*steps, ocio.FileTransform("v.clf", interpolation=ocio.INTERP_TETRAHEDRAL),
-                                     ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
-                                     matrix_transform(aces_lattice.to_xyz(view))])
+        group = ocio.GroupTransform(
+            [
+                *steps,
+                ocio.FileTransform("v.clf", interpolation=ocio.INTERP_TETRAHEDRAL),
+                ocio.RangeTransform(minInValue=0.0, maxInValue=1.0, minOutValue=0.0, maxOutValue=1.0),
+                matrix_transform(aces_lattice.to_xyz(view)),
+            ]
+        )
         rgb = np.random.default_rng(3).random((4000, 3)) * np.array([[1.0], [8.0]]).repeat(2000, 0)
         out = rgb.astype(np.float32)
         cfg.getProcessor(group).getDefaultCPUProcessor().applyRGB(out)
@@ -48,16 +55,21 @@ def test_the_lattice_holds_the_reference_at_its_nodes():
     expected = aces_lattice.mon_encode(views.output_rgb(view, aces) / (view.peak / 100.0), lat.curve)
     diagonal = lat.cube[np.arange(17), np.arange(17), np.arange(17)]
     assert np.max(np.abs(diagonal - expected)) <= 0.5 / aces_lattice.CODE_STEPS + 1e-12
-    assert np.allclose(aces_lattice.evaluate(lat, aces), aces_lattice.mon_decode(diagonal, lat.curve).clip(0, 1)
-                       @ aces_lattice.to_xyz(view).T, rtol=0, atol=1e-12)
+    assert np.allclose(
+        aces_lattice.evaluate(lat, aces),
+        aces_lattice.mon_decode(diagonal, lat.curve).clip(0, 1) @ aces_lattice.to_xyz(view).T,
+        rtol=0,
+        atol=1e-12,
+    )
 
 
 def test_the_encoding_is_clfs_moncurve_both_ways():
     x = np.linspace(-2.0, 2.0, 20001)
     for curve in (aces_lattice.SDR_CURVE, aces_lattice.HDR_CURVE):
         assert np.allclose(aces_lattice.mon_decode(aces_lattice.mon_encode(x, curve), curve), x, rtol=0, atol=1e-12)
-    transform = ocio.ExponentWithLinearTransform(gamma=[2.4] * 3 + [1.0], offset=[0.055] * 3 + [0.0],
-                                                 negativeStyle=ocio.NEGATIVE_MIRROR)
+    transform = ocio.ExponentWithLinearTransform(
+        gamma=[2.4] * 3 + [1.0], offset=[0.055] * 3 + [0.0], negativeStyle=ocio.NEGATIVE_MIRROR
+    )
     codes = np.random.default_rng(5).uniform(-1.0, 1.5, (1000, 3)).astype(np.float32)
     out = codes.copy()
     ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor().applyRGB(out)

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from generator.luts import axes, lattice
-from generator.luts.axes import Axis, LogAxis, grey_code
+from generator.luts.axes import Axis, LogAxis
 
 
 @pytest.mark.parametrize("size", (9, 17, 33, 65))
@@ -52,7 +52,11 @@ def test_a_dim_displays_log_axis_still_reaches_half_float_light(tmp_path):
     lattice reaches 65504 display-referred units, not 65504 times its own peak (655)."""
     from generator.spec import load
 
-    spec = load.parse("[[display]]\nname = 'Dim'\ngamut = 'Rec.709'\neotf = 'gamma 2.2'\npeak_luminance = 1\n"
-                      "absolute_luminance = true", "show.toml", tmp_path)
+    spec = load.parse(
+        "[[display]]\nname = 'Dim'\ngamut = 'Rec.709'\neotf = 'gamma 2.2'\npeak_luminance = 1\n"
+        "absolute_luminance = true",
+        "show.toml",
+        tmp_path,
+    )
     axis = lattice.display_axis(spec.displays[0], 17, "scale")
     assert axis.high * spec.displays[0].clip_high == pytest.approx(lattice.LOG_DISPLAY_HIGH, rel=1e-9)

@@ -77,8 +77,9 @@ def test_colour_science_reads_the_same_table(default_spec, tmp_path, fmt):
 def test_clf_clip_and_scale_meet_the_targets_on_every_probe_set(default_spec, tmp_path, method, source):
     """Exact but for float32 from linear input; within a code when OCIO's Log op decodes."""
     req = _request(default_spec, "clf", method=method, size=33, source=source)
-    figures = probes.measure(default_spec, req.source, req.display, method,
-                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    figures = probes.measure(
+        default_spec, req.source, req.display, method, probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024
+    )
     assert figures["in_gamut"].maximum <= tolerances.LUT_CLF_IN_GAMUT_CODES
     bound = tolerances.LUT_CLF_EXACT_CODES if source == "ACEScg" else tolerances.LUT_CLF_EVERY_SET_CODES
     assert max(f.maximum for f in figures.values()) <= bound
@@ -87,8 +88,9 @@ def test_clf_clip_and_scale_meet_the_targets_on_every_probe_set(default_spec, tm
 @pytest.mark.parametrize("method", ("clip", "scale"))
 def test_clf_into_hlg_within_its_bound(default_spec, tmp_path, method):
     req = _request(default_spec, "clf", method=method, size=33, source="ACEScg", display="Rec.2100-HLG - Display")
-    figures = probes.measure(default_spec, req.source, req.display, method,
-                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    figures = probes.measure(
+        default_spec, req.source, req.display, method, probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024
+    )
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_HLG_DELTA_E_ITP
 
 
@@ -97,8 +99,9 @@ def test_clf_into_an_extended_range_display(default_spec, tmp_path, method):
     """Display P3 HDR: sRGB's curve extended to ten times white (code 2.6 at the peak), whose
     code values once ran past what the writer holds beyond the peak (a crash, not a bound)."""
     req = _request(default_spec, "clf", method=method, size=33, source="ACEScg", display="Display P3 HDR - Display")
-    figures = probes.measure(default_spec, req.source, req.display, method,
-                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    figures = probes.measure(
+        default_spec, req.source, req.display, method, probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024
+    )
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP
     assert figures["in_gamut"].maximum <= tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP
 
@@ -107,8 +110,9 @@ def test_clf_into_an_extended_range_display(default_spec, tmp_path, method):
 def test_resolve_cube_halves_ociobakelut_p99_on_every_set(default_spec, tmp_path, pair):
     """Clip at 33³, against ociobakelut's best bake (bench/lut_accuracy.py)."""
     req = _request(default_spec, "resolve_cube", size=33, source=pair[0], display=pair[1])
-    figures = probes.measure(default_spec, req.source, req.display, "clip",
-                             probes.ocio_apply(_transform(_write(tmp_path, req))))
+    figures = probes.measure(
+        default_spec, req.source, req.display, "clip", probes.ocio_apply(_transform(_write(tmp_path, req)))
+    )
     for name, theirs in tolerances.OCIOBAKELUT_P99[pair].items():
         assert figures[name].p99 * tolerances.LUT_CUBE_P99_RATIO <= theirs, name
 
@@ -119,13 +123,16 @@ def test_resolve_cube_keeps_greys_and_zero_channels(default_spec, tmp_path):
     apply = probes.ocio_apply(_transform(_write(tmp_path, req)))
     rng = np.random.default_rng(3)
     grey = np.repeat(10.0 ** rng.uniform(-4, 1.2, (2000, 1)), 3, axis=1)
-    expected = reference.mapped_view(default_spec, req.display, "clip",
-                                     reference.to_reference(default_spec, req.source, grey))
+    expected = reference.mapped_view(
+        default_spec, req.display, "clip", reference.to_reference(default_spec, req.source, grey)
+    )
     assert np.abs(apply(grey) - expected).max() * 1023 <= tolerances.LUT_CUBE_GREY_CODES
     lat = bake.build_lattice(req)
     zero = lattice.source_axis(default_spec, req.source, req.display, 33).zero
     linear = req.source.curve.decode(lattice.preimages(lat.size, lat.shaper, lat.domain))
-    matrix = reference.scene_to_display_matrix(default_spec, req.display) @ reference.space_matrix(default_spec, req.source)
+    matrix = reference.scene_to_display_matrix(default_spec, req.display) @ reference.space_matrix(
+        default_spec, req.source
+    )
     sampled = lattice.node_values(req.display, "clip", linear, matrix, None)
     np.testing.assert_array_equal(lat.cube[zero], sampled[zero])
     np.testing.assert_array_equal(lat.cube[:, :, zero], sampled[:, :, zero])
@@ -146,8 +153,9 @@ def test_clf_decodes_every_curve_family(default_spec, tmp_path):
         lat = bake.build_lattice(req)
         inputs, expected = _node_inputs(req, lat, picks=(lat.cube.shape[0] // 2,))
         paths = _write(tmp_path, req, name=name.replace(" ", "_"))
-        np.testing.assert_allclose(probes.ocio_apply(_transform(paths))(inputs), expected,
-                                   atol=tolerances.LUT_CLF_NODE_ABSOLUTE)
+        np.testing.assert_allclose(
+            probes.ocio_apply(_transform(paths))(inputs), expected, atol=tolerances.LUT_CLF_NODE_ABSOLUTE
+        )
 
 
 def test_clf_loads_in_ocio_2_1(default_spec, tmp_path):
@@ -195,8 +203,9 @@ def test_a_cube_from_a_display_encoded_source_is_exact_on_what_its_domain_holds(
     fit leaves out colours beyond the file's domain (codes above 1, which the file clamps),
     which had pulled near-white nodes hundreds of codes off."""
     req = _request(default_spec, "resolve_cube", method="scale", size=33, source="sRGB Encoded Rec.709 (sRGB)")
-    figures = probes.measure(default_spec, req.source, req.display, "scale",
-                             probes.ocio_apply(_transform(_write(tmp_path, req))))
+    figures = probes.measure(
+        default_spec, req.source, req.display, "scale", probes.ocio_apply(_transform(_write(tmp_path, req)))
+    )
     assert max(figures[name].maximum for name in ("in_gamut", "dark")) <= tolerances.LUT_CLF_IN_GAMUT_CODES
 
 
@@ -208,8 +217,9 @@ def test_an_extended_range_clf_follows_the_displays_toe(default_spec, tmp_path, 
     req = _request(default_spec, "clf", method=method, size=33, source="ACEScg", display="Display P3 HDR - Display")
     apply = probes.ocio_apply(_transform(_write(tmp_path, req)))
     greys = np.repeat(np.geomspace(1e-4, 10.0, 200)[:, None], 3, axis=1)  # scene-linear ACEScg greys
-    expected = reference.mapped_view(default_spec, req.display, method,
-                                     reference.to_reference(default_spec, req.source, greys))
+    expected = reference.mapped_view(
+        default_spec, req.display, method, reference.to_reference(default_spec, req.source, greys)
+    )
     error = probes.errors(req.display, apply(greys), expected)[0]
     assert error.max() <= tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP
 
@@ -233,16 +243,20 @@ def test_a_named_shaper_spaces_the_nodes_over_its_own_codes(default_spec):
     lat = bake.build_lattice(_request(default_spec, "resolve_cube", size=33, source="ACEScg", shaper="ACEScct"))
     np.testing.assert_allclose(lat.domain, acescct.curve.decode(np.array([0.0, 1.0])), rtol=1e-12)
     linear = np.linspace(*lat.domain, lat.shaper.size)
-    np.testing.assert_allclose(lat.shaper, acescct.curve.encode(linear), rtol=0, atol=10.0 ** -lattice.SHAPER_DECIMALS)
+    np.testing.assert_allclose(lat.shaper, acescct.curve.encode(linear), rtol=0, atol=10.0**-lattice.SHAPER_DECIMALS)
 
 
 def test_a_log_without_a_break_decodes_exactly_in_a_clf(tmp_path):
     """A custom pure log (log_camera without lin_side_break) is CLF's plain Log operator."""
     from generator.spec import load
 
-    spec = load.parse('[[custom_space]]\nname = "My Log"\ngamut = "Rec.2020"\ntransfer = { family = "log_camera", '
-                      'base = 10, log_side_slope = 0.25, log_side_offset = 0.6, lin_side_slope = 1, '
-                      'lin_side_offset = 0.01 }\n', "show.toml", tmp_path)
+    spec = load.parse(
+        '[[custom_space]]\nname = "My Log"\ngamut = "Rec.2020"\ntransfer = { family = "log_camera", '
+        "base = 10, log_side_slope = 0.25, log_side_offset = 0.6, lin_side_slope = 1, "
+        "lin_side_offset = 0.01 }\n",
+        "show.toml",
+        tmp_path,
+    )
     req = _request(spec, "clf", method="scale", size=17, source="My Log")
     paths = _write(tmp_path, req)
     assert 'style="logToLin"' in paths[0].read_text()
@@ -251,8 +265,9 @@ def test_a_log_without_a_break_decodes_exactly_in_a_clf(tmp_path):
 
 
 def test_a_clf_says_what_its_lattice_covers_and_where_its_codes_end(default_spec):
-    req = _request(default_spec, "clf", method="desaturate", size=17, source="ARRI LogC4",
-                   display="Display P3 HDR - Display")
+    req = _request(
+        default_spec, "clf", method="desaturate", size=17, source="ARRI LogC4", display="Display P3 HDR - Display"
+    )
     text = bake.bake(req)[""].decode()
     assert "sampled over" not in text and "times the display's peak per channel" in text
     assert "code values (full range, 0 to 2.69872)" in text
@@ -282,8 +297,11 @@ def test_a_clf_into_a_tabulated_eotf_puts_the_peak_on_an_entry(tmp_path):
     from generator.spec import load
 
     (tmp_path / "curve.csv").write_text("code,linear\n0,0\n0.25,0.02\n0.5,0.1\n0.75,0.35\n1,1\n")
-    spec = load.parse('[[display]]\nname = "LED Tab"\ngamut = "Rec.709"\n'
-                      'eotf = { family = "tabulated", file = "curve.csv" }\n', "show.toml", tmp_path)
+    spec = load.parse(
+        '[[display]]\nname = "LED Tab"\ngamut = "Rec.709"\neotf = { family = "tabulated", file = "curve.csv" }\n',
+        "show.toml",
+        tmp_path,
+    )
     req = _request(spec, "clf", method="clip", size=33, source="ACEScg", display="LED Tab")
     greys = np.repeat(np.array([1.0, 2.0, 5.0, 40.0])[:, None], 3, axis=1)
     codes = probes.ocio_apply(_transform(_write(tmp_path, req)))(greys)
@@ -295,14 +313,17 @@ def test_an_rgc_bake_takes_the_specs_parameters(default_spec, tmp_path):
     file is as close as ACES 1.3's bake is to ACES 1.3's, and far from ACES 1.3's mapping."""
     from generator.spec import load
 
-    spec = load.parse("[rgc]\nlimits = [1.5, 1.4, 1.3]\nthresholds = [0.6, 0.7, 0.75]\npower = 1.5", "show.toml",
-                      tmp_path)
+    spec = load.parse(
+        "[rgc]\nlimits = [1.5, 1.4, 1.3]\nthresholds = [0.6, 0.7, 0.75]\npower = 1.5", "show.toml", tmp_path
+    )
     figures = {}
     for name, baked in (("own", spec), ("aces", default_spec)):
         req = _request(baked, "clf", method="rgc", size=33, source="ACEScg")
         apply = probes.ocio_apply(_transform(_write(tmp_path, req, name)))
-        figures[name] = {against: probes.measure(s, req.source, req.display, "rgc", apply, count=1024)["in_gamut"].p99
-                         for against, s in (("own", spec), ("aces", default_spec))}
+        figures[name] = {
+            against: probes.measure(s, req.source, req.display, "rgc", apply, count=1024)["in_gamut"].p99
+            for against, s in (("own", spec), ("aces", default_spec))
+        }
     assert figures["own"]["own"] <= 1.5 * figures["aces"]["aces"]
     assert figures["own"]["aces"] > 4 * figures["own"]["own"], figures
 
@@ -310,9 +331,17 @@ def test_an_rgc_bake_takes_the_specs_parameters(default_spec, tmp_path):
 def test_a_scale_clf_at_its_smallest_size_is_exact(default_spec, tmp_path):
     """At three nodes a side the log axis's toe sat a few bits below the peak, and scale's
     over-range colours came out 26 ten-bit codes off: the smallest size is the first exact one."""
-    req = _request(default_spec, "clf", method="scale", size=bake._smallest_size(
-        default_spec, default_spec.displays[0], default_spec.space("ACEScg"), "scale", "clf", "auto"), source="ACEScg")
+    req = _request(
+        default_spec,
+        "clf",
+        method="scale",
+        size=bake._smallest_size(
+            default_spec, default_spec.displays[0], default_spec.space("ACEScg"), "scale", "clf", "auto"
+        ),
+        source="ACEScg",
+    )
     assert req.size == 4
-    figures = probes.measure(default_spec, req.source, req.display, "scale",
-                             probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024)
+    figures = probes.measure(
+        default_spec, req.source, req.display, "scale", probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024
+    )
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_EXACT_CODES

@@ -33,8 +33,9 @@ def test_a_bake_into_hlg_warns_of_nothing(tmp_path):
     out = tmp_path / "hlg.clf"
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "Rec.2100-HLG - Display", "--size", "9",
-                                              "-o", str(out)])
+        result = CliRunner().invoke(
+            command, ["--from", "ACEScg", "--to", "Rec.2100-HLG - Display", "--size", "9", "-o", str(out)]
+        )
     assert result.exit_code == 0, result.output
     assert "Warning" not in result.output
 
@@ -49,11 +50,14 @@ def test_spi3d_writes_its_shaper_beside(tmp_path):
 
 def test_bakes_from_a_spec_whose_inactive_spaces_it_does_not_load(tmp_path):
     spec = tmp_path / "show.toml"
-    spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
-                    '"ADX10"]\ninactive = ["ADX10"]\n')
+    spec.write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+        '"ADX10"]\ninactive = ["ADX10"]\n'
+    )
     out = tmp_path / "a.cube"
-    result = CliRunner().invoke(command, ["--spec", str(spec), "--from", "ACEScg", "--to", "sRGB - Display", "--size",
-                                          "9", "-o", str(out)])
+    result = CliRunner().invoke(
+        command, ["--spec", str(spec), "--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out)]
+    )
     assert result.exit_code == 0, result.output
     assert out.exists()
 
@@ -67,7 +71,16 @@ BAD = {
     "empty method": ["--from", "ACEScg", "--to", "sRGB - Display", "--gamut-map", ""],
     "size too large": ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "130"],
     "size too small": ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "2"],
-    "shaper in iridas": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube", "--shaper", "ACEScct"],
+    "shaper in iridas": [
+        "--from",
+        "ACEScg",
+        "--to",
+        "sRGB - Display",
+        "--format",
+        "iridas_cube",
+        "--shaper",
+        "ACEScct",
+    ],
     "data shaper": ["--from", "ACEScg", "--to", "sRGB - Display", "--shaper", "Raw"],
     "iridas from linear": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube"],
     "no shaper from linear": ["--from", "Linear Rec.2020", "--to", "Rec.2100-PQ - Display", "--shaper", "none"],
@@ -75,16 +88,52 @@ BAD = {
     "display shaper": ["--from", "ACEScct", "--to", "sRGB - Display", "--shaper", "Rec.1886 Rec.709 - Display"],
     "suffix of another format": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "spi3d"],
     "unknown view": ["--from", "ACEScct", "--to", "sRGB - Display", "--view", "ACES 2.0 - SDR 100 nits (Rec.7O9)"],
-    "HDR view on an SDR display": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
-                                   "ACES 2.0 - HDR 1000 nits (P3 D65)"],
-    "view with a gamut mapping": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
-                                  "ACES 2.0 - SDR 100 nits (Rec.709)", "--gamut-map", "clip"],
-    "view limited beyond the display": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
-                                        "ACES 2.0 - SDR 100 nits (P3 D65)"],
-    "view in iridas from linear": ["--from", "ACEScg", "--to", "sRGB - Display", "--format", "iridas_cube",
-                                   "--view", "ACES 2.0 - SDR 100 nits (Rec.709)"],
-    "view size too large": ["--from", "ACEScct", "--to", "sRGB - Display", "--view",
-                            "ACES 2.0 - SDR 100 nits (Rec.709)", "--size", "130"],
+    "HDR view on an SDR display": [
+        "--from",
+        "ACEScct",
+        "--to",
+        "sRGB - Display",
+        "--view",
+        "ACES 2.0 - HDR 1000 nits (P3 D65)",
+    ],
+    "view with a gamut mapping": [
+        "--from",
+        "ACEScct",
+        "--to",
+        "sRGB - Display",
+        "--view",
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+        "--gamut-map",
+        "clip",
+    ],
+    "view limited beyond the display": [
+        "--from",
+        "ACEScct",
+        "--to",
+        "sRGB - Display",
+        "--view",
+        "ACES 2.0 - SDR 100 nits (P3 D65)",
+    ],
+    "view in iridas from linear": [
+        "--from",
+        "ACEScg",
+        "--to",
+        "sRGB - Display",
+        "--format",
+        "iridas_cube",
+        "--view",
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+    ],
+    "view size too large": [
+        "--from",
+        "ACEScct",
+        "--to",
+        "sRGB - Display",
+        "--view",
+        "ACES 2.0 - SDR 100 nits (Rec.709)",
+        "--size",
+        "130",
+    ],
 }
 #: A name whose suffix no host reads as the format asked for (the case below writes to "out.cube").
 BAD_NAMES = {
@@ -123,11 +172,14 @@ def test_an_output_folder_that_is_not_one_is_named(tmp_path, run, blocker, reaso
     assert [p.name for p in tmp_path.iterdir()] == (["luts"] if blocker else [])
 
 
-@pytest.mark.parametrize("args, words", [
-    (["--from", "ARRI LogC4x", "--to", "sRGB - Display"], "did you mean 'ARRI LogC4'"),
-    (["--from", "ACEScg", "--to", "sRGB - Display", "--shaper", "ACEScctt"], "did you mean 'ACEScct'"),
-    (["--from", "ACEScg", "--to", "Nope"], "allowed: sRGB - Display, "),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--from", "ARRI LogC4x", "--to", "sRGB - Display"], "did you mean 'ARRI LogC4'"),
+        (["--from", "ACEScg", "--to", "sRGB - Display", "--shaper", "ACEScctt"], "did you mean 'ACEScct'"),
+        (["--from", "ACEScg", "--to", "Nope"], "allowed: sRGB - Display, "),
+    ],
+)
 def test_a_mistyped_name_is_answered_with_the_names_the_spec_has(tmp_path, run, args, words):
     """The bake loads only the spaces it names, yet suggests among all the spec's."""
     code, err = run([*args, "-o", str(tmp_path / "out.cube")])
@@ -137,7 +189,9 @@ def test_a_mistyped_name_is_answered_with_the_names_the_spec_has(tmp_path, run, 
 def test_a_library_space_the_spec_leaves_out_and_a_space_without_a_curve_say_so(tmp_path, run):
     spec = tmp_path / "small.toml"
     spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n')
-    code, err = run(["--spec", str(spec), "--from", "ARRI LogC4", "--to", "sRGB - Display", "-o", str(tmp_path / "a.cube")])
+    code, err = run(
+        ["--spec", str(spec), "--from", "ARRI LogC4", "--to", "sRGB - Display", "-o", str(tmp_path / "a.cube")]
+    )
     assert code == 2 and "'ARRI LogC4' is in the library but not in this spec" in err, err
     code, err = run(["--from", "ADX10", "--to", "sRGB - Display", "-o", str(tmp_path / "a.cube")])
     assert code == 2 and "allowed: a space with a curve and primaries" in err, err
@@ -162,8 +216,9 @@ def test_existing_output_needs_force(tmp_path, run):
     out.write_text("keep")
     code, err = run(["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out)])
     assert code == 2 and "--force" in err and out.read_text() == "keep"
-    result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out),
-                                          "--force"])
+    result = CliRunner().invoke(
+        command, ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "-o", str(out), "--force"]
+    )
     assert result.exit_code == 0 and out.read_text().startswith("<?xml")
 
 
@@ -211,24 +266,29 @@ def test_an_unwritable_output_is_one_line_and_exit_2(tmp_path, run):
 def test_a_spi3d_named_like_its_shaper_is_refused(tmp_path, run):
     """The shaper goes beside the .spi3d with the suffix .spi1d: an output named .spi1d would be
     overwritten by it, and the lattice lost."""
-    code, err = run(["--from", "ACEScct", "--to", "sRGB - Display", "--format", "spi3d", "-o", str(tmp_path / "a.spi1d")])
+    code, err = run(
+        ["--from", "ACEScct", "--to", "sRGB - Display", "--format", "spi3d", "-o", str(tmp_path / "a.spi1d")]
+    )
     assert code == 2 and "allowed: a name ending in .spi3d" in err and list(tmp_path.iterdir()) == []
 
 
 def test_a_format_in_any_case(tmp_path):
     out = tmp_path / "a.clf"
-    result = CliRunner().invoke(command, ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "--format", "CLF",
-                                          "-o", str(out)])
+    result = CliRunner().invoke(
+        command, ["--from", "ACEScg", "--to", "sRGB - Display", "--size", "9", "--format", "CLF", "-o", str(out)]
+    )
     assert result.exit_code == 0, result.output
     assert out.read_text().startswith("<?xml")
 
 
-@pytest.mark.parametrize("source, shaper", [("ACEScct", "NONE"), ("ACEScg", "Auto"), ("ACEScg", "arri_logc4"),
-                                            ("ACEScg", "V-Log V-Gamut")])
+@pytest.mark.parametrize(
+    "source, shaper", [("ACEScct", "NONE"), ("ACEScg", "Auto"), ("ACEScg", "arri_logc4"), ("ACEScg", "V-Log V-Gamut")]
+)
 def test_shaper_words_in_any_case_and_any_library_space(tmp_path, source, shaper):
     out = tmp_path / "a.cube"
-    result = CliRunner().invoke(command, ["--from", source, "--to", "sRGB - Display", "--size", "9", "--shaper", shaper,
-                                          "-o", str(out)])
+    result = CliRunner().invoke(
+        command, ["--from", source, "--to", "sRGB - Display", "--size", "9", "--shaper", shaper, "-o", str(out)]
+    )
     assert result.exit_code == 0, result.output
     assert out.exists()
 
@@ -237,12 +297,30 @@ def test_shaper_words_in_any_case_and_any_library_space(tmp_path, source, shaper
 def test_a_cube_of_spaces_named_in_any_script_writes_an_ascii_header(tmp_path, fmt):
     """A .cube's header is ASCII (its formats' text): accented names had crashed the writer."""
     spec = tmp_path / "show.toml"
-    spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-                    '[[custom_space]]\nname = "Caméra A カメラ"\ngamut = "P3-D65"\ntransfer = "ACEScct"\n'
-                    '[[display]]\nname = "Écran LED"\ngamut = "Rec.709"\neotf = "gamma 2.4"\n', encoding="utf-8")
+    spec.write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = "Caméra A カメラ"\ngamut = "P3-D65"\ntransfer = "ACEScct"\n'
+        '[[display]]\nname = "Écran LED"\ngamut = "Rec.709"\neotf = "gamma 2.4"\n',
+        encoding="utf-8",
+    )
     out = tmp_path / "a.cube"
-    result = CliRunner().invoke(command, ["--spec", str(spec), "--from", "Caméra A カメラ", "--to", "Écran LED",
-                                          "--format", fmt, "--size", "9", "-o", str(out)])
+    result = CliRunner().invoke(
+        command,
+        [
+            "--spec",
+            str(spec),
+            "--from",
+            "Caméra A カメラ",
+            "--to",
+            "Écran LED",
+            "--format",
+            fmt,
+            "--size",
+            "9",
+            "-o",
+            str(out),
+        ],
+    )
     assert result.exit_code == 0, result.output
     head = out.read_bytes().split(b"LUT_3D_SIZE")[0].decode("ascii")
     assert "Camera A \\u30ab\\u30e1\\u30e9 to Ecran LED" in head
@@ -254,12 +332,29 @@ def test_a_cube_header_holds_quotes_and_long_names_within_the_line_limit(tmp_pat
     name with double quotes had closed the title early, and a long one passed the cap."""
     name = 'Cam "Q" Log ' + "wide " * 40
     spec = tmp_path / "show.toml"
-    spec.write_text('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-                    f'[[custom_space]]\nname = {name.strip()!r}\ngamut = "P3-D65"\ntransfer = "ACEScct"\n',
-                    encoding="utf-8")
+    spec.write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        f'[[custom_space]]\nname = {name.strip()!r}\ngamut = "P3-D65"\ntransfer = "ACEScct"\n',
+        encoding="utf-8",
+    )
     out = tmp_path / "a.cube"
-    result = CliRunner().invoke(command, ["--spec", str(spec), "--from", name.strip(), "--to", "sRGB - Display",
-                                          "--format", fmt, "--size", "9", "-o", str(out)])
+    result = CliRunner().invoke(
+        command,
+        [
+            "--spec",
+            str(spec),
+            "--from",
+            name.strip(),
+            "--to",
+            "sRGB - Display",
+            "--format",
+            fmt,
+            "--size",
+            "9",
+            "-o",
+            str(out),
+        ],
+    )
     assert result.exit_code == 0, result.output
     head = out.read_bytes().split(b"LUT_3D_SIZE")[0].decode("ascii").splitlines(keepends=True)
     assert max(len(line) for line in head) <= formats.LINE_MAX
@@ -325,6 +420,17 @@ def test_a_bake_whose_weights_reach_zero_warns_of_nothing(tmp_path):
     out = tmp_path / "hlg.cube"
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        result = CliRunner().invoke(command, ["--from", "slog3_sgamut3cine", "--to", "Rec.2100-HLG - Display",
-                                              "--gamut-map", "desaturate", "-o", str(out)])
+        result = CliRunner().invoke(
+            command,
+            [
+                "--from",
+                "slog3_sgamut3cine",
+                "--to",
+                "Rec.2100-HLG - Display",
+                "--gamut-map",
+                "desaturate",
+                "-o",
+                str(out),
+            ],
+        )
     assert result.exit_code == 0, result.output

@@ -22,8 +22,10 @@ def _colours(rng) -> np.ndarray:
     return np.concatenate([inside, faces, outside, far]).astype(np.float32).astype(np.float64)
 
 
-@pytest.mark.parametrize("display_name", ["sRGB - Display", "Rec.1886 Rec.709 - Display", "Rec.2100-PQ - Display",
-                                          "Display P3 HDR - Display"])
+@pytest.mark.parametrize(
+    "display_name",
+    ["sRGB - Display", "Rec.1886 Rec.709 - Display", "Rec.2100-PQ - Display", "Display P3 HDR - Display"],
+)
 def test_display_file_is_the_file_as_ocio_runs_it(default_spec, tmp_path, display_name):
     """sRGB's pre-shaper is CLF's moncurve, Rec.1886's a mirrored power, PQ's and Display P3
     HDR's (extended range) files end in display light through the pre-shaper's inverse: OCIO
@@ -34,8 +36,9 @@ def test_display_file_is_the_file_as_ocio_runs_it(default_spec, tmp_path, displa
     path = tmp_path / view.filename
     path.write_bytes(view.data)
     cfg = ocio.Config.CreateRaw()
-    cpu = cfg.getProcessor(ocio.FileTransform(str(path), interpolation=ocio.INTERP_TETRAHEDRAL)
-                           ).getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS)
+    cpu = cfg.getProcessor(
+        ocio.FileTransform(str(path), interpolation=ocio.INTERP_TETRAHEDRAL)
+    ).getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS)
     colours = _colours(np.random.default_rng(7))
     pixels = np.ascontiguousarray(colours, dtype=np.float32)
     cpu.applyRGB(pixels)

@@ -10,8 +10,8 @@ from generator.colorimetry import reference
 from generator.gamut.simple import desaturate
 from generator.luts import hsv, hsv_axes
 from generator.luts.view import bake_view_lut, view_transform
-from tests.luts import hsv_cases
 from generator.verify.allowance import hsv_rounding_shift
+from tests.luts import hsv_cases
 
 SDR = ("sRGB - Display", "Gamma 2.2 Rec.709 - Display", "Gamma 2.6 DCI-P3 - Display")
 
@@ -59,8 +59,9 @@ def _view_apply(spec, display, tmp_path, matrix=None):
     view = bake_view_lut(spec, display, "desaturate")
     (tmp_path / view.filename).write_bytes(view.data)
     (tmp_path / hsv.SHARED_FILE).write_bytes(hsv.shared_clf())
-    transform = view_transform(view.matrix if matrix is None else matrix, str(tmp_path / view.filename),
-                               hsv_folder=str(tmp_path))
+    transform = view_transform(
+        view.matrix if matrix is None else matrix, str(tmp_path / view.filename), hsv_folder=str(tmp_path)
+    )
     ocio.ClearAllCaches()
     return probes.ocio_apply(transform)
 
@@ -112,8 +113,10 @@ def test_bright_colours_of_little_luminance_are_mapped_beyond_a_thousand_times_t
     out = _view_apply(default_spec, display, tmp_path, np.eye(3))(linear)
     expected = desaturate(linear, reference.display_gamut(display))
     shift = hsv_rounding_shift(display, linear * display.clip_high) / display.clip_high
-    codes, low, high = (reference.display_encode(display, np.clip(light, 0.0, 1.0))
-                        for light in (out, expected - shift, expected + shift))
+    codes, low, high = (
+        reference.display_encode(display, np.clip(light, 0.0, 1.0))
+        for light in (out, expected - shift, expected + shift)
+    )
     tolerance = tolerances.LUT_CLF_SCALE_CODES / 1023.0
     assert np.all(codes >= low - tolerance) and np.all(codes <= high + tolerance)
 
@@ -124,7 +127,7 @@ def _cone_colours(rng, t, count):
     size = 10.0 ** rng.uniform(-2.0, 1.0, count)
     colours = np.stack([size, -size * (1.0 - t), rng.uniform(-1.0, 1.0, count) * size], axis=-1)
     colours = np.take_along_axis(colours, np.argsort(rng.random((count, 3)), axis=-1), axis=-1)
-    colours[count // 2:] *= -1.0
+    colours[count // 2 :] *= -1.0
     return colours.astype(np.float32).astype(np.float64)
 
 
@@ -148,8 +151,9 @@ def test_colours_a_hair_from_the_cone_keep_their_size(default_spec, tmp_path, na
         moved = values.copy()
         moved[:, 1] += sign * shift
         bounds.append(desaturate(hsv_axes.ocio_hsv_to_rgb(moved, max_saturation=2.0), gamut) * peak)
-    codes, low, high = (reference.display_encode(display, light)
-                        for light in (out, np.minimum(*bounds), np.maximum(*bounds)))
+    codes, low, high = (
+        reference.display_encode(display, light) for light in (out, np.minimum(*bounds), np.maximum(*bounds))
+    )
     tolerance = tolerances.LUT_CLF_EXACT_CODES / 1023.0
     assert np.all(codes >= low - tolerance) and np.all(codes <= high + tolerance)
     assert codes.max() > 0.5  # not all black

@@ -20,8 +20,12 @@ def test_ports_of_ocio_hsv_agree_with_ocio():
     assert np.minimum(hue_difference, 1.0 - hue_difference).max() < 1e-6
     assert np.allclose(ours[:, 1:], theirs[:, 1:], rtol=1e-5, atol=1e-6)
     back = hsv_cases.ocio_fixed(ocio.FIXED_FUNCTION_RGB_TO_HSV, ocio.TRANSFORM_DIR_INVERSE)(theirs)
-    assert np.allclose(hsv_axes.ocio_hsv_to_rgb(theirs.astype(np.float32).astype(np.float64)), back,
-                       rtol=1e-5, atol=1e-5 * np.abs(colours).max(axis=-1, keepdims=True))
+    assert np.allclose(
+        hsv_axes.ocio_hsv_to_rgb(theirs.astype(np.float32).astype(np.float64)),
+        back,
+        rtol=1e-5,
+        atol=1e-5 * np.abs(colours).max(axis=-1, keepdims=True),
+    )
 
 
 def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
@@ -37,12 +41,15 @@ def test_shared_table_puts_grey_zero_and_the_gamut_boundary_on_nodes():
     assert np.array_equal(table[[at[0.25], at[0.5]], 0], np.array([0.25, 0.5]) / hsv_axes.SHARED_SCALE)
     # Saturation's u = 1 / t above S = 1, reaching SATURATION_REACH at t = 2**-23, a subnormal half.
     assert table[at[2.0**-23], 1] == 1.0 and table[at[0.5], 1] == pytest.approx(
-        np.interp(2.0, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), abs=1e-15)
+        np.interp(2.0, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), abs=1e-15
+    )
     # Every t OCIO gives below 2**-14 (a multiple of 2**-23: 2 - S in float32) is an entry.
     t = np.arange(1, 2**9 + 1) * 2.0**-23
     assert np.all(np.isin(t, half))
     entries = table[[at[v] for v in t], 1]
-    assert np.allclose(entries, np.interp(1.0 / t, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), rtol=0, atol=1e-15)
+    assert np.allclose(
+        entries, np.interp(1.0 / t, hsv_axes.saturation_nodes(), np.linspace(0, 1, n)), rtol=0, atol=1e-15
+    )
     assert np.all(np.diff(entries) < 0.0)  # u's coordinate resolves each of them
 
 

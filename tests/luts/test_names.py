@@ -14,7 +14,9 @@ def test_slug_keeps_letters_and_digits():
 
 def test_a_name_slugging_apart_keeps_its_slug():
     assert file_stems(["sRGB - Display", "Rec.2100-PQ - Display"]) == {
-        "sRGB - Display": "srgb_display", "Rec.2100-PQ - Display": "rec_2100_pq_display"}
+        "sRGB - Display": "srgb_display",
+        "Rec.2100-PQ - Display": "rec_2100_pq_display",
+    }
 
 
 def test_names_slugging_alike_get_distinct_stems_independent_of_order():
@@ -46,7 +48,7 @@ def test_a_slug_takes_accents_off_and_drops_other_scripts():
 
 
 def test_a_name_ending_in_another_names_digest_gets_a_longer_one():
-    """"Wall X 155a6b9c" slugs to the stem "Wall X" takes beside "wall-x" (its slug and digest):
+    """ "Wall X 155a6b9c" slugs to the stem "Wall X" takes beside "wall-x" (its slug and digest):
     both move on to longer digests, the same whatever the order."""
     names = ["Wall X", "wall-x", "Wall X 155a6b9c"]
     stems = file_stems(names)
@@ -74,11 +76,14 @@ def test_a_spec_whose_names_slug_alike_or_run_long_builds_distinct_short_files(t
     from generator.ocio.write import build, for_folder
     from generator.spec import load
 
-    display = ('[[display]]\nname = "{}"\nprimaries = [[0.70, 0.29], [0.17, 0.78], [0.13, 0.04]]\nwhite = "D65"\n'
-               'eotf = "Gamma 2.4"\nviews = ["Colorimetric", "Scale"]\n')
+    display = (
+        '[[display]]\nname = "{}"\nprimaries = [[0.70, 0.29], [0.17, 0.78], [0.13, 0.04]]\nwhite = "D65"\n'
+        'eotf = "Gamma 2.4"\nviews = ["Colorimetric", "Scale"]\n'
+    )
     names = ["LED Wall", "led-wall", "LED Wall 507756a0", "Wall " + "x" * 235]
-    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-            + "".join(display.format(n) for n in names))
+    text = 'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n' + "".join(
+        display.format(n) for n in names
+    )
     folder = tmp_path / "show"
     build(for_folder(load.parse(text, "show.toml", tmp_path), folder, (2, 1)), folder)
     views = sorted(p.name for p in (folder / "luts").iterdir() if p.name.startswith("view_"))

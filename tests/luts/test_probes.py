@@ -21,7 +21,8 @@ def tabulated_spec(tmp_path_factory):
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
         '"CIE XYZ-D65 - Scene-referred"]\n'
         '[[custom_space]]\nname = "Tab"\ngamut = "P3-D65"\ntransfer = { family = "tabulated", file = "curve.csv" }\n'
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+    )
     return load.load(folder / "show.toml")
 
 

@@ -18,7 +18,7 @@ def test_source_axis_is_linear_in_code_values_between_nodes(default_spec, source
         assert np.all(np.diff(nodes) > 0) and nodes[axis.zero] == 0.0
         assert nodes[axis.one] == pytest.approx(min(1.0, nodes[-1]), rel=1e-12)
         np.testing.assert_allclose(axis.coordinate(nodes), np.arange(nodes.size) / (nodes.size - 1), atol=1e-12)
-        inside = nodes[axis.zero:axis.one + 1]
+        inside = nodes[axis.zero : axis.one + 1]
         middle = grey_code(display, 0.5 * (inside[:-1] + inside[1:]))
         code = grey_code(display, inside)
         expected = (np.arange(axis.zero, axis.one) + (middle - code[:-1]) / (code[1:] - code[:-1])) / (nodes.size - 1)
@@ -33,12 +33,14 @@ def test_source_axis_refuses_too_few_nodes(default_spec):
 def test_source_axis_spaces_negatives_when_the_display_reaches_outside_the_source(default_spec):
     """Rec.709 inside P3: P3's in-gamut colours have Rec.709 values down to -0.22."""
     source = default_spec.space("Linear Rec.709 (sRGB)")
-    wide, narrow = (next(d for d in default_spec.displays if d.name == name)
-                    for name in ("Gamma 2.6 P3-D65 - Display", "sRGB - Display"))
+    wide, narrow = (
+        next(d for d in default_spec.displays if d.name == name)
+        for name in ("Gamma 2.6 P3-D65 - Display", "sRGB - Display")
+    )
     reach = source_axes.display_reach(default_spec, source, wide)
     assert 0.2 < reach < 0.25 and source_axes.display_reach(default_spec, source, narrow) < 1e-12
     axis = lattice.source_axis(default_spec, source, wide, 33)
-    negative = axis.values[:axis.zero]
+    negative = axis.values[: axis.zero]
     assert negative.size == 1 + round(32 * source_axes.SOURCE_NEGATIVE_SHARE)
     assert negative[1] == pytest.approx(-reach, rel=1e-2) and np.all(np.diff(negative[1:]) > 0)
     assert lattice.source_axis(default_spec, source, narrow, 33).zero == 1

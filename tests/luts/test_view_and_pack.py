@@ -29,12 +29,18 @@ def test_view_files_of_displays_named_alike_are_apart(default_spec, tmp_path):
     from generator.spec import load
 
     walls = (("Wall A", "P3-D65"), ("Wall-A", "Rec.709"))
-    text = "".join(f'[[display]]\nname = "{name}"\ngamut = "{gamut}"\neotf = "Gamma 2.4"\n'
-                   'views = ["Colorimetric", "Scale"]\n' for name, gamut in walls)
+    text = "".join(
+        f'[[display]]\nname = "{name}"\ngamut = "{gamut}"\neotf = "Gamma 2.4"\nviews = ["Colorimetric", "Scale"]\n'
+        for name, gamut in walls
+    )
     (tmp_path / "walls.toml").write_text(text)
     spec = load.load(tmp_path / "walls.toml")
-    names = {view_filename(spec, d, method) for d in spec.displays if d.name.startswith("Wall")
-             for method in ("scale", "desaturate")}
+    names = {
+        view_filename(spec, d, method)
+        for d in spec.displays
+        if d.name.startswith("Wall")
+        for method in ("scale", "desaturate")
+    }
     assert len(names) == 4 and all(n.startswith("view_wall_a_") for n in names)
     srgb = next(d for d in default_spec.displays if d.name == "sRGB - Display")
     assert view_filename(default_spec, srgb, "scale") == "view_srgb_display_scale_17.clf"
@@ -65,7 +71,6 @@ def test_hdr_view_lut_ends_in_display_light_and_meets_the_targets(default_spec, 
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_VIEW_HDR_SCALE_DELTA_E_ITP
 
 
-
 def test_a_display_with_a_tabulated_eotf_has_its_views_measured_through_its_baked_curve(tmp_path):
     """No CLF operator encodes a tabulated EOTF: the view file ends in display light and the
     config encodes it with the display's baked curve, which the measurement must find (it
@@ -73,18 +78,20 @@ def test_a_display_with_a_tabulated_eotf_has_its_views_measured_through_its_bake
     from generator.spec import load
 
     code = np.linspace(0.0, 1.0, 65)
-    rows = "".join(f"{c:.17g},{c ** 2.4:.17g}\n" for c in code)
+    rows = "".join(f"{c:.17g},{c**2.4:.17g}\n" for c in code)
     (tmp_path / "eotf.csv").write_text("code,linear\n" + rows)
     (tmp_path / "show.toml").write_text(
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[display]]\nname = "Tab EOTF"\ngamut = "Rec.709"\neotf = { family = "tabulated", file = "eotf.csv" }\n'
-        'views = ["Colorimetric", "Scale", "Desaturate", "Raw"]\n')
+        'views = ["Colorimetric", "Scale", "Desaturate", "Raw"]\n'
+    )
     spec = load.load(tmp_path / "show.toml")
     for method in ("scale", "desaturate"):
         view = bake_view_lut(spec, spec.displays[0], method)
         assert view.light and view.unit == "10-bit codes"
         assert view.figures["in_gamut"].maximum <= tolerances.LUT_CLF_IN_GAMUT_CODES, method
         assert view.bound <= tolerances.LUT_CLF_SCALE_CODES, method
+
 
 def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
     monkeypatch.setattr(pack, "SOURCES", ("ACEScct",))
@@ -95,9 +102,11 @@ def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
     first = pack.build_pack(tmp_path / "a", default_spec)
     second = pack.build_pack(tmp_path / "b", default_spec)
     names = sorted(p.name for p in first.iterdir())
-    aces = [f"acescct_aces_2_0_{view}{suffix}" for view in ("hdr_1000_nits_p3_d65_rec_2100_pq_display",
-                                                            "sdr_100_nits_rec_709_srgb_display")
-            for suffix in (".clf", ".cube")]
+    aces = [
+        f"acescct_aces_2_0_{view}{suffix}"
+        for view in ("hdr_1000_nits_p3_d65_rec_2100_pq_display", "sdr_100_nits_rec_709_srgb_display")
+        for suffix in (".clf", ".cube")
+    ]
     assert names == ["README.md", *aces, "acescct_to_srgb_display.clf", "acescct_to_srgb_display.cube"]
     for name in names:
         assert (first / name).read_bytes() == (second / name).read_bytes()
@@ -132,8 +141,11 @@ def test_committed_pack_is_what_the_build_gives_and_fits(default_spec, tmp_path)
     aces = sum(len(pack.aces_formats(default_spec.space(source))) for source in pack.SOURCES) * len(pack.ACES_VIEWS)
     assert len(files) == 1 + len(pack.SOURCES) * len(pack.DISPLAYS) * len(pack.FORMATS) + aces
     assert sum(len(data) for data in files.values()) <= tolerances.LUT_PACK_BYTES
-    rows = [line for line in files["README.md"].decode().splitlines()
-            if line.startswith("| ") and "_to_" in line and ".clf" in line]
+    rows = [
+        line
+        for line in files["README.md"].decode().splitlines()
+        if line.startswith("| ") and "_to_" in line and ".clf" in line
+    ]
     sdr = [line.split("|") for line in rows if "codes" in line.split("|")[10]]
     assert len(sdr) == 3 * len(pack.SOURCES)
     # read as written, every CLF meets the issue's in-gamut target on every probe set; with

@@ -25,10 +25,18 @@ def decode_through_ocio(transforms: list, codes: np.ndarray, direction=ocio.TRAN
     return rgb[:, 0].astype(np.float64)
 
 
-LOG_AFFINE = transfer.LogCamera(base=10.0, log_side_slope=0.25, log_side_offset=0.4,
-                                lin_side_slope=5.0, lin_side_offset=0.05)
-LOG_CAMERA = transfer.LogCamera(base=10.0, log_side_slope=0.247, log_side_offset=0.385, lin_side_slope=5.56,
-                                lin_side_offset=0.052, lin_side_break=0.0109, linear_slope=5.37)
+LOG_AFFINE = transfer.LogCamera(
+    base=10.0, log_side_slope=0.25, log_side_offset=0.4, lin_side_slope=5.0, lin_side_offset=0.05
+)
+LOG_CAMERA = transfer.LogCamera(
+    base=10.0,
+    log_side_slope=0.247,
+    log_side_offset=0.385,
+    lin_side_slope=5.56,
+    lin_side_offset=0.052,
+    lin_side_break=0.0109,
+    linear_slope=5.37,
+)
 
 
 @pytest.mark.parametrize("curve", [LOG_AFFINE, LOG_CAMERA], ids=["no break", "break"])
@@ -56,10 +64,14 @@ def test_a_pq_scene_space_is_defined_on_the_signal_range_only(version):
 
 # --- baked curve files: one per curve --------------------------------------------------------
 
+
 def test_curves_named_alike_get_files_of_their_own(slugging_alike):
     spec, folder = slugging_alike
-    labels = {s.name: curve_label(spec, s.name, s.curve_name) for s in spec.colour_spaces if is_baked(
-        s.curve_name, s.curve, spec.ocio_version)}
+    labels = {
+        s.name: curve_label(spec, s.name, s.curve_name)
+        for s in spec.colour_spaces
+        if is_baked(s.curve_name, s.curve, spec.ocio_version)
+    }
     assert labels["CanonLog2 CinemaGamut D55"] == "Canon Log 2"
     assert len(set(map(slug, labels.values()))) == len(labels)
     files = {p.name for p in (folder / "luts").iterdir()}
@@ -92,7 +104,7 @@ def test_a_table_with_evenly_spaced_rows_is_baked_on_its_rows():
     from generator.luts.curve1d import bake_curve
 
     code = tuple(i / 1023 for i in range(1024))
-    curve = Tabulated("clip.csv", code, tuple(20.0 * c**2.4 for c in code[:-1]) + (100.0,))
+    curve = Tabulated("clip.csv", code, (*tuple(20.0 * c**2.4 for c in code[:-1]), 100.0))
     baked = bake_curve("Clip", curve, curve.domain)
     assert (len(baked.values) - 1) % 1023 == 0 and baked.shaper == 1.0
     assert baked.max_relative_error <= tolerances.BAKED_CURVE_RELATIVE
@@ -122,8 +134,11 @@ def test_a_table_no_lut_holds_is_refused(tmp_path):
     from generator.spec import load
 
     (tmp_path / "step.csv").write_text("code,linear\n0,0\n0.5,0.5\n0.5000001,0.6\n1,1\n")
-    spec = load.parse('[[custom_space]]\nname = "Step"\ngamut = "Rec.709"\n'
-                      'transfer = { family = "tabulated", file = "step.csv" }\n', "show.toml", tmp_path)
+    spec = load.parse(
+        '[[custom_space]]\nname = "Step"\ngamut = "Rec.709"\ntransfer = { family = "tabulated", file = "step.csv" }\n',
+        "show.toml",
+        tmp_path,
+    )
     with pytest.raises(SpecError, match="step_to_linear.spi1d departs 0.12 relative"):
         build(for_folder(spec, tmp_path / "out"), tmp_path / "out")
     assert not (tmp_path / "out").exists()

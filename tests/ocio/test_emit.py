@@ -12,9 +12,9 @@ import pytest
 
 from generator import tolerances
 from generator.colorimetry import reference
-from generator.verify.metrics import colour_relative_error, delta_e_itp, relative_error
 from generator.ocio.curves import is_baked
 from generator.spec import resolved
+from generator.verify.metrics import colour_relative_error, delta_e_itp, relative_error
 from tests.conftest import VERSIONS
 
 LOSSLESS = ocio.OPTIMIZATION_LOSSLESS
@@ -109,7 +109,11 @@ def test_every_space_round_trips_through_the_reference(built):
         scene = scene.astype(np.float32).astype(np.float64)
         to_ref, from_ref = cpu(cfg, space.name, spec.scene_reference), cpu(cfg, spec.scene_reference, space.name)
         code_error = colour_relative_error(apply(from_ref, apply(to_ref, neutral)), neutral)
-        code_trip = np.max(code_error - float32_limit(space, neutral[:, 0], reference.space_matrix(spec, space))) if not space.special else code_error.max()
+        code_trip = (
+            np.max(code_error - float32_limit(space, neutral[:, 0], reference.space_matrix(spec, space)))
+            if not space.special
+            else code_error.max()
+        )
         scene_trip = colour_relative_error(apply(to_ref, apply(from_ref, scene)), scene).max()
         if max(code_trip, scene_trip) > tolerances.ROUND_TRIP_RELATIVE:
             failing[space.name] = (float(code_trip), float(scene_trip))
@@ -122,8 +126,9 @@ def test_colorimetric_views_match_the_reference(built):
     scene = np.concatenate([rng.uniform(-0.05, 2.0, (4096, 3)), np.geomspace(1e-4, 100.0, 256)[:, None] * [1, 1, 1]])
     scene = scene.astype(np.float32).astype(np.float64)
     for display in spec.displays:
-        processor = cfg.getProcessor(spec.scene_reference, display.name, "Colorimetric",
-                                     ocio.TRANSFORM_DIR_FORWARD).getOptimizedCPUProcessor(LOSSLESS)
+        processor = cfg.getProcessor(
+            spec.scene_reference, display.name, "Colorimetric", ocio.TRANSFORM_DIR_FORWARD
+        ).getOptimizedCPUProcessor(LOSSLESS)
         expected = reference.colorimetric_view(spec, display, scene)
         if not display.is_hdr:
             error = relative_error(apply(processor, scene), expected).max()
@@ -145,15 +150,30 @@ def test_display_codes_beyond_the_signal_read_back_as_its_ends(built):
         codes = np.array([[2.0, 2.0, 2.0], [1.5, 1.0, 1.2], [-0.5, -2.0, 0.0]]) * max(top, 1.0)
         ends = np.clip(codes, 0.0, top)
         processor = cfg.getProcessor(display.name, spec.scene_reference).getOptimizedCPUProcessor(LOSSLESS)
-        assert np.allclose(apply(processor, codes), apply(processor, ends), rtol=tolerances.ANALYTIC_RELATIVE, atol=0.0), display.name
+        assert np.allclose(
+            apply(processor, codes), apply(processor, ends), rtol=tolerances.ANALYTIC_RELATIVE, atol=0.0
+        ), display.name
 
 
 def test_roles_and_rules_hosts_read(built):
     cfg, _ = built
     roles = dict(cfg.getRoles())
-    for role in ("scene_linear", "rendering", "compositing_log", "color_timing", "color_picking", "texture_paint",
-                 "matte_paint", "data", "default", "aces_interchange", "cie_xyz_d65_interchange", "default_byte",
-                 "default_float", "default_sequencer"):
+    for role in (
+        "scene_linear",
+        "rendering",
+        "compositing_log",
+        "color_timing",
+        "color_picking",
+        "texture_paint",
+        "matte_paint",
+        "data",
+        "default",
+        "aces_interchange",
+        "cie_xyz_d65_interchange",
+        "default_byte",
+        "default_float",
+        "default_sequencer",
+    ):
         assert cfg.getColorSpace(roles[role]) is not None, role
     rules = cfg.getFileRules()
     assert cfg.getColorSpaceFromFilepath("shot.0001.exr")[0] == "scene_linear"
@@ -161,9 +181,27 @@ def test_roles_and_rules_hosts_read(built):
     assert rules.getColorSpace(rules.getNumEntries() - 1) == "default"
 
 
-@pytest.mark.parametrize("alias", ["lin_ciexyzd65", "lin_ciexyze", "lin_ciergb", "lin_rec709", "lin_rec2020",
-                                   "lin_p3d65", "acescg", "aces2065_1", "acescct", "srgb_tx", "srgb_display",
-                                   "srgb_texture", "lin_ap1", "arri_logc4", "slog3_sgamut3cine", "flog2_fgamut"])
+@pytest.mark.parametrize(
+    "alias",
+    [
+        "lin_ciexyzd65",
+        "lin_ciexyze",
+        "lin_ciergb",
+        "lin_rec709",
+        "lin_rec2020",
+        "lin_p3d65",
+        "acescg",
+        "aces2065_1",
+        "acescct",
+        "srgb_tx",
+        "srgb_display",
+        "srgb_texture",
+        "lin_ap1",
+        "arri_logc4",
+        "slog3_sgamut3cine",
+        "flog2_fgamut",
+    ],
+)
 def test_required_aliases_resolve(build_config, alias):
     cfg = ocio.Config.CreateFromFile(str(build_config((2, 1))))
     assert cfg.getColorSpace(alias) is not None
@@ -227,9 +265,11 @@ def test_each_display_keeps_its_own_view_order_and_default(tmp_path):
     from generator.ocio.write import build, for_folder
     from generator.spec import load
 
-    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-            '[[display]]\nname = "sRGB - Display"\nviews = ["Perceptual", "Colorimetric", "Raw"]\n'
-            '[[display]]\nname = "Display P3 - Display"\nviews = ["Raw", "Scale", "Perceptual"]\n')
+    text = (
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Perceptual", "Colorimetric", "Raw"]\n'
+        '[[display]]\nname = "Display P3 - Display"\nviews = ["Raw", "Scale", "Perceptual"]\n'
+    )
     folder = tmp_path / "order"
     build(for_folder(load.parse(text, "order.toml", tmp_path), folder), folder)
     cfg = ocio.Config.CreateFromFile(str(folder / "config.ocio"))

@@ -6,7 +6,6 @@ from __future__ import annotations
 import os
 
 import PyOpenColorIO as ocio
-import pytest
 
 from generator.ocio.write import build, for_folder
 from generator.spec import load
@@ -16,8 +15,12 @@ from generator.verify.run import engine_registry, verify
 from tests.conftest import host_missing
 
 #: A show's settings, none of which the default config defines.
-SHOW = {"OCIO_ACTIVE_DISPLAYS": "ACES", "OCIO_ACTIVE_VIEWS": "Film", "OCIO_INACTIVE_COLORSPACES": "ACEScg,ACEScct",
-        "OCIO_USER_CATEGORIES": "show"}
+SHOW = {
+    "OCIO_ACTIVE_DISPLAYS": "ACES",
+    "OCIO_ACTIVE_VIEWS": "Film",
+    "OCIO_INACTIVE_COLORSPACES": "ACEScg,ACEScct",
+    "OCIO_USER_CATEGORIES": "show",
+}
 
 
 def test_a_build_sees_the_config_as_written(tmp_path, monkeypatch):
@@ -39,12 +42,15 @@ def test_verify_runs_its_flags_and_every_host_on_the_config_as_written(build_con
     their departures left to explain), and Blender, handed the shell's active views and inactive
     spaces, failed every view it was asked for that they hide."""
     config = build_config((2, 1))
-    for key, value in {**SHOW, "OCIO_ACTIVE_VIEWS": "Colorimetric",
-                       "OCIO_OPTIMIZATION_FLAGS": str(int(ocio.OPTIMIZATION_LOSSLESS))}.items():
+    for key, value in {
+        **SHOW,
+        "OCIO_ACTIVE_VIEWS": "Colorimetric",
+        "OCIO_OPTIMIZATION_FLAGS": str(int(ocio.OPTIMIZATION_LOSSLESS)),
+    }.items():
         monkeypatch.setenv(key, value)
     flags = verify(config, ("ocio",), density="quick", kinds=(VIEW,))
     assert not flags.failures and any(o.verdict == APPROX for o in flags.outcomes)
-    if (reason := engine_registry()["blender"][0].missing(config)):
+    if reason := engine_registry()["blender"][0].missing(config):
         host_missing(f"blender: {reason}")
     hosts = verify(config, ("blender",), density="quick", kinds=(VIEW,), only=" from ACEScg")
     assert [e for e in hosts.engines if e.name == "blender" and not e.skipped]

@@ -98,11 +98,13 @@ def test_every_gamut_mapped_view_a_spec_can_ask_for(tmp_path):
     text = load.default_text().split("[[display]]")[0] + (
         '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Desaturate", "Scale", "Perceptual", "RGC", "Raw"]\n'
         '[[display]]\nname = "Rec.2100-PQ - Display"\nviews = ["Colorimetric", "Desaturate", "Scale", "Perceptual", "RGC", "Raw"]\n'
-        '[[display]]\nname = "Rec.2100-HLG - Display"\nviews = ["Colorimetric", "Desaturate", "Scale", "Perceptual", "RGC", "Raw"]\n')
+        '[[display]]\nname = "Rec.2100-HLG - Display"\nviews = ["Colorimetric", "Desaturate", "Scale", "Perceptual", "RGC", "Raw"]\n'
+    )
     folder = tmp_path / "all-views"
     build(for_folder(load.parse(text, "all-views.toml", tmp_path), folder), folder)
-    test_every_view_meets_its_targets((ocio.Config.CreateFromFile(str(folder / "config.ocio")),
-                                       resolved.read_beside(folder / "config.ocio")))
+    test_every_view_meets_its_targets(
+        (ocio.Config.CreateFromFile(str(folder / "config.ocio")), resolved.read_beside(folder / "config.ocio"))
+    )
 
 
 def test_an_absolute_led_wall_meets_every_target(tmp_path):
@@ -114,7 +116,8 @@ def test_an_absolute_led_wall_meets_every_target(tmp_path):
 
     text = load.default_text().split("[[display]]")[0] + (
         '[[display]]\nname = "LED Wall"\nprimaries = [[0.70, 0.29], [0.17, 0.74], [0.135, 0.05]]\nwhite = "D65"\n'
-        'eotf = "gamma 2.4"\npeak_luminance = 1500\nabsolute_luminance = true\n')
+        'eotf = "gamma 2.4"\npeak_luminance = 1500\nabsolute_luminance = true\n'
+    )
     folder = tmp_path / "wall"
     build(for_folder(load.parse(text, "wall.toml", tmp_path), folder), folder)
     cfg, spec = ocio.Config.CreateFromFile(str(folder / "config.ocio")), resolved.read_beside(folder / "config.ocio")
@@ -204,9 +207,13 @@ def test_the_rgc_view_runs_the_specs_parameters_and_verify_judges_it_by_them(tmp
     from generator.verify.judge import FAIL, PASS
     from generator.verify.run import verify
 
-    spec = load.parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-                      "[rgc]\nlimits = [1.5, 1.4, 1.3]\nthresholds = [0.6, 0.7, 0.75]\npower = 1.5\n"
-                      '[[display]]\nname = "Rec.1886 Rec.709 - Display"\nviews = ["RGC", "Raw"]\n', "show.toml", tmp_path)
+    spec = load.parse(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        "[rgc]\nlimits = [1.5, 1.4, 1.3]\nthresholds = [0.6, 0.7, 0.75]\npower = 1.5\n"
+        '[[display]]\nname = "Rec.1886 Rec.709 - Display"\nviews = ["RGC", "Raw"]\n',
+        "show.toml",
+        tmp_path,
+    )
     folder = tmp_path / "show"
     build(for_folder(spec, folder), folder)
     config = folder / "config.ocio"
@@ -214,7 +221,9 @@ def test_the_rgc_view_runs_the_specs_parameters_and_verify_judges_it_by_them(tmp
     assert text.count("params: [1.5, 1.4, 1.3, 0.6, 0.7, 0.75, 1.5]") == 1  # the view transform
     result = verify(config, ("ocio",), density="quick", kinds=(VIEW,), only="RGC", strict=True)
     assert result.outcomes and all(o.verdict == PASS for o in result.outcomes)
-    config.write_text(text.replace("[1.5, 1.4, 1.3, 0.6, 0.7, 0.75, 1.5]", "[1.147, 1.264, 1.312, 0.815, 0.803, 0.88, 1.2]"),
-                      encoding="utf-8")
+    config.write_text(
+        text.replace("[1.5, 1.4, 1.3, 0.6, 0.7, 0.75, 1.5]", "[1.147, 1.264, 1.312, 0.815, 0.803, 0.88, 1.2]"),
+        encoding="utf-8",
+    )
     result = verify(config, ("ocio",), density="quick", kinds=(VIEW,), only="RGC", strict=True)
     assert any(o.verdict == FAIL for o in result.outcomes)

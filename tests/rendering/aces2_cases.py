@@ -11,7 +11,7 @@ import PyOpenColorIO as ocio
 from generator.colorimetry.gamuts import gamuts
 from generator.colorimetry.matrices import apply_matrix, normalised_primary_matrix, rgb_to_rgb
 from generator.rendering.aces2 import ACES2Params, tables
-from generator.rendering.aces2_presets import PRESETS, REC2020, D65
+from generator.rendering.aces2_presets import D65, PRESETS, REC2020
 
 #: Cameras whose gamut edges (saturated colours beyond AP1 in places) are probed.
 CAMERAS = ("ARRI Wide Gamut 4", "S-Gamut3")
@@ -46,8 +46,9 @@ def probe_sets() -> dict[str, np.ndarray]:
     """ACES2065-1 probes, float32-representable: greys 1e-4..100 and on to 65504, random AP0
     in [0, 1], camera gamuts' edges, bright (1..64) and dark (1e-4..0.1) colours."""
     rng = np.random.default_rng(2025)
-    to_ap0 = {name: rgb_to_rgb(gamuts()[name], gamuts()["AP0"], gamuts()[name].adaptation or "Bradford")
-              for name in CAMERAS}
+    to_ap0 = {
+        name: rgb_to_rgb(gamuts()[name], gamuts()["AP0"], gamuts()[name].adaptation or "Bradford") for name in CAMERAS
+    }
     edges = cube_edges()
     return {
         "grey": float32(np.geomspace(1e-4, 65504.0, 1201)[:, None] * np.ones(3)),

@@ -25,7 +25,6 @@ CAMERAS = ("ARRI Wide Gamut 3", "S-Gamut3")
 EXPOSURES = (0.01, 0.05, 0.18, 0.5, 1.0, 2.0, 8.0)
 
 
-
 def cube_edges(samples: int = 33) -> np.ndarray:
     """The twelve edges of the unit RGB cube: a gamut's most saturated colours."""
     t = np.linspace(0.0, 1.0, samples)
@@ -46,8 +45,11 @@ def probe_sets() -> dict[str, np.ndarray]:
     at several exposures, bright and dark random colours."""
     rng = np.random.default_rng(13)
     aces = gamuts()["AP0"]
-    cameras = [apply_matrix(rgb_to_rgb(gamuts()[name], aces, gamuts()[name].adaptation), cube_edges()) * k
-               for name in CAMERAS for k in EXPOSURES]
+    cameras = [
+        apply_matrix(rgb_to_rgb(gamuts()[name], aces, gamuts()[name].adaptation), cube_edges()) * k
+        for name in CAMERAS
+        for k in EXPOSURES
+    ]
     return {
         "greys": np.repeat(np.geomspace(1e-4, 65504.0, 600)[:, None], 3, axis=1),
         "random": rng.uniform(0.0, 1.0, (20000, 3)),
@@ -61,8 +63,9 @@ def probe_sets() -> dict[str, np.ndarray]:
 def displays_of(view: str) -> tuple[str, ...]:
     """The studio config's displays that offer ``view``."""
     config = ocio.Config.CreateFromFile(STUDIO)
-    return tuple(d for d in config.getDisplays() for v in config.getViews(d)
-                 if config.getDisplayViewTransformName(d, v) == view)
+    return tuple(
+        d for d in config.getDisplays() for v in config.getViews(d) if config.getDisplayViewTransformName(d, v) == view
+    )
 
 
 @cache

@@ -31,12 +31,15 @@ def test_cinema_tone_scale_spans_0_02_to_48_nits_with_mid_grey_at_4_8():
     assert odt.y_to_linear_cv(odt.CINEMA_BLACK, odt.CINEMA_WHITE, odt.CINEMA_BLACK) == 0.0
 
 
-@pytest.mark.parametrize("view, expected", [
-    # (4.8 - 0.02) / (48 - 0.02) of a 48 cd/m² white.
-    ("ACES 1.0 - SDR Cinema", 48.0 * (4.8 - 0.02) / 47.98),
-    # The same code value to the dim-surround gamma 0.9811, of a 100 cd/m² white.
-    ("ACES 1.0 - SDR Video", 100.0 * ((4.8 - 0.02) / 47.98) ** 0.9811),
-])
+@pytest.mark.parametrize(
+    "view, expected",
+    [
+        # (4.8 - 0.02) / (48 - 0.02) of a 48 cd/m² white.
+        ("ACES 1.0 - SDR Cinema", 48.0 * (4.8 - 0.02) / 47.98),
+        # The same code value to the dim-surround gamma 0.9811, of a 100 cd/m² white.
+        ("ACES 1.0 - SDR Video", 100.0 * ((4.8 - 0.02) / 47.98) ** 0.9811),
+    ],
+)
 def test_mid_grey_luminance(view, expected):
     """ACES 0.18 shows at 4.782 cd/m² in the cinema and 10.41 cd/m² on video (not 4.8 and 10:
     the code value counts from the 0.02 cd/m² black, and video adds the surround gamma)."""
@@ -60,12 +63,15 @@ def test_cinema_stops_are_black_and_peak_and_the_inverse_clamps_to_them(view):
     assert back == pytest.approx(np.array([[CINEMA_BLACK_ACES] * 3] + [[CINEMA_WHITE_ACES] * 3] * 2), rel=1e-9)
 
 
-@pytest.mark.parametrize("view, display", [
-    ("ACES 1.0 - SDR Video (D60 sim on D65)", "Rec.709"),
-    ("ACES 1.1 - SDR Cinema (D60 sim on D65)", "P3-D65"),
-    ("ACES 1.0 - SDR Cinema (D60 sim on DCI)", "DCI-P3"),
-    ("ACES 1.1 - SDR Cinema (D65 sim on DCI)", "DCI-P3"),
-])
+@pytest.mark.parametrize(
+    "view, display",
+    [
+        ("ACES 1.0 - SDR Video (D60 sim on D65)", "Rec.709"),
+        ("ACES 1.1 - SDR Cinema (D60 sim on D65)", "P3-D65"),
+        ("ACES 1.0 - SDR Cinema (D60 sim on DCI)", "DCI-P3"),
+        ("ACES 1.1 - SDR Cinema (D65 sim on DCI)", "DCI-P3"),
+    ],
+)
 def test_white_simulations_scale_their_white_into_the_display(view, display):
     """The CTL's SCALE (0.955, 0.964, 0.96, 0.9575, given to three or four digits) brings the
     simulated white's largest display channel to 1 (within 1e-3)."""
@@ -111,11 +117,14 @@ def test_limiting_keeps_the_gamut_and_clips_the_rest_into_it(gamut):
     assert limited.max() <= 1.0 + FLOAT64 and limited.min() == pytest.approx(0.0, abs=FLOAT64)
 
 
-@pytest.mark.parametrize("view, display, gamut, ctl_odt", [
-    ("ACES 1.0 - SDR Cinema (D60 sim on DCI)", "P3-DCI - Display", "DCI-P3", {"encoding_white": None}),
-    ("ACES 1.1 - SDR Cinema (D65 sim on DCI)", "P3-DCI - Display", "DCI-P3", {"encoding_white": None}),
-    ("ACES 1.0 - SDR Cinema", "P3-D60 - Display", "P3-D60", {"adapt_to_d65": False}),
-])
+@pytest.mark.parametrize(
+    "view, display, gamut, ctl_odt",
+    [
+        ("ACES 1.0 - SDR Cinema (D60 sim on DCI)", "P3-DCI - Display", "DCI-P3", {"encoding_white": None}),
+        ("ACES 1.1 - SDR Cinema (D65 sim on DCI)", "P3-DCI - Display", "DCI-P3", {"encoding_white": None}),
+        ("ACES 1.0 - SDR Cinema", "P3-D60 - Display", "P3-D60", {"adapt_to_d65": False}),
+    ],
+)
 def test_ocios_displays_show_the_ctls_code_values(view, display, gamut, ctl_odt):
     """The CTL writes these ODTs' XYZ into the display's RGB unadapted (P3DCI_D60sim_48nits,
     P3DCI_D65sim_48nits, P3D60_48nits: XYZtoRGB, clamp, 1/2.6 power); the studio config's

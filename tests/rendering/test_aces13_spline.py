@@ -37,18 +37,27 @@ def test_knots_output_the_coefficient_averages(name):
     n = spline.knots
     low, high = np.asarray(spline.coefs_low), np.asarray(spline.coefs_high)
     # At the middle point the high half's first knot holds (the CTL's ``logx >= midPoint``).
-    expected = np.concatenate([((low[:n] + low[1:n + 1]) / 2.0)[:-1], (high[:n] + high[1:n + 1]) / 2.0])
+    expected = np.concatenate([((low[:n] + low[1 : n + 1]) / 2.0)[:-1], (high[:n] + high[1 : n + 1]) / 2.0])
     inputs = knot_inputs(spline)
     # The end knots are the end points, where the extensions take over from the spline.
     got = np.log10(spline_forward(10.0 ** inputs[1:-1], spline))
     assert np.abs(got - expected[1:-1]).max() <= 1e-12
 
 
-@pytest.mark.parametrize("spline, points", [
-    (RRT_SPLINE, ((0.18 * 2.0**-15, 0.0001), (0.18, 4.8), (0.18 * 2.0**18, 10000.0))),
-    (ODT_48NITS_SPLINE, ((ODT_48NITS_SPLINE.min_point[0], 0.02), (ODT_48NITS_SPLINE.mid_point[0], 4.8),
-                         (ODT_48NITS_SPLINE.max_point[0], 48.0))),
-])
+@pytest.mark.parametrize(
+    "spline, points",
+    [
+        (RRT_SPLINE, ((0.18 * 2.0**-15, 0.0001), (0.18, 4.8), (0.18 * 2.0**18, 10000.0))),
+        (
+            ODT_48NITS_SPLINE,
+            (
+                (ODT_48NITS_SPLINE.min_point[0], 0.02),
+                (ODT_48NITS_SPLINE.mid_point[0], 4.8),
+                (ODT_48NITS_SPLINE.max_point[0], 48.0),
+            ),
+        ),
+    ],
+)
 def test_published_tables_meet_their_points(spline, points):
     """RRT_PARAMS: 1e-4, 4.8 and 1e4 cd/m² at 0.18·2^-15, 0.18, 0.18·2^18; ODT_48nits: 0.02,
     4.8 and 48 cd/m² at the RRT's outputs for 0.18·2^-6.5, 0.18, 0.18·2^6.5 (the tables'

@@ -10,10 +10,16 @@ from generator.rendering.aces2 import ACES2Params, forward, inverse, output_rgb,
 from generator.rendering.aces2_presets import D60, D65, P3, PRESETS, REC709, REC2020
 from tests.rendering.aces2_cases import LED_WALL, display_error, is_sdr, preset_tables, probe_sets
 
-ROUND_TRIP_VIEWS = ["ACES 2.0 - SDR 100 nits (Rec.709)", "ACES 2.0 - SDR 100 nits (P3 D65)",
-                    "ACES 2.0 - SDR 100 nits (P3 D60 sim.)", "ACES 2.0 - SDR 100 nits (P3 D60 in XYZ)",
-                    "ACES 2.0 - HDR 108 nits (P3 D65)", "ACES 2.0 - HDR 1000 nits (P3 D65)",
-                    "ACES 2.0 - HDR 4000 nits (Rec.2020)", "ACES 2.0 - HDR 1000 nits (Rec.2020 D60 sim.)"]
+ROUND_TRIP_VIEWS = [
+    "ACES 2.0 - SDR 100 nits (Rec.709)",
+    "ACES 2.0 - SDR 100 nits (P3 D65)",
+    "ACES 2.0 - SDR 100 nits (P3 D60 sim.)",
+    "ACES 2.0 - SDR 100 nits (P3 D60 in XYZ)",
+    "ACES 2.0 - HDR 108 nits (P3 D65)",
+    "ACES 2.0 - HDR 1000 nits (P3 D65)",
+    "ACES 2.0 - HDR 4000 nits (Rec.2020)",
+    "ACES 2.0 - HDR 1000 nits (Rec.2020 D60 sim.)",
+]
 
 
 @pytest.mark.parametrize("view", ROUND_TRIP_VIEWS)

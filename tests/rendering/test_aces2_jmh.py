@@ -9,20 +9,32 @@ import pytest
 
 from generator import tolerances
 from generator.rendering.aces2 import ACES_WHITE, AP0_PRIMARIES, AP1_PRIMARIES
-from generator.rendering.jmh import (MODEL_GAMMA, compress_cone, decompress_cone, j_to_y, jmh_params, jmh_to_rgb,
-                                     luminance_adaptation, rgb_to_jmh, y_to_j)
+from generator.rendering.jmh import (
+    MODEL_GAMMA,
+    compress_cone,
+    decompress_cone,
+    j_to_y,
+    jmh_params,
+    jmh_to_rgb,
+    luminance_adaptation,
+    rgb_to_jmh,
+    y_to_j,
+)
 from generator.verify.metrics import colour_relative_error
 from tests.rendering.aces2_cases import LED_WALL, float32, ocio_apply, probe_sets
 
-SPACES = {"AP0": (AP0_PRIMARIES, ACES_WHITE), "AP1": (AP1_PRIMARIES, ACES_WHITE),
-          "LED wall": (LED_WALL.limiting_primaries, LED_WALL.limiting_white)}
+SPACES = {
+    "AP0": (AP0_PRIMARIES, ACES_WHITE),
+    "AP1": (AP1_PRIMARIES, ACES_WHITE),
+    "LED wall": (LED_WALL.limiting_primaries, LED_WALL.limiting_white),
+}
 
 
 def test_viewing_conditions():
     """CIECAM02's F_L (CIE 159:2004, eq. 7.2) for L_A = 100: 0.1 (5 L_A)^(1/3) but for terms in
     k^4 = 501^-4 (1.6e-9); and c z for the dim surround and Y_b = 20: 0.59 (1.48 + sqrt(0.2))."""
     assert luminance_adaptation() == pytest.approx(0.1 * 500.0 ** (1.0 / 3.0), abs=2e-9)
-    assert MODEL_GAMMA == pytest.approx(0.59 * (1.48 + np.sqrt(0.2)), rel=1e-15)
+    assert pytest.approx(0.59 * (1.48 + np.sqrt(0.2)), rel=1e-15) == MODEL_GAMMA
 
 
 @pytest.mark.parametrize("space", SPACES)

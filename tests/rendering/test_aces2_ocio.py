@@ -26,11 +26,25 @@ from generator import tolerances
 from generator.rendering.aces2 import forward, inverse, output_rgb, output_rgb_inverse, tables
 from generator.rendering.aces2_presets import PRESETS, STYLE_PREFIX
 from generator.rendering.jmh import rgb_to_jmh
-from tests.rendering.aces2_cases import (LED_WALL, builtin, delta_e_itp, display_error, fixed_function, float32,
-                                         is_sdr, ocio_apply, preset_tables, probe_sets)
+from tests.rendering.aces2_cases import (
+    LED_WALL,
+    builtin,
+    delta_e_itp,
+    display_error,
+    fixed_function,
+    float32,
+    is_sdr,
+    ocio_apply,
+    preset_tables,
+    probe_sets,
+)
 
-STUDIO_CONFIGS = ("studio-config-v4.0.0_aces-v2.0_ocio-v2.5", "studio-config-v5.0.0_aces-v2.1_ocio-v2.6",
-                  "cg-config-v4.0.0_aces-v2.0_ocio-v2.5", "cg-config-v5.0.0_aces-v2.1_ocio-v2.6")
+STUDIO_CONFIGS = (
+    "studio-config-v4.0.0_aces-v2.0_ocio-v2.5",
+    "studio-config-v5.0.0_aces-v2.1_ocio-v2.6",
+    "cg-config-v4.0.0_aces-v2.0_ocio-v2.5",
+    "cg-config-v5.0.0_aces-v2.1_ocio-v2.6",
+)
 
 
 def tolerance(params) -> float:
@@ -60,8 +74,11 @@ def source_hues(aces, t) -> np.ndarray:
 
 
 def test_every_builtin_is_a_preset():
-    styles = {name for name, _ in ocio.BuiltinTransformRegistry().getBuiltins()
-              if name.startswith(STYLE_PREFIX) and name.endswith("_2.0")}
+    styles = {
+        name
+        for name, _ in ocio.BuiltinTransformRegistry().getBuiltins()
+        if name.startswith(STYLE_PREFIX) and name.endswith("_2.0")
+    }
     assert styles == {preset.style for preset in PRESETS.values()}
     assert len(PRESETS) == 31
 
@@ -91,8 +108,13 @@ def test_preset_is_the_builtins_decomposition(view):
     p = preset.params
     steps = decomposition(preset.style)
     kinds = [type(s).__name__ for s in steps]
-    assert kinds[:5] == ["MatrixTransform", "RangeTransform", "MatrixTransform", "FixedFunctionTransform",
-                         "RangeTransform"]
+    assert kinds[:5] == [
+        "MatrixTransform",
+        "RangeTransform",
+        "MatrixTransform",
+        "FixedFunctionTransform",
+        "RangeTransform",
+    ]
     assert np.float32(t.tone.forward_limit) == np.float32(steps[1].getMaxInValue())
     assert steps[1].getMinInValue() == 0.0
     expected = [p.peak_luminance, *np.ravel(p.limiting_primaries), *p.limiting_white]

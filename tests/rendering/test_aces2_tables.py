@@ -5,16 +5,20 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from generator.rendering.aces2 import tables
 from generator.rendering.aces2_compress import hue_dependent
 from generator.rendering.aces2_params import CUBE_CORNERS
 from generator.rendering.aces2_presets import PRESETS
 from generator.rendering.aces2_tables import CUSP_M_SCALE, PADDED_SIZE, REACH_TOLERANCE, reach_corners
 from generator.rendering.jmh import jmh_to_rgb, rgb_to_jmh
 from tests.rendering.aces2_cases import LED_WALL, preset_tables
-from generator.rendering.aces2 import tables
 
-VIEWS = ["ACES 2.0 - SDR 100 nits (Rec.709)", "ACES 2.0 - HDR 1000 nits (P3 D65)",
-         "ACES 2.0 - HDR 4000 nits (Rec.2020 D60 sim.)", "ACES 2.0 - HDR 108 nits (P3 D60 sim.)"]
+VIEWS = [
+    "ACES 2.0 - SDR 100 nits (Rec.709)",
+    "ACES 2.0 - HDR 1000 nits (P3 D65)",
+    "ACES 2.0 - HDR 4000 nits (Rec.2020 D60 sim.)",
+    "ACES 2.0 - HDR 108 nits (P3 D60 sim.)",
+]
 
 
 def table_of(view):

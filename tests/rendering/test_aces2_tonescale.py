@@ -45,8 +45,15 @@ def test_the_roof_and_the_clamp(peak):
 
 def test_forward_limits_of_the_presets():
     """8 r_hit as OpenColorIO's builtins clamp AP1 (their float32 figures)."""
-    expected = {100: 1024.0, 225: 2105.90478515625, 500: 3171.23583984375, 625: 3468.943359375,
-                1000: 4096.0, 2000: 5020.76416015625, 4000: 5945.5283203125}
+    expected = {
+        100: 1024.0,
+        225: 2105.90478515625,
+        500: 3171.23583984375,
+        625: 3468.943359375,
+        1000: 4096.0,
+        2000: 5020.76416015625,
+        4000: 5945.5283203125,
+    }
     for peak, limit in expected.items():
         assert np.float32(tone_scale(peak).forward_limit) == np.float32(limit)
 

@@ -25,11 +25,14 @@ def test_every_studio_view_is_catalogued_under_the_studio_configs_name():
         assert views.catalogue()[name].style == style
 
 
-@pytest.mark.parametrize("display, view, words", [
-    ("sRGB - Display", "ACES 2.0 - HDR 1000 nits (P3 D65)", "HDR view"),
-    ("sRGB - Display", "ACES 2.0 - SDR 100 nits (P3 D65)", "limiting red and green primaries"),
-    ("Rec.2100-PQ - Display", "ACES 2.0 - HDR 4000 nits (Rec.2020)", "passes the display's, 1000"),
-])
+@pytest.mark.parametrize(
+    "display, view, words",
+    [
+        ("sRGB - Display", "ACES 2.0 - HDR 1000 nits (P3 D65)", "HDR view"),
+        ("sRGB - Display", "ACES 2.0 - SDR 100 nits (P3 D65)", "limiting red and green primaries"),
+        ("Rec.2100-PQ - Display", "ACES 2.0 - HDR 4000 nits (Rec.2020)", "passes the display's, 1000"),
+    ],
+)
 def test_a_display_cannot_show_a_view_beyond_its_gamut_or_peak(display, view, words):
     from generator.spec.load import parse
     from generator.spec.schema import SpecError
@@ -45,8 +48,9 @@ def test_a_display_cannot_show_a_view_beyond_its_gamut_or_peak(display, view, wo
 def test_the_studio_views_of_every_library_display_are_shown_by_it(default_spec):
     for display in default_spec.displays:
         for name in views.STUDIO_VIEWS[display.name]:
-            assert views.cannot_show(views.catalogue()[name], display.gamut.primaries, display.peak,
-                                     display.is_hdr) == ""
+            assert (
+                views.cannot_show(views.catalogue()[name], display.gamut.primaries, display.peak, display.is_hdr) == ""
+            )
 
 
 def test_a_custom_display_has_an_own_view_with_its_peak_and_primaries():

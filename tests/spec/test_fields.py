@@ -17,29 +17,40 @@ def transfer_error(table: str) -> SpecError:
     return error.value
 
 
-@pytest.mark.parametrize("table, key, allowed", [
-    ("family = 'gamma', exponent = 1e308", "exponent", "0.2 to 10"),
-    ("family = 'gamma', exponent = 0.001", "exponent", "0.2 to 10"),
-    ("family = 'piecewise_gamma', gamma = 12, offset = 0.05", "gamma", "> 1 and <= 10"),
-    ("family = 'piecewise_gamma', gamma = 2.4, offset = 5", "offset", "> 0 and <= 0.9"),
-    (f"{LOG}, lin_side_slope = -5.0", "lin_side_slope", "> 0"),
-    (f"{LOG}, lin_side_slope = 5.0, lin_side_break = 0.01, linear_slope = 0", "linear_slope", "> 0"),
-    (f"{LOG}, lin_side_slope = 5.0, lin_side_break = -1", "lin_side_break", "> -0.01"),
-    (f"{LOG}, lin_side_slope = 5.0, linear_slope = 2", "linear_slope", "needs lin_side_break"),
-    ("family = 'log_camera', base = 1, log_side_slope = 0.25, log_side_offset = 0.4, lin_side_slope = 5.0, "
-     "lin_side_offset = 0.05", "base", "> 1"),
-])
+@pytest.mark.parametrize(
+    "table, key, allowed",
+    [
+        ("family = 'gamma', exponent = 1e308", "exponent", "0.2 to 10"),
+        ("family = 'gamma', exponent = 0.001", "exponent", "0.2 to 10"),
+        ("family = 'piecewise_gamma', gamma = 12, offset = 0.05", "gamma", "> 1 and <= 10"),
+        ("family = 'piecewise_gamma', gamma = 2.4, offset = 5", "offset", "> 0 and <= 0.9"),
+        (f"{LOG}, lin_side_slope = -5.0", "lin_side_slope", "> 0"),
+        (f"{LOG}, lin_side_slope = 5.0, lin_side_break = 0.01, linear_slope = 0", "linear_slope", "> 0"),
+        (f"{LOG}, lin_side_slope = 5.0, lin_side_break = -1", "lin_side_break", "> -0.01"),
+        (f"{LOG}, lin_side_slope = 5.0, linear_slope = 2", "linear_slope", "needs lin_side_break"),
+        (
+            "family = 'log_camera', base = 1, log_side_slope = 0.25, log_side_offset = 0.4, lin_side_slope = 5.0, "
+            "lin_side_offset = 0.05",
+            "base",
+            "> 1",
+        ),
+    ],
+)
 def test_transfer_parameters_out_of_range_name_the_parameter_and_the_range(table, key, allowed):
     error = transfer_error(table)
     assert error.field == f"custom_space[0].transfer.{key}"
     assert allowed in error.message
 
 
-@pytest.mark.parametrize("table", [
-    "family = 'gamma', exponent = 0.2", "family = 'gamma', exponent = 10",
-    "family = 'piecewise_gamma', gamma = 10, offset = 0.9",
-    f"{LOG}, lin_side_slope = 5.0, lin_side_break = -0.005, linear_slope = 3",
-])
+@pytest.mark.parametrize(
+    "table",
+    [
+        "family = 'gamma', exponent = 0.2",
+        "family = 'gamma', exponent = 10",
+        "family = 'piecewise_gamma', gamma = 10, offset = 0.9",
+        f"{LOG}, lin_side_slope = 5.0, lin_side_break = -0.005, linear_slope = 3",
+    ],
+)
 def test_transfer_parameters_at_the_ends_of_their_ranges_load(table):
     space = load.parse(f"{SPACE}transfer = {{ {table} }}\n", "show.toml", None).space("C")
     assert space.curve_name.startswith("custom")
@@ -52,8 +63,9 @@ def gamut_error(primaries: str, white: str) -> SpecError:
     return error.value
 
 
-@pytest.mark.parametrize("primaries", ["[[0.64, 0.33], [0.64, 0.33], [0.15, 0.06]]",
-                                       "[[0.3, 0.3], [0.31, 0.31], [0.32, 0.32]]"])
+@pytest.mark.parametrize(
+    "primaries", ["[[0.64, 0.33], [0.64, 0.33], [0.15, 0.06]]", "[[0.3, 0.3], [0.31, 0.31], [0.32, 0.32]]"]
+)
 def test_repeated_or_collinear_primaries_are_an_error(primaries):
     error = gamut_error(primaries, "'D65'")
     assert error.field == "custom_space[0].primaries"
@@ -94,11 +106,14 @@ def test_a_tabulated_value_beyond_float32_is_refused_naming_file_and_line(tmp_pa
     assert "line 2: linear value 1e+39 is beyond float32's range" in error.message
 
 
-@pytest.mark.parametrize("table, words", [
-    ("family = ['gamma'], exponent = 2.2", "expected a string, got ['gamma']; allowed: linear, gamma"),
-    ("family = { a = 1 }", "expected a string, got {'a': 1}"),
-    ("exponent = 2.2", "missing; allowed: linear, gamma, piecewise_gamma"),
-])
+@pytest.mark.parametrize(
+    "table, words",
+    [
+        ("family = ['gamma'], exponent = 2.2", "expected a string, got ['gamma']; allowed: linear, gamma"),
+        ("family = { a = 1 }", "expected a string, got {'a': 1}"),
+        ("exponent = 2.2", "missing; allowed: linear, gamma, piecewise_gamma"),
+    ],
+)
 def test_a_family_that_is_no_string_or_missing_lists_the_families(table, words):
     error = quiet_error(f"{SPACE}transfer = {{ {table} }}\n")
     assert error.field == "custom_space[0].transfer.family" and words in error.message
@@ -106,15 +121,26 @@ def test_a_family_that_is_no_string_or_missing_lists_the_families(table, words):
 
 @pytest.mark.parametrize("extreme", ["base = 1e300, log_side_slope = 0.25", "base = 10, log_side_slope = 1e300"])
 def test_an_overflowing_log_camera_is_one_error_without_warnings(extreme):
-    error = quiet_error(f"{SPACE}transfer = {{ family = 'log_camera', {extreme}, log_side_offset = 0.4, "
-                        "lin_side_slope = 5, lin_side_offset = 0.05 }\n")
+    error = quiet_error(
+        f"{SPACE}transfer = {{ family = 'log_camera', {extreme}, log_side_offset = 0.4, "
+        "lin_side_slope = 5, lin_side_offset = 0.05 }\n"
+    )
     assert error.field == "custom_space[0].transfer" and "departs inf" in error.message
 
 
-@pytest.mark.parametrize("gamma, offset, accepted", [
-    (2.4, 1e-9, False), (2.4, 1e-7, False), (2.4, 1e-6, True), (2.4, 0.055, True),
-    (10, 1e-9, False), (10, 1e-4, False), (10, 1e-3, True), (1.0000001, 0.05, False),
-])
+@pytest.mark.parametrize(
+    "gamma, offset, accepted",
+    [
+        (2.4, 1e-9, False),
+        (2.4, 1e-7, False),
+        (2.4, 1e-6, True),
+        (2.4, 0.055, True),
+        (10, 1e-9, False),
+        (10, 1e-4, False),
+        (10, 1e-3, True),
+        (1.0000001, 0.05, False),
+    ],
+)
 def test_a_piecewise_gamma_ocio_evaluates_otherwise_is_refused(gamma, offset, accepted):
     """OCIO evaluates an offset below 1e-6 as 1e-6 (a toe 1e4 times less steep at 1e-9, which
     verify measured 1.9e4 off), and with gamma 10 and an offset up to 1e-4 its inverse toe's
@@ -128,8 +154,10 @@ def test_a_piecewise_gamma_ocio_evaluates_otherwise_is_refused(gamma, offset, ac
     assert "OCIO evaluates a piecewise_gamma curve in float32" in error.message
 
 
-@pytest.mark.parametrize("gamma, offset, accepted", [(1.001, 0.5, False), (1.2, 0.3, False), (1.5, 0.5, False),
-                                                     (1.5, 0.45, True), (2.4, 0.9, True)])
+@pytest.mark.parametrize(
+    "gamma, offset, accepted",
+    [(1.001, 0.5, False), (1.2, 0.3, False), (1.5, 0.5, False), (1.5, 0.45, True), (2.4, 0.9, True)],
+)
 def test_a_piecewise_gamma_whose_toe_reaches_code_1_is_refused(gamma, offset, accepted):
     """The break, offset / (gamma - 1), at or above code 1 leaves no power segment: code 1 would
     decode to 0.67 (gamma 1.001, offset 0.5), a straight line OCIO and the reference agree on."""
@@ -145,9 +173,12 @@ def test_a_piecewise_gamma_whose_toe_reaches_code_1_is_refused(gamma, offset, ac
 def test_log_camera_breaks_are_refused_from_where_float32_departs_upward():
     """A break far above black puts the codes verify probes (those of its linear values, above 1
     from a break of 100) on a toe that float32 loses: refused from 10 up, 1000 among them."""
+
     def refused(brk):
         try:
-            load.parse(f"{SPACE}transfer = {{ {LOG}, lin_side_slope = 5, lin_side_break = {brk} }}\n", "show.toml", None)
+            load.parse(
+                f"{SPACE}transfer = {{ {LOG}, lin_side_slope = 5, lin_side_break = {brk} }}\n", "show.toml", None
+            )
         except SpecError:
             return True
         return False
@@ -174,8 +205,10 @@ def test_spectra_of_huge_values_give_the_chromaticity_of_their_shape_without_war
 
 def test_a_spectrum_without_a_normal_float_is_refused(tmp_path):
     (tmp_path / "w.csv").write_text("380,5e-324\n780,5e-324\n")
-    error = quiet_error("[[custom_space]]\nname = 'C'\nprimaries = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]]\n"
-                        "white = 'w.csv'\n", tmp_path)
+    error = quiet_error(
+        "[[custom_space]]\nname = 'C'\nprimaries = [[0.64, 0.33], [0.3, 0.6], [0.15, 0.06]]\nwhite = 'w.csv'\n",
+        tmp_path,
+    )
     assert error.field == "custom_space[0].white" and "below the smallest normal float" in error.message
 
 

@@ -19,15 +19,23 @@ def error(text: str) -> SpecError:
     return raised.value
 
 
-@pytest.mark.parametrize("name, aliases, top, field, owner", [
-    ("sRGB - Display", [], "", "custom_space[0].name", "the generated display colour space of display[0]"),
-    ("Mine", ["srgb_display"], "", "custom_space[0].aliases[0]", "an alias of the generated display colour space"),
-    ("CIE XYZ-D65 - Display-referred", [], "", "custom_space[0].name", "the generated display-referred reference"),
-    ("cie_xyz_d65_display", [], "", "custom_space[0].name", "the generated display-referred reference"),
-    ("Colorimetric - sRGB - Display", [], "display_view_spaces = true\n", "custom_space[0].name",
-     "the generated display-view colour space of view 'Colorimetric' on display[0]"),
-    ("scene_linear", [], "", "custom_space[0].name", "the role 'scene_linear'"),
-])
+@pytest.mark.parametrize(
+    "name, aliases, top, field, owner",
+    [
+        ("sRGB - Display", [], "", "custom_space[0].name", "the generated display colour space of display[0]"),
+        ("Mine", ["srgb_display"], "", "custom_space[0].aliases[0]", "an alias of the generated display colour space"),
+        ("CIE XYZ-D65 - Display-referred", [], "", "custom_space[0].name", "the generated display-referred reference"),
+        ("cie_xyz_d65_display", [], "", "custom_space[0].name", "the generated display-referred reference"),
+        (
+            "Colorimetric - sRGB - Display",
+            [],
+            "display_view_spaces = true\n",
+            "custom_space[0].name",
+            "the generated display-view colour space of view 'Colorimetric' on display[0]",
+        ),
+        ("scene_linear", [], "", "custom_space[0].name", "the role 'scene_linear'"),
+    ],
+)
 def test_a_custom_space_may_not_take_a_generated_name(name, aliases, top, field, owner):
     raised = error(top + CUSTOM.format(name=name, aliases=aliases) + SRGB)
     assert raised.field == field
@@ -35,8 +43,14 @@ def test_a_custom_space_may_not_take_a_generated_name(name, aliases, top, field,
 
 
 def test_display_view_names_are_free_without_display_view_spaces():
-    spec = load.parse(SPACES + "display_view_spaces = false\n" + CUSTOM.format(name="Colorimetric - sRGB - Display",
-                                                                               aliases=[]) + SRGB, "show.toml", Path("."))
+    spec = load.parse(
+        SPACES
+        + "display_view_spaces = false\n"
+        + CUSTOM.format(name="Colorimetric - sRGB - Display", aliases=[])
+        + SRGB,
+        "show.toml",
+        Path("."),
+    )
     assert spec.space("Colorimetric - sRGB - Display").family == "Custom"
 
 
@@ -53,8 +67,16 @@ def test_a_display_may_not_take_a_colour_space_or_another_displays_name():
     assert raised.field == "display[1].name" and "listed twice (display[0])" in raised.message
 
 
-@pytest.mark.parametrize("target, ok", [("Nope", False), ("ACEScg", True), ("scene_linear", True),
-                                         ("sRGB - Display", True), ("CIE XYZ-D65 - Display-referred", True)])
+@pytest.mark.parametrize(
+    "target, ok",
+    [
+        ("Nope", False),
+        ("ACEScg", True),
+        ("scene_linear", True),
+        ("sRGB - Display", True),
+        ("CIE XYZ-D65 - Display-referred", True),
+    ],
+)
 def test_a_file_rule_names_a_colour_space_display_or_role(target, ok):
     text = SRGB + f"[[file_rule]]\nname = 'Default'\ncolour_space = {target!r}\n"
     if ok:

@@ -8,9 +8,11 @@ import pytest
 from generator.spec import load, resolved
 from generator.spec.schema import SpecError
 
-SPEC = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
-        "[[custom_space]]\nname = 'Table'\ngamut = 'Rec.709'\ntransfer = { family = 'tabulated', file = 'c.csv' }\n")
+SPEC = (
+    'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+    '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+    "[[custom_space]]\nname = 'Table'\ngamut = 'Rec.709'\ntransfer = { family = 'tabulated', file = 'c.csv' }\n"
+)
 
 
 @pytest.fixture(scope="module")
@@ -38,47 +40,69 @@ def test_a_build_that_wrote_an_inactive_space_by_its_alias_still_loads(stored):
     assert resolved.loads(json.dumps(aliased)).inactive == tuple(aliased["inactive"])
 
 
-@pytest.mark.parametrize("path, value, field, words", [
-    (("roles",), {"scene_linear": "ACEScg"}, "roles", "expected a list"),
-    (("roles", 0), "ACEScg", "roles[0]", "expected [role, colour space]"),
-    (("roles", 0, 1), "Nope", "roles[0][1]", "'Nope' names nothing the spec defines"),
-    (("colour_spaces",), [], "colour_spaces", "expected 1 entry or more"),
-    (("colour_spaces", 0), 3, "colour_spaces[0]", "expected an object"),
-    (("colour_spaces", 1, "gamut", "primaries", 0, 0), float("nan"), "colour_spaces[1].gamut.primaries[0][0]",
-     "expected a finite number, got nan"),
-    (("colour_spaces", 1, "gamut", "primaries", 1), [0.713, 0.293], "colour_spaces[1].gamut.primaries", "span no triangle"),
-    (("colour_spaces", 1, "gamut", "whitepoint"), [0.3, 0.0], "colour_spaces[1].gamut.whitepoint", "not plausible"),
-    (("colour_spaces", 1, "aliases"), 5, "colour_spaces[1].aliases", "expected a list"),
-    (("colour_spaces", 1, "is_data"), "no", "colour_spaces[1].is_data", "expected true or false"),
-    (("colour_spaces", 1, "gamut"), None, "colour_spaces[1].gamut", "a colour space that is not data has no gamut"),
-    (("colour_spaces", 2, "curve", "family"), "Bogus", "colour_spaces[2].curve.family", "unknown family 'Bogus'"),
-    (("colour_spaces", 2, "curve", "base"), "ten", "colour_spaces[2].curve.base", "expected a finite number"),
-    (("colour_spaces", 2, "curve", "base"), 0.5, "colour_spaces[2].curve.base", "out of range; allowed: > 1"),
-    (("colour_spaces", 2, "curve", "extra"), 1, "colour_spaces[2].curve.extra", "unknown key"),
-    (("colour_spaces", 5, "curve", "linear", 1), 2.0, "colour_spaces[5].curve.linear", "not strictly increasing"),
-    (("colour_spaces", 3, "curve"), {"family": "Function", "name": "Nope"}, "colour_spaces[3].curve.name", "unknown curve"),
-    (("displays", 0, "views"), [], "displays[0].views", "expected 1 entry or more"),
-    (("displays", 0, "views", 0), "Filmic", "displays[0].views[0]", "unknown view"),
-    (("displays", 0, "peak"), -1, "displays[0].peak", "not positive"),
-    (("ocio_version",), [9, 9], "ocio_version", "not a version the installed OpenColorIO writes"),
-    (("ocio_version",), "2.1", "ocio_version", "expected [major, minor]"),
-    (("ocio_version", 1), True, "ocio_version[1]", "expected an integer"),
-    (("chromatic_adaptation",), "Sharp", "chromatic_adaptation", "unknown chromatic adaptation 'Sharp'"),
-    (("scene_reference",), "Nope", "scene_reference", "names nothing the spec defines"),
-    (("inactive",), KeyError, "inactive", "missing"),
-    (("inactive",), ["Nope"], "inactive[0]", "names nothing the spec defines"),
-    (("file_rules", 0, "colour_space"), 5, "file_rules[0].colour_space", "expected a string"),
-    (("file_rules", 0, "regex"), ".*", "file_rules[0].extension", "unknown key"),  # a regex rule has no glob
-    (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": ""}, "file_rules[0].regex", "empty"),
-    (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": 5}, "file_rules[0].regex", "expected a string"),
-    (("name",), 5, "name", "expected a string"),
-    (("rgc", "power"), "x", "rgc.power", "expected a finite number"),
-    # unhashable values had raised TypeError from the lookup of the adaptation's name
-    (("colour_spaces", 1, "gamut", "adaptation"), [], "colour_spaces[1].gamut.adaptation", "expected a string"),
-    (("chromatic_adaptation",), [1, 2], "chromatic_adaptation", "expected a string"),
-    (("rgc", "power"), 0.5, "rgc", "power must be at least 1"),
-    (("rgc", "limit_cyan"), KeyError, "rgc.limit_cyan", "missing"),
-])
+@pytest.mark.parametrize(
+    "path, value, field, words",
+    [
+        (("roles",), {"scene_linear": "ACEScg"}, "roles", "expected a list"),
+        (("roles", 0), "ACEScg", "roles[0]", "expected [role, colour space]"),
+        (("roles", 0, 1), "Nope", "roles[0][1]", "'Nope' names nothing the spec defines"),
+        (("colour_spaces",), [], "colour_spaces", "expected 1 entry or more"),
+        (("colour_spaces", 0), 3, "colour_spaces[0]", "expected an object"),
+        (
+            ("colour_spaces", 1, "gamut", "primaries", 0, 0),
+            float("nan"),
+            "colour_spaces[1].gamut.primaries[0][0]",
+            "expected a finite number, got nan",
+        ),
+        (
+            ("colour_spaces", 1, "gamut", "primaries", 1),
+            [0.713, 0.293],
+            "colour_spaces[1].gamut.primaries",
+            "span no triangle",
+        ),
+        (("colour_spaces", 1, "gamut", "whitepoint"), [0.3, 0.0], "colour_spaces[1].gamut.whitepoint", "not plausible"),
+        (("colour_spaces", 1, "aliases"), 5, "colour_spaces[1].aliases", "expected a list"),
+        (("colour_spaces", 1, "is_data"), "no", "colour_spaces[1].is_data", "expected true or false"),
+        (("colour_spaces", 1, "gamut"), None, "colour_spaces[1].gamut", "a colour space that is not data has no gamut"),
+        (("colour_spaces", 2, "curve", "family"), "Bogus", "colour_spaces[2].curve.family", "unknown family 'Bogus'"),
+        (("colour_spaces", 2, "curve", "base"), "ten", "colour_spaces[2].curve.base", "expected a finite number"),
+        (("colour_spaces", 2, "curve", "base"), 0.5, "colour_spaces[2].curve.base", "out of range; allowed: > 1"),
+        (("colour_spaces", 2, "curve", "extra"), 1, "colour_spaces[2].curve.extra", "unknown key"),
+        (("colour_spaces", 5, "curve", "linear", 1), 2.0, "colour_spaces[5].curve.linear", "not strictly increasing"),
+        (
+            ("colour_spaces", 3, "curve"),
+            {"family": "Function", "name": "Nope"},
+            "colour_spaces[3].curve.name",
+            "unknown curve",
+        ),
+        (("displays", 0, "views"), [], "displays[0].views", "expected 1 entry or more"),
+        (("displays", 0, "views", 0), "Filmic", "displays[0].views[0]", "unknown view"),
+        (("displays", 0, "peak"), -1, "displays[0].peak", "not positive"),
+        (("ocio_version",), [9, 9], "ocio_version", "not a version the installed OpenColorIO writes"),
+        (("ocio_version",), "2.1", "ocio_version", "expected [major, minor]"),
+        (("ocio_version", 1), True, "ocio_version[1]", "expected an integer"),
+        (("chromatic_adaptation",), "Sharp", "chromatic_adaptation", "unknown chromatic adaptation 'Sharp'"),
+        (("scene_reference",), "Nope", "scene_reference", "names nothing the spec defines"),
+        (("inactive",), KeyError, "inactive", "missing"),
+        (("inactive",), ["Nope"], "inactive[0]", "names nothing the spec defines"),
+        (("file_rules", 0, "colour_space"), 5, "file_rules[0].colour_space", "expected a string"),
+        (("file_rules", 0, "regex"), ".*", "file_rules[0].extension", "unknown key"),  # a regex rule has no glob
+        (("file_rules", 0), {"name": "A", "colour_space": "ACEScg", "regex": ""}, "file_rules[0].regex", "empty"),
+        (
+            ("file_rules", 0),
+            {"name": "A", "colour_space": "ACEScg", "regex": 5},
+            "file_rules[0].regex",
+            "expected a string",
+        ),
+        (("name",), 5, "name", "expected a string"),
+        (("rgc", "power"), "x", "rgc.power", "expected a finite number"),
+        # unhashable values had raised TypeError from the lookup of the adaptation's name
+        (("colour_spaces", 1, "gamut", "adaptation"), [], "colour_spaces[1].gamut.adaptation", "expected a string"),
+        (("chromatic_adaptation",), [1, 2], "chromatic_adaptation", "expected a string"),
+        (("rgc", "power"), 0.5, "rgc", "power must be at least 1"),
+        (("rgc", "limit_cyan"), KeyError, "rgc.limit_cyan", "missing"),
+    ],
+)
 def test_a_malformed_stored_spec_is_one_error_naming_the_field(stored, path, value, field, words):
     assert resolved.loads(json.dumps(stored)) is not None
     with pytest.raises(SpecError) as error:

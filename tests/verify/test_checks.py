@@ -47,8 +47,12 @@ def test_blender_checks_no_view_from_an_inactive_space():
     from generator.spec import load
     from generator.verify.blender import BlenderEngine
 
-    spec = load.parse('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-                      'inactive = ["acescct_ap1"]\n', "show.toml", Path("."))
+    spec = load.parse(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        'inactive = ["acescct_ap1"]\n',
+        "show.toml",
+        Path("."),
+    )
     views = [c for c in checks.build_checks(spec, "quick", kinds=(checks.VIEW,)) if c.view != paths.RAW]
     assert {c.src for c in views} == {"ACEScg", "ACEScct", spec.displays[0].name}
     assert {c.src for c in views if BlenderEngine().supports(c, spec)} == {"ACEScg", spec.displays[0].name}
@@ -62,8 +66,17 @@ def test_every_baked_lut_file_is_checked(build_config, built):
 def test_probe_families_are_float32_and_named(spec):
     families = probes.scene_families(spec, probes.SIZES["quick"])
     names = [f.name for f in families]
-    assert names == ["ColorChecker D65", "ColorChecker A", "monochromatic", "camera gamut", "display faces", "negative",
-                     "near black", "over-range", probes.NON_FINITE]
+    assert names == [
+        "ColorChecker D65",
+        "ColorChecker A",
+        "monochromatic",
+        "camera gamut",
+        "display faces",
+        "negative",
+        "near black",
+        "over-range",
+        probes.NON_FINITE,
+    ]
     for family in families:
         assert np.array_equal(family.values, family.values.astype(np.float32).astype(np.float64), equal_nan=True)
     assert np.nanmax(families[7].values) == 65504.0
@@ -78,8 +91,12 @@ def test_display_faces_lie_on_every_displays_faces(spec):
     faces = probes.display_faces(spec, count)
     assert len(faces.values) == count * len(spec.displays)
     for k, display in enumerate(spec.displays):
-        light = reference.apply_matrix(reference.scene_to_display_matrix(spec, display),
-                                       faces.values[k * count:(k + 1) * count]) / display.clip_high
+        light = (
+            reference.apply_matrix(
+                reference.scene_to_display_matrix(spec, display), faces.values[k * count : (k + 1) * count]
+            )
+            / display.clip_high
+        )
         on_face = np.minimum(np.abs(light).min(axis=-1), np.abs(light - 1.0).min(axis=-1))
         assert on_face.max() <= 1e-6 and light.min() >= -1e-6 and light.max() <= 1.0 + 1e-6, display.name
 
@@ -135,9 +152,11 @@ def test_a_log_curve_carries_its_offsets_rounding_into_the_allowance(tmp_path):
     from generator.spec import load
     from generator.verify.run import verify
 
-    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
-            '"CIE XYZ-D65 - Scene-referred"]\n[[display]]\nname = "Wide"\ngamut = "Rec.2020"\neotf = "Gamma 2.4"\n'
-            'views = ["Colorimetric", "Raw"]\n[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+    text = (
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+        '"CIE XYZ-D65 - Scene-referred"]\n[[display]]\nname = "Wide"\ngamut = "Rec.2020"\neotf = "Gamma 2.4"\n'
+        'views = ["Colorimetric", "Raw"]\n[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+    )
     (tmp_path / "show.toml").write_text(text)
     folder = tmp_path / "show"
     build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
@@ -153,11 +172,12 @@ def test_curves_a_clamping_builtin_expresses_are_judged_on_its_codes(build_confi
     builtins, which tabulate codes 0 to 1 and clamp outside (Apple Log's below 0): verify
     judges those spaces on those codes, as it does a baked curve on its LUT's domain
     (it failed every Canon space of the default spec at 2.2 and later before)."""
-    from tests.conftest import NEWEST
     from generator.verify.run import verify
+    from tests.conftest import NEWEST
 
-    result = verify(build_config(NEWEST), ("ocio",), density="quick",
-                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE), only=name)
+    result = verify(
+        build_config(NEWEST), ("ocio",), density="quick", kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE), only=name
+    )
     assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
 
 
@@ -171,24 +191,29 @@ def test_custom_curves_are_checked_under_their_files_names_and_as_code_values(tm
     from generator.verify.run import verify
 
     (tmp_path / "curve.csv").write_text("code,linear\n0,0\n0.25,0.02\n0.5,0.12\n0.75,0.45\n1,1\n")
-    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
-            '"CIE XYZ-D65 - Scene-referred"]\n'
-            '[[custom_space]]\nname = "Tab"\ngamut = "P3-D65"\ntransfer = { family = "tabulated", file = "curve.csv" }\n'
-            '[[custom_space]]\nname = "Warm"\nencoding = "scene-linear"\nprimaries = [[0.70, 0.30], [0.17, 0.80], '
-            '[0.13, 0.04]]\nwhite = 5000\ntransfer = { family = "gamma", exponent = 2.2 }\n'
-            '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
-            '[[display]]\nname = "Tab Monitor"\ngamut = "Rec.709"\neotf = { family = "tabulated", file = "curve.csv" }\n'
-            'views = ["Colorimetric", "Raw"]\n')
+    text = (
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+        '"CIE XYZ-D65 - Scene-referred"]\n'
+        '[[custom_space]]\nname = "Tab"\ngamut = "P3-D65"\ntransfer = { family = "tabulated", file = "curve.csv" }\n'
+        '[[custom_space]]\nname = "Warm"\nencoding = "scene-linear"\nprimaries = [[0.70, 0.30], [0.17, 0.80], '
+        '[0.13, 0.04]]\nwhite = 5000\ntransfer = { family = "gamma", exponent = 2.2 }\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+        '[[display]]\nname = "Tab Monitor"\ngamut = "Rec.709"\neotf = { family = "tabulated", file = "curve.csv" }\n'
+        'views = ["Colorimetric", "Raw"]\n'
+    )
     (tmp_path / "show.toml").write_text(text)
     folder = tmp_path / "show"
     build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
     files = {"luts/tab_to_linear.spi1d", "luts/tab_monitor_to_linear.spi1d"}
     assert {f"luts/{p.name}" for p in (folder / "luts").iterdir()} == files
-    result = verify(folder / "config.ocio", ("ocio",), density="quick",
-                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
+    result = verify(
+        folder / "config.ocio",
+        ("ocio",),
+        density="quick",
+        kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT),
+    )
     assert files <= {o.check.item for o in result.outcomes}
     assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
-
 
 
 @pytest.mark.parametrize("size", [4096, 0])
@@ -229,9 +254,13 @@ def test_verify_checks_each_space_against_its_own_curve_file(slugging_alike):
     verify failed the spaces decoding with another's curve)."""
     from generator.verify.run import verify
 
-    spec, folder = slugging_alike
-    result = verify(folder / "config.ocio", ("ocio",), density="quick",
-                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT))
+    _spec, folder = slugging_alike
+    result = verify(
+        folder / "config.ocio",
+        ("ocio",),
+        density="quick",
+        kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE, checks.LUT),
+    )
     files = {f"luts/{p.name}" for p in (folder / "luts").iterdir()}
     assert len(files) == 4 and files <= {o.check.item for o in result.outcomes}
     assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
@@ -241,19 +270,25 @@ def test_verify_checks_each_space_against_its_own_curve_file(slugging_alike):
 def test_a_pq_scene_space_passes_beyond_the_signal_range(tmp_path, version):
     """A scene space encoded with ST 2084 is judged on negative and over-range colours too:
     config and reference both clamp to the signal range (it failed by 1.45 relative)."""
-    from tests.conftest import NEWEST
     from generator.ocio.write import build, for_folder
     from generator.spec import load
     from generator.verify.run import verify
+    from tests.conftest import NEWEST
 
     (tmp_path / "pq.toml").write_text(
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[custom_space]]\nname = "P3 PQ"\ngamut = "P3-D65"\ntransfer = "ST 2084"\n'
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+    )
     folder = tmp_path / "pq"
     build(for_folder(load.load(tmp_path / "pq.toml"), folder, NEWEST if version == "newest" else version), folder)
-    result = verify(folder / "config.ocio", ("ocio",), density="quick",
-                    kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE), only="P3 PQ")
+    result = verify(
+        folder / "config.ocio",
+        ("ocio",),
+        density="quick",
+        kinds=(checks.TO_REFERENCE, checks.FROM_REFERENCE),
+        only="P3 PQ",
+    )
     assert result.outcomes and result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
 
 
@@ -270,7 +305,8 @@ def test_a_table_rising_steeply_between_two_rows_verifies(tmp_path):
     (tmp_path / "show.toml").write_text(
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[custom_space]]\nname = "Clip"\ngamut = "Rec.709"\ntransfer = { family = "tabulated", file = "clip.csv" }\n'
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n')
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+    )
     folder = tmp_path / "show"
     build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
     result = verify(folder / "config.ocio", ("ocio",), density="quick", only="Clip")

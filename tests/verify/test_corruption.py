@@ -15,7 +15,6 @@ from generator.verify.judge import FAIL
 from generator.verify.run import verify
 from tests.verify.conftest import dim_output_table
 
-
 KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
 
 
@@ -90,7 +89,10 @@ def test_a_mislabelled_transfer_function_is_named(config_copy):
 
 def test_swapped_lut_files_are_named(config_copy):
     def swap(path):
-        first, second = path.parent / "luts" / "canon_log_2_to_linear.spi1d", path.parent / "luts" / "canon_log_3_to_linear.spi1d"
+        first, second = (
+            path.parent / "luts" / "canon_log_2_to_linear.spi1d",
+            path.parent / "luts" / "canon_log_3_to_linear.spi1d",
+        )
         a, b = first.read_bytes(), second.read_bytes()
         first.write_bytes(b)
         second.write_bytes(a)
@@ -103,17 +105,24 @@ def test_swapped_lut_files_are_named(config_copy):
 def test_swapped_desaturate_files_are_named(config_copy):
     """The desaturate views' files (lattices in OCIO's HSV) of two displays swapped: their
     luminance weights differ, and verify names both files and both views."""
+
     def swap(path):
         luts = path.parent / "luts"
-        first, second = (luts / "view_srgb_display_desaturate_hsv19.clf",
-                         luts / "view_gamma_2_6_dci_p3_display_desaturate_hsv19.clf")
+        first, second = (
+            luts / "view_srgb_display_desaturate_hsv19.clf",
+            luts / "view_gamma_2_6_dci_p3_display_desaturate_hsv19.clf",
+        )
         a, b = first.read_bytes(), second.read_bytes()
         first.write_bytes(b)
         second.write_bytes(a)
 
     failing = _newly_failing(config_copy, swap, (VIEW, LUT))
-    assert {"luts/view_srgb_display_desaturate_hsv19.clf", "luts/view_gamma_2_6_dci_p3_display_desaturate_hsv19.clf",
-            "sRGB - Display / Desaturate", "Gamma 2.6 DCI-P3 - Display / Desaturate"} <= failing
+    assert {
+        "luts/view_srgb_display_desaturate_hsv19.clf",
+        "luts/view_gamma_2_6_dci_p3_display_desaturate_hsv19.clf",
+        "sRGB - Display / Desaturate",
+        "Gamma 2.6 DCI-P3 - Display / Desaturate",
+    } <= failing
 
 
 def _nudge_nodes(clf, nodes, amount: float) -> None:
@@ -132,6 +141,7 @@ def test_a_perceptual_node_nudged_by_a_tenth_of_a_code_is_named(config_copy, nod
     the rebuilt lattice in every cell: one node of the sRGB file moved by a tenth of a ten-bit
     code fails the file, inside the display cube (nodes 12 to 20 span codes 0 to 1: (0.5, 0.5,
     0.875)) and far outside it (red 3 times the peak), where no other probe reaches."""
+
     def nudge(path):
         _nudge_nodes(path.parent / "luts" / "view_srgb_display_perceptual_33.clf", [node], 0.1 / 1023)
 
@@ -151,6 +161,7 @@ def _raise_entry(clf, entry: int, by: float, decimals: int) -> None:
 def test_a_perceptual_shaper_entry_nudged_is_named(config_copy, entry):
     """One entry of a Perceptual file's shaper table moved by 1e-3 of a coordinate (far below
     black, far above the peak: entries no display-code or scene probe reaches) fails the file."""
+
     def nudge(path):
         _raise_entry(path.parent / "luts" / "view_srgb_display_perceptual_33.clf", entry, 1e-3, 6)
 
@@ -162,6 +173,7 @@ def test_an_entry_of_the_shared_hsv_table_is_named(config_copy, half, column):
     """Every entry of the shared HSV table is read (a hue near 3e-4, a value near 2e-4, a
     saturation 2**-20 from OCIO HSV's cone, a subnormal half: narrow bands no scene colour of
     the quick probes reaches), and one moved is named."""
+
     def nudge(path):
         clf = path.parent / "luts" / "hsv_coordinates.clf"
         lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
@@ -179,6 +191,7 @@ def test_an_entry_of_a_scale_files_output_table_nudged_is_named(config_copy, ent
     """One entry of the sRGB Scale file's output table (coordinate to code) raised by a tenth of
     a ten-bit code: greys on every entry and between read it (random colours had read it only
     where they landed, and the quick probes passed it)."""
+
     def nudge(path):
         _raise_entry(path.parent / "luts" / "view_srgb_display_scale_17.clf", entry, 0.1 / 1023, 9)
 
@@ -190,6 +203,7 @@ def test_a_scale_file_dimmed_by_half_a_code_is_named(config_copy):
     Perceptual is to its lattice: the sRGB Scale file's output table scaled by 0.9995 (half a
     ten-bit code at white) fails its view and file; under the issue's every-set bound of a
     code, a file scaled by 0.9991 had passed."""
+
     def dim(path):
         dim_output_table(path.parent / "luts" / "view_srgb_display_scale_17.clf", 0.9995)
 
@@ -200,9 +214,13 @@ def test_a_scale_file_dimmed_by_half_a_code_is_named(config_copy):
 def test_a_perceptual_file_off_by_codes_fails_its_view(config_copy):
     """Node values a few codes off inside the cube fail the sRGB Perceptual view too, no other
     display's."""
+
     def nudge(path):
-        _nudge_nodes(path.parent / "luts" / "view_srgb_display_perceptual_33.clf",
-                     [(r, g, b) for r in (14, 16, 18) for g in (14, 16, 18) for b in (14, 16, 18)], 5 / 1023)
+        _nudge_nodes(
+            path.parent / "luts" / "view_srgb_display_perceptual_33.clf",
+            [(r, g, b) for r in (14, 16, 18) for g in (14, 16, 18) for b in (14, 16, 18)],
+            5 / 1023,
+        )
 
     failing = _newly_failing(config_copy, nudge, (VIEW, LUT))
     assert failing >= {"luts/view_srgb_display_perceptual_33.clf", "sRGB - Display / Perceptual"}
@@ -227,7 +245,8 @@ def test_a_perceptual_lattice_assembled_wrongly_is_named(tmp_path, monkeypatch):
 
     monkeypatch.setattr(view, "view_lattice", swapped)
     text = load.default_text().split("[[display]]")[0] + (
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Perceptual", "Raw"]\n')
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Perceptual", "Raw"]\n'
+    )
     folder = tmp_path / "swapped"
     build(for_folder(load.parse(text, "swapped.toml", tmp_path), folder), folder)
     assert "luts/view_srgb_display_perceptual_33.clf" in _failing_items(folder / "config.ocio", (LUT,))
@@ -245,6 +264,7 @@ def test_a_view_read_back_wrongly_is_named(config_copy, view):
 
 def _scale_view_matrix(name: str, direction, entry: int, factor: float):
     """A change multiplying one entry of view transform ``name``'s matrix in ``direction``."""
+
     def change(cfg):
         vt = cfg.getViewTransform(name)
         matrix = vt.getTransform(direction)
@@ -260,7 +280,9 @@ def _scale_view_matrix(name: str, direction, entry: int, factor: float):
 def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
     missing = config_copy.parent / "luts" / "mi_log_to_linear.spi1d"
     assert _newly_failing(config_copy, lambda path: missing.unlink(), (TO_REFERENCE, LUT)) == {
-        "Mi-Log Rec.2020", "luts/mi_log_to_linear.spi1d"}
+        "Mi-Log Rec.2020",
+        "luts/mi_log_to_linear.spi1d",
+    }
     result = verify(config_copy, ("ocio",), density="quick", kinds=(TO_REFERENCE, LUT), only="Mi-Log")
     notes = {o.check.item: o.note for o in result.failures}
     assert notes and all("mi_log_to_linear.spi1d" in note for note in notes.values())

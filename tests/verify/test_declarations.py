@@ -29,8 +29,10 @@ def _exr_as_log(cfg):
 def _raw_first(cfg):
     views = list(cfg.getViews(ocio.VIEW_DISPLAY_DEFINED, "sRGB - Display"))
     moved = ["Raw", *[v for v in views if v != "Raw"]]
-    entries = [(v, cfg.getDisplayViewTransformName("sRGB - Display", v), cfg.getDisplayViewColorSpaceName(
-        "sRGB - Display", v)) for v in views]
+    entries = [
+        (v, cfg.getDisplayViewTransformName("sRGB - Display", v), cfg.getDisplayViewColorSpaceName("sRGB - Display", v))
+        for v in views
+    ]
     for view in views:
         cfg.removeDisplayView("sRGB - Display", view)
     by_name = {v: (t, s) for v, t, s in entries}
@@ -89,38 +91,56 @@ EDITS = {
     "environment": (lambda cfg: cfg.addEnvironmentVar("SHOT", "a"), "environment variables ['SHOT']"),
     "file by path": (_absolute_file, "view transform 'Scale (sRGB - Display)' reads '/mnt/shows/other/luts/"),
     "version": (lambda cfg: cfg.setMinorVersion(3), "the config is OCIO 2.3, the spec's 2.1"),
-    "extra alias": (lambda cfg: _edit_space(cfg, "ACEScg", lambda cs: cs.addAlias("cg")),
-                    "ACEScg has the aliases ['cg'], which the spec does not give it"),
+    "extra alias": (
+        lambda cfg: _edit_space(cfg, "ACEScg", lambda cs: cs.addAlias("cg")),
+        "ACEScg has the aliases ['cg'], which the spec does not give it",
+    ),
     "role": (lambda cfg: cfg.setRole("scene_linear", "ACES2065-1"), "role scene_linear is 'ACES2065-1'"),
     "file rule": (_exr_as_log, "file rule 1 is ('OpenEXR', '*', 'exr', '', 'ACEScct')"),
     "inactive": (lambda cfg: cfg.setInactiveColorSpaces("ACEScct, Linear Rec.2020"), "inactive spaces are"),
     "active views": (lambda cfg: cfg.setActiveViews("Colorimetric, Raw"), "active views are ['Colorimetric', 'Raw']"),
-    "active displays": (lambda cfg: cfg.setActiveDisplays("Rec.2100-PQ - Display, sRGB - Display"),
-                        "active displays are ['Rec.2100-PQ - Display', 'sRGB - Display']"),
+    "active displays": (
+        lambda cfg: cfg.setActiveDisplays("Rec.2100-PQ - Display, sRGB - Display"),
+        "active displays are ['Rec.2100-PQ - Display', 'sRGB - Display']",
+    ),
     "default view": (_raw_first, "sRGB - Display's views are ['Raw', "),
     "alias": (_move_alias, "alias 'lin_rec2020' names 'Linear Rec.709 (sRGB)', the spec's 'Linear Rec.2020'"),
-    "search path": (lambda cfg: cfg.setSearchPath("/mnt/shows/other/luts"),
-                    "the search path is '/mnt/shows/other/luts', the build's 'luts'"),
-    "encoding": (lambda cfg: _edit_space(cfg, "ACEScg", lambda cs: cs.setEncoding("log")),
-                 "ACEScg's family, encoding, data flag and categories are ('ACES', 'log', False, "),
-    "categories": (lambda cfg: _edit_space(cfg, "sRGB - Display", lambda cs: cs.clearCategories()),
-                   "sRGB - Display's family, encoding, data flag and categories are ('Display', 'sdr-video', False, [])"),
+    "search path": (
+        lambda cfg: cfg.setSearchPath("/mnt/shows/other/luts"),
+        "the search path is '/mnt/shows/other/luts', the build's 'luts'",
+    ),
+    "encoding": (
+        lambda cfg: _edit_space(cfg, "ACEScg", lambda cs: cs.setEncoding("log")),
+        "ACEScg's family, encoding, data flag and categories are ('ACES', 'log', False, ",
+    ),
+    "categories": (
+        lambda cfg: _edit_space(cfg, "sRGB - Display", lambda cs: cs.clearCategories()),
+        "sRGB - Display's family, encoding, data flag and categories are ('Display', 'sdr-video', False, [])",
+    ),
     # the spaces the build writes beside the spec's (a host's Write node lists them): they had gone unchecked
-    "view space family": (lambda cfg: _edit_space(cfg, "Scale - sRGB - Display", lambda cs: cs.setFamily("Hacked")),
-                          "Scale - sRGB - Display's family, encoding, data flag, categories and aliases are ('Hacked', "),
-    "view space categories": (lambda cfg: _edit_space(cfg, "Perceptual - sRGB - Display",
-                                                      lambda cs: (cs.clearCategories(), cs.addCategory("working-space"))),
-                              "Perceptual - sRGB - Display's family, encoding, data flag, categories and aliases are "
-                              "('Display-View', 'sdr-video', False, ['working-space'], [])"),
-    "display reference aliases": (lambda cfg: _edit_space(cfg, "CIE XYZ-D65 - Display-referred",
-                                                          lambda cs: cs.clearAliases()),
-                                  "CIE XYZ-D65 - Display-referred's family, encoding, data flag, categories and aliases "
-                                  "are ('', 'display-linear', False, ['file-io'], [])"),
+    "view space family": (
+        lambda cfg: _edit_space(cfg, "Scale - sRGB - Display", lambda cs: cs.setFamily("Hacked")),
+        "Scale - sRGB - Display's family, encoding, data flag, categories and aliases are ('Hacked', ",
+    ),
+    "view space categories": (
+        lambda cfg: _edit_space(
+            cfg, "Perceptual - sRGB - Display", lambda cs: (cs.clearCategories(), cs.addCategory("working-space"))
+        ),
+        "Perceptual - sRGB - Display's family, encoding, data flag, categories and aliases are "
+        "('Display-View', 'sdr-video', False, ['working-space'], [])",
+    ),
+    "display reference aliases": (
+        lambda cfg: _edit_space(cfg, "CIE XYZ-D65 - Display-referred", lambda cs: cs.clearAliases()),
+        "CIE XYZ-D65 - Display-referred's family, encoding, data flag, categories and aliases "
+        "are ('', 'display-linear', False, ['file-io'], [])",
+    ),
 }
 
 
 def test_the_built_config_declares_what_its_spec_builds(config_copy):
-    assert declarations.differences(ocio.Config.CreateFromFile(str(config_copy)), resolved.read_beside(config_copy)) == []
+    assert (
+        declarations.differences(ocio.Config.CreateFromFile(str(config_copy)), resolved.read_beside(config_copy)) == []
+    )
 
 
 @pytest.mark.parametrize("edit", sorted(EDITS))
@@ -142,18 +162,20 @@ def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
     from generator.ocio.write import build, for_folder
     from generator.spec import load
 
-    text = ('colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
-            '"Linear Rec.2020"]\ninactive = ["lin_rec2020", "Cam Log", "cie_xyz_d65_display"]\n'
-            'display_view_spaces = false\n'
-            '[[custom_space]]\nname = "Cam Log"\naliases = ["cam_log"]\ngamut = "Rec.2020"\n'
-            'transfer = { family = "log_camera", base = 10, log_side_slope = 0.25, log_side_offset = 0.6, '
-            'lin_side_slope = 5.0, lin_side_offset = 0.05 }\n'
-            '[[display]]\nname = "Wall"\naliases = ["wall_display"]\ngamut = "P3-D65"\neotf = "gamma 2.4"\n'
-            'views = ["Raw", "Colorimetric"]\n[[display]]\nname = "sRGB - Display"\n'
-            '[roles]\nCompositing_Log = "cam_log"\n'
-            '[[file_rule]]\nname = "Plates"\npattern = "*plate*"\nextension = "dpx"\ncolour_space = "ACEScct"\n'
-            '[[file_rule]]\nname = "Renders"\nregex = \'.*_acescg_v\\d{3}\\.\\d{4}\\.exr$\'\ncolour_space = "ACEScg"\n'
-            '[[file_rule]]\nname = "Default"\ncolour_space = "default"\n')
+    text = (
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+        '"Linear Rec.2020"]\ninactive = ["lin_rec2020", "Cam Log", "cie_xyz_d65_display"]\n'
+        "display_view_spaces = false\n"
+        '[[custom_space]]\nname = "Cam Log"\naliases = ["cam_log"]\ngamut = "Rec.2020"\n'
+        'transfer = { family = "log_camera", base = 10, log_side_slope = 0.25, log_side_offset = 0.6, '
+        "lin_side_slope = 5.0, lin_side_offset = 0.05 }\n"
+        '[[display]]\nname = "Wall"\naliases = ["wall_display"]\ngamut = "P3-D65"\neotf = "gamma 2.4"\n'
+        'views = ["Raw", "Colorimetric"]\n[[display]]\nname = "sRGB - Display"\n'
+        '[roles]\nCompositing_Log = "cam_log"\n'
+        '[[file_rule]]\nname = "Plates"\npattern = "*plate*"\nextension = "dpx"\ncolour_space = "ACEScct"\n'
+        '[[file_rule]]\nname = "Renders"\nregex = \'.*_acescg_v\\d{3}\\.\\d{4}\\.exr$\'\ncolour_space = "ACEScg"\n'
+        '[[file_rule]]\nname = "Default"\ncolour_space = "default"\n'
+    )
     folder = tmp_path / "show"
     build(for_folder(load.parse(text, "show.toml", tmp_path), folder, version), folder)
     config = folder / "config.ocio"
@@ -170,4 +192,5 @@ def test_a_custom_build_declares_what_its_spec_builds(tmp_path, version):
     cfg.setFileRules(rules)
     assert declarations.differences(cfg, resolved.read_beside(config)) == [
         "file rule 2 is ('Renders', '', '', '.*_acescg_v\\\\d{2}\\\\.\\\\d{4}\\\\.exr$', 'ACEScg'), the spec's "
-        "('Renders', '', '', '.*_acescg_v\\\\d{3}\\\\.\\\\d{4}\\\\.exr$', 'ACEScg')"]
+        "('Renders', '', '', '.*_acescg_v\\\\d{3}\\\\.\\\\d{4}\\\\.exr$', 'ACEScg')"
+    ]

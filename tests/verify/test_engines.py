@@ -22,8 +22,9 @@ from tests.conftest import host_missing
 @pytest.fixture(scope="module")
 def everywhere(build_config):
     config = build_config((2, 1))
-    missing = [f"{e.name}: {reason}" for family in engine_registry().values() for e in family
-               if (reason := e.missing(config))]
+    missing = [
+        f"{e.name}: {reason}" for family in engine_registry().values() for e in family if (reason := e.missing(config))
+    ]
     if missing:
         host_missing("; ".join(missing))
     hosts = verify(config, ("ocio", "oiiotool", "blender"), density="quick", kinds=KINDS)
@@ -35,14 +36,28 @@ def everywhere(build_config):
 def test_every_engine_on_the_default_config(everywhere):
     """One test, so that the module's one verification runs once under pytest-xdist."""
     assert not [e for e in everywhere.engines if e.skipped]
-    assert {e.name for e in everywhere.engines} == {"ocio default", "ocio lossless", "oiiotool", "ocioconvert", "blender"}
+    assert {e.name for e in everywhere.engines} == {
+        "ocio default",
+        "ocio lossless",
+        "oiiotool",
+        "ocioconvert",
+        "blender",
+    }
     assert all(o.verdict != NOT_RUN for o in everywhere.outcomes)
     views = {o.engine for o in everywhere.outcomes if o.check.kind == "view"}
-    assert {"oiiotool (EXR float)", "oiiotool (TIFF uint16)", "ocioconvert (EXR float)", "blender (PNG uint16)"} <= views
+    assert {
+        "oiiotool (EXR float)",
+        "oiiotool (TIFF uint16)",
+        "ocioconvert (EXR float)",
+        "blender (PNG uint16)",
+    } <= views
     approx = [o.note for o in everywhere.outcomes if o.verdict == APPROX]
     assert all("OPTIMIZATION_" in note and "Transform" in note for note in approx), approx
-    inexact = [(o.check.title, f"{o.worst:.3g}") for o in everywhere.outcomes
-               if o.engine == "ocio lossless" and o.verdict != PASS]
+    inexact = [
+        (o.check.title, f"{o.worst:.3g}")
+        for o in everywhere.outcomes
+        if o.engine == "ocio lossless" and o.verdict != PASS
+    ]
     assert not inexact, f"the lossless engine misses its tolerance: {inexact}"
     failing = [(o.check.title, o.engine, f"{o.worst:.3g}", o.worst_input, o.note) for o in everywhere.failures]
     assert not failing, failing
@@ -96,13 +111,17 @@ def test_ocio_21s_tabulated_pq_is_carried_near_black(tmp_path):
     rows = "".join(f"{c:.6f},{(10.0 ** (5 * c) - 1) * 1e-3:.9g}\n" for c in (i / 256 for i in range(257)))
     (tmp_path / "curve.csv").write_text("code,linear\n" + rows)
     result = _verified_on(
-        tmp_path, "ocioconvert",
+        tmp_path,
+        "ocioconvert",
         'chromatic_adaptation = "CAT02"\n'
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[custom_space]]\nname = "Tab Log"\nprimaries = [[0.70, 0.30], [0.17, 0.80], [0.13, 0.04]]\nwhite = 5600\n'
         'transfer = { family = "tabulated", file = "curve.csv" }\nencoding = "log"\n'
         '[[display]]\nname = "Rec.2100-PQ - Display"\nviews = ["Colorimetric", "Raw"]\n'
-        '[roles]\ncompositing_log = "Tab Log"\n', kinds=(VIEW,), only="Colorimetric from Tab Log")
+        '[roles]\ncompositing_log = "Tab Log"\n',
+        kinds=(VIEW,),
+        only="Colorimetric from Tab Log",
+    )
     assert result.passed, [(o.check.title, o.engine, o.worst, o.worst_input) for o in result.failures]
 
 
@@ -110,10 +129,14 @@ def test_oiiotool_reads_names_holding_its_wildcards(tmp_path):
     """'#' is oiiotool's frame wildcard: a colour space whose name reads as a path with one
     ('Cam #1/A') made every check of the batch fail ("No filenames found matching pattern")."""
     result = _verified_on(
-        tmp_path, "oiiotool",
+        tmp_path,
+        "oiiotool",
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
-        "[[custom_space]]\nname = 'Cam #1/A'\ngamut = \"P3-D65\"\ntransfer = { family = \"gamma\", exponent = 2.2 }\n"
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n', density="quick", only="Cam #1/A")
+        '[[custom_space]]\nname = \'Cam #1/A\'\ngamut = "P3-D65"\ntransfer = { family = "gamma", exponent = 2.2 }\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n',
+        density="quick",
+        only="Cam #1/A",
+    )
     assert result.passed, [(o.check.title, o.engine, o.note) for o in result.failures]
 
 
@@ -137,10 +160,13 @@ def test_ocio_21s_tabulated_pq_is_carried_for_a_scene_encoding(tmp_path):
     4096-code table put a near-black code 1.24e-4 relative off, over the 1e-4 tolerance (the
     allowance covered display encodings only)."""
     result = _verified_on(
-        tmp_path, "ocioconvert",
+        tmp_path,
+        "ocioconvert",
         'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
         '[[custom_space]]\nname = "PQ Scene"\ngamut = "Rec.2020"\ntransfer = "ST 2084"\n'
-        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n', only="PQ Scene")
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n',
+        only="PQ Scene",
+    )
     assert result.passed, [(o.check.title, o.engine, o.worst, o.worst_input) for o in result.failures]
 
 
@@ -184,26 +210,36 @@ def test_a_desaturate_chains_flag_is_named_with_its_operator(tmp_path):
     from generator.spec import load
     from generator.verify.judge import APPROX
 
-    text = ('[[display]]\nname = "Odd Wide D50 - Display"\nprimaries = [[0.70, 0.29], [0.12, 0.84], [0.145, 0.035]]\n'
-            'white = "D50"\neotf = { family = "gamma", exponent = 2.4 }\n'
-            '[[display]]\nname = "Dim 48 - Display"\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\n'
-            'white = "D65"\neotf = { family = "gamma", exponent = 2.6 }\npeak_luminance = 48\n'
-            'absolute_luminance = true\nviews = ["Desaturate"]\n')
+    text = (
+        '[[display]]\nname = "Odd Wide D50 - Display"\nprimaries = [[0.70, 0.29], [0.12, 0.84], [0.145, 0.035]]\n'
+        'white = "D50"\neotf = { family = "gamma", exponent = 2.4 }\n'
+        '[[display]]\nname = "Dim 48 - Display"\nprimaries = [[0.68, 0.32], [0.265, 0.69], [0.15, 0.06]]\n'
+        'white = "D65"\neotf = { family = "gamma", exponent = 2.6 }\npeak_luminance = 48\n'
+        'absolute_luminance = true\nviews = ["Desaturate"]\n'
+    )
     folder = tmp_path / "dim"
     build(for_folder(load.parse(text, "dim.toml", tmp_path), folder), folder)
     result = verify(folder / "config.ocio", ("ocio",), only="Dim 48 - Display / Desaturate from Odd Wide")
     explained = [o.note for o in result.outcomes if o.verdict == APPROX]
-    assert explained and all("OPTIMIZATION_FAST_LOG_EXP_POW in ExponentTransform" in note for note in explained), explained
+    assert explained and all("OPTIMIZATION_FAST_LOG_EXP_POW in ExponentTransform" in note for note in explained), (
+        explained
+    )
 
 
-@pytest.mark.parametrize("value, expected", [("true", True), ("1", True), ("YES", True), ("false", False),
-                                             ("0", False), ("", False)])
+@pytest.mark.parametrize(
+    "value, expected", [("true", True), ("1", True), ("YES", True), ("false", False), ("0", False), ("", False)]
+)
 def test_ci_is_told_as_ci_services_set_it(value, expected):
     """CI=1 had counted as not CI, so engines a CI run lacks passed as not run."""
     import subprocess
     import sys
 
     env = {**os.environ, "CI": value}
-    done = subprocess.run([sys.executable, "-c", "import generator.verify.run as r; print(r.ON_CI)"],
-                          capture_output=True, text=True, check=True, env=env)
+    done = subprocess.run(
+        [sys.executable, "-c", "import generator.verify.run as r; print(r.ON_CI)"],
+        capture_output=True,
+        text=True,
+        check=True,
+        env=env,
+    )
     assert done.stdout.strip() == str(expected)

@@ -41,8 +41,9 @@ def test_a_shader_with_every_kind_of_texture_draws_what_the_cpu_computes(device)
     lut1d = ocio.Lut1DTransform(length=1024)
     for i, x in enumerate(np.linspace(0.0, 1.0, 1024)):
         lut1d.setValue(i, x**0.45, x**0.5, x**0.55)
-    group = ocio.GroupTransform([ocio.MatrixTransform([0.9, 0.1, 0, 0, 0, 0.8, 0.2, 0, 0.1, 0, 0.9, 0, 0, 0, 0, 1]),
-                                 lut1d, lut3d])
+    group = ocio.GroupTransform(
+        [ocio.MatrixTransform([0.9, 0.1, 0, 0, 0, 0.8, 0.2, 0, 0.1, 0, 0.9, 0, 0, 0, 0, 1]), lut1d, lut3d]
+    )
     proc = ocio.Config.CreateRaw().getProcessor(group)
     values = np.random.default_rng(5).uniform(0.0, 1.0, (3000, 3))
     cpu = np.ascontiguousarray(values, dtype=np.float32)
@@ -57,8 +58,9 @@ def test_the_gpu_draws_the_default_configs_scale_views_within_their_targets(buil
     config = build_config((2, 1))
     result = verify(config, ("gpu",), density="quick", kinds=(VIEW,), only="Scale from ACEScg", strict=True)
     outcomes = [o for o in result.outcomes if o.engine.startswith("gpu")]
-    assert len(outcomes) >= 10 and all(o.verdict == PASS for o in outcomes), \
-        [(o.check.title, o.verdict, o.worst) for o in outcomes if o.verdict != PASS]
+    assert len(outcomes) >= 10 and all(o.verdict == PASS for o in outcomes), [
+        (o.check.title, o.verdict, o.worst) for o in outcomes if o.verdict != PASS
+    ]
 
 
 def test_the_gpu_names_a_scale_file_dimmed_by_half_a_code(config_copy, device):
@@ -81,8 +83,9 @@ def test_a_failure_of_the_gpu_path_names_its_operator(build_config, device):
     result = verify(config, ("gpu",), kinds=(FROM_REFERENCE,), only="-> N-Log N-Gamut", strict=True)
     failing = [o for o in result.outcomes if o.engine.startswith("gpu") and o.verdict == FAIL]
     assert failing, "N-Log's inverse passed on the GPU: update README's list of the GPU path's departures"
-    assert all("OCIO's GPU path: Lut1DTransform inverse drawn alone" in o.note for o in failing), \
-        [o.note for o in failing]
+    assert all("OCIO's GPU path: Lut1DTransform inverse drawn alone" in o.note for o in failing), [
+        o.note for o in failing
+    ]
 
 
 def test_no_probes_draw_nothing(device):
@@ -102,5 +105,6 @@ def test_the_gpu_keeps_desaturate_near_black(build_config, device):
     config = build_config((2, 1))
     result = verify(config, ("gpu",), kinds=(VIEW,), only="Desaturate from sRGB - Display", strict=True)
     outcomes = [o for o in result.outcomes if o.engine.startswith("gpu")]
-    assert len(outcomes) >= 6 and all(o.verdict == PASS for o in outcomes), \
-        [(o.check.title, o.verdict, o.worst) for o in outcomes if o.verdict != PASS]
+    assert len(outcomes) >= 6 and all(o.verdict == PASS for o in outcomes), [
+        (o.check.title, o.verdict, o.worst) for o in outcomes if o.verdict != PASS
+    ]

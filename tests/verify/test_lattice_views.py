@@ -15,8 +15,9 @@ def test_perceptual_on_hdr_and_extended_range_displays_verifies(tmp_path):
 
     views = 'views = ["Colorimetric", "Perceptual", "Raw"]\n'
     text = load.default_text().split("[[display]]")[0] + "".join(
-        f'[[display]]\nname = "{name}"\n{views}' for name in ("sRGB - Display", "Display P3 HDR - Display",
-                                                             "Rec.2100-PQ - Display"))
+        f'[[display]]\nname = "{name}"\n{views}'
+        for name in ("sRGB - Display", "Display P3 HDR - Display", "Rec.2100-PQ - Display")
+    )
     folder = tmp_path / "hdr"
     build(for_folder(load.parse(text, "hdr.toml", tmp_path), folder), folder)
     result = verify(folder / "config.ocio", ("ocio",), density="quick")
