@@ -15,7 +15,7 @@ import time
 import numpy as np
 
 import generator  # noqa: F401  (numpy's settings first)
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.curves import CURVES
 from generator.colorimetry.gamuts import gamuts
 from generator.luts import aces_lattice

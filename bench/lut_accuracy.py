@@ -46,7 +46,7 @@ from pathlib import Path
 import numpy as np
 
 import generator  # noqa: F401  (before numpy: the numbers ocioforge itself gets, see generator/backends.py)
-from generator.colorimetry import reference
+from generator import reference
 
 PAIRS = (
     ("ACEScg", "sRGB - Display"),
@@ -235,7 +235,7 @@ GPU_WEIGHT_BITS = 8
 def gpu_desaturate(spec) -> None:
     """The Desaturate views' lattices interpolated with GPU_WEIGHT_BITS-bit weights, as a GPU's
     texture filtering does, against the reference (the 1D tables' exact functions, float64)."""
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.luts import hsv, hsv_axes, probes
 
     print(

@@ -11,7 +11,7 @@ def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
     """What ``info`` prints; ``target``, the OCIO version a given spec builds, is marked."""
     import numpy as np
 
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.spec.load import newest_ocio_version
 
     out = [
@@ -44,7 +44,7 @@ def _adaptation(spec, gamut) -> str:
     """How ``gamut`` adapts to the spec's scene reference, and on whose authority."""
     import numpy as np
 
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.colorimetry.gamuts import STUDIO_CONFIG_ADAPTATION
 
     if np.allclose(gamut.white, spec.reference.gamut.white, rtol=0, atol=1e-12):

@@ -41,7 +41,7 @@ def published_matrix(source, target):
     ACES2065-1 with the adaptation behind its published matrices, else the default one."""
     from generator.colorimetry.gamuts import gamuts
     from generator.colorimetry.matrices import rgb_to_rgb
-    from generator.colorimetry.reference import adaptation_between
+    from generator.reference import adaptation_between
     from generator.spec.load import DEFAULT_ADAPTATION
 
     aces = gamuts()["AP0"]
@@ -107,7 +107,7 @@ def command(src, dst, cat, fmt, spec_path):
     elif cat:
         matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat)
     elif spec is not None:
-        from generator.colorimetry.reference import space_matrix
+        from generator.reference import space_matrix
 
         matrix = np.linalg.solve(space_matrix(spec, spaces[1]), space_matrix(spec, spaces[0]))
     else:

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.transfer import Linear
 from generator.luts import numbers
 from generator.luts.axes import LogAxis

@@ -1,7 +1,7 @@
 """An ACES view, from a source colour space to a display's code values, as a lattice.
 
 The lattice's axes are :mod:`generator.luts.aces_axes`'; its values are the display's code
-values of the view (the reference, :func:`~generator.colorimetry.reference.aces_view`),
+values of the view (the reference, :func:`~generator.reference.aces_view`),
 fitted by least squares (:func:`generator.luts.fit.reweighted_fit`) to colours of the kinds
 bench/aces_views.py measures (:mod:`generator.luts.aces_probes`, another seed); greys keep
 their sampled values.
@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.transfer import Linear
 from generator.luts import aces_probes, numbers
 from generator.luts.aces_axes import (

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.gamuts import gamuts
 from generator.spec.schema import ColourSpace, Display, Spec
 
@@ -79,7 +79,7 @@ def in_source(
     domain: tuple[float, float] | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """ACES2065-1 colours as ``source``'s code values and the view's display code values for them
-    (the reference, :func:`~generator.colorimetry.reference.aces_view`), keeping the colours the
+    (the reference, :func:`~generator.reference.aces_view`), keeping the colours the
     source's encoding holds (:func:`~generator.luts.probes.held`) and, given a ``domain``, whose
     codes lie in it."""
     from generator.luts.probes import held

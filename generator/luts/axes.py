@@ -33,7 +33,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.spec.schema import Display
 
 #: Exponent of the negative extension of :class:`Axis` (``e = |x| ** (1 / NEGATIVE_GAMMA)``).

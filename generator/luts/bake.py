@@ -1,7 +1,7 @@
 """Baking one transform, source colour space to display, into LUT files.
 
 The transform is the reference evaluation
-(:func:`~generator.colorimetry.reference.mapped_view`): decode the source,
+(:func:`~generator.reference.mapped_view`): decode the source,
 matrix with chromatic adaptation, gamut map, display encoding. Which lattice
 layout each format gets is in :mod:`generator.luts.lattice`; bad requests raise
 :class:`~generator.spec.schema.SpecError` before anything is computed, and
@@ -195,7 +195,7 @@ def find_view(display: Display, name: str):
     """The ACES view called ``name`` that ``display`` can show (SpecError naming ``--view``
     otherwise), in any case: a studio view, or the display's own ACES 2.0 view; "ACES 2.0" is the
     display's first ACES 2.0 studio view, or its own."""
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.rendering import views
 
     shown = [v for v in (*views.catalogue(), _own_name(display)) if v and _shows(display, v)]
@@ -228,7 +228,7 @@ def _own_name(display: Display) -> str:
 
 
 def _shows(display: Display, name: str) -> bool:
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.rendering import views
 
     found = reference.aces_view_of(display, name)
@@ -323,7 +323,7 @@ def describe(req: Request) -> str:
 
 def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     """Comment lines: what the file does and what its input is."""
-    from generator.colorimetry import reference
+    from generator import reference
 
     if req.view is not None:
         from generator.luts import aces_bake

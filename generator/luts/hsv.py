@@ -23,7 +23,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.luts.hsv_axes import (
     HSV_SIZE,
     SHARED_SCALE,

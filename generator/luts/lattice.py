@@ -19,7 +19,7 @@
   greys and colours with a zero channel stay exact.
 
 Node values start from the reference evaluation
-(:func:`~generator.colorimetry.reference.mapped_view`) at the *exact* preimage
+(:func:`~generator.reference.mapped_view`) at the *exact* preimage
 of each node under the shaper as written (a piecewise-linear table, rounded as
 in the file).
 """
@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.transfer import Linear, PiecewisePower, Power
 from generator.luts import numbers, probes
 from generator.luts.axes import DEFAULT_SHARES, LOG_METHODS, Axis, LogAxis, grey_code, grey_linear
@@ -315,14 +315,14 @@ def display_lattice(
 ) -> Lattice:
     """The display layout. With ``source``, the lattice's input is that space's code
     values (its curve and matrix come first); without, scene-reference linear RGB
-    (the matrix is the caller's: :func:`~generator.colorimetry.reference.normalised_display_matrix`).
+    (the matrix is the caller's: :func:`~generator.reference.normalised_display_matrix`).
 
     With ``light`` the file ends in normalised display-linear RGB, for a config whose
     display space encodes it (a view of a display CLF cannot encode, PQ or HLG): the
     lattice holds the same curve of the mapped colour as its input (the pre-shaper's
     power inside the cube, :class:`LogAxis` coordinates for clip and scale), so what the
     mapping leaves alone passes through exactly, and an exact operator undoes the curve.
-    ``params`` None takes the spec's (:func:`~generator.colorimetry.reference.method_params`)."""
+    ``params`` None takes the spec's (:func:`~generator.reference.method_params`)."""
     params = reference.method_params(spec, method, params, source, display)
     matrix = reference.normalised_display_matrix(spec, display)
     if source is not None:
@@ -373,7 +373,7 @@ def source_lattice(
     """The source layout. ``shaper``: "auto" (:class:`SourceAxis` on the decoded source),
     "none" (the cube directly over the source domain) or a colour space whose
     curve, applied to the decoded source values, spaces the nodes. ``params`` None takes
-    the spec's (:func:`~generator.colorimetry.reference.method_params`)."""
+    the spec's (:func:`~generator.reference.method_params`)."""
     from generator.luts.fit import FIT_COUNT, reweighted_fit  # fit.py builds on this module
 
     params = reference.method_params(spec, method, params, source, display)

@@ -27,8 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.colorimetry.matrices import channel_max, channel_min
 from generator.spec.schema import ColourSpace, Display, Spec
 

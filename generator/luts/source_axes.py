@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.transfer import Linear
 from generator.luts.axes import grey_code, grey_linear
 from generator.spec.schema import ColourSpace, Display, Spec

@@ -1,6 +1,6 @@
 """The per-display LUT a config's gamut-mapped view references.
 
-The view is scene-reference linear RGB -> :func:`~generator.colorimetry.reference.normalised_display_matrix`
+The view is scene-reference linear RGB -> :func:`~generator.reference.normalised_display_matrix`
 (an OCIO MatrixTransform, exact, kept in the config) -> this CLF (pre-shaper,
 Range, LUT1D, LUT3D in display axes, see :mod:`generator.luts.lattice`); for
 desaturate, the matrix is followed by OCIO's RGB_TO_HSV, the shared coordinates
@@ -165,7 +165,7 @@ def view_transform(
     path to find) go into ``bakes`` as in the config."""
     import PyOpenColorIO as ocio
 
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.ocio.emit import display_steps, matrix_transform
 
     steps = lut_steps(matrix, path, hsv_folder)
@@ -255,7 +255,7 @@ def _gamut_source(spec: Spec):
 
 def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:
     """The desaturate view of ``display`` as an HSV lattice, measured through OCIO."""
-    from generator.colorimetry import reference
+    from generator import reference
 
     name = view_filename(spec, display, HSV_METHOD)
     text = (

@@ -1,6 +1,6 @@
 """The only code that turns a :class:`Spec` into PyOpenColorIO objects.
 
-Matrices come from :mod:`generator.colorimetry.reference` (the same functions
+Matrices come from :mod:`generator.reference` (the same functions
 the reference evaluation uses), curves from :mod:`generator.ocio.curves`.
 """
 
@@ -11,7 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 import PyOpenColorIO as ocio
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.matrices import settled
 from generator.luts import aces_lattice
 from generator.luts.curve1d import BakedCurve

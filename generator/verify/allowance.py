@@ -17,8 +17,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.colorimetry.matrices import apply_matrix
 from generator.spec.schema import Display, Spec
 from generator.verify import paths

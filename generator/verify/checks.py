@@ -14,8 +14,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.spec.schema import Display, Spec
 from generator.verify import paths, probes
 from generator.verify.allowance import determinate, float32_allowance, view_allowance, with_encoding

@@ -16,7 +16,7 @@ import warnings
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.matrices import apply_matrix
 from generator.spec.schema import Display, Spec
 from generator.verify import probes

@@ -9,8 +9,7 @@ from functools import partial
 
 import numpy as np
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.colorimetry.matrices import apply_matrix
 from generator.ocio.curves import curve_label
 from generator.spec.schema import Display, Spec

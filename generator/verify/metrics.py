@@ -31,7 +31,7 @@ def delta_e_itp(display, code_a, code_b) -> np.ndarray:
     """
     import colour
 
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.colorimetry.gamuts import gamuts
     from generator.colorimetry.matrices import rgb_to_rgb
 

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.matrices import apply_matrix
 from generator.colorimetry.transfer import Linear
 from generator.ocio.capabilities import builtin_code_domain

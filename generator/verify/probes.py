@@ -24,7 +24,7 @@ from functools import cached_property
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.colorimetry.curves import HALF_MAX
 from generator.colorimetry.matrices import apply_matrix
 from generator.spec.schema import Spec
@@ -122,7 +122,7 @@ def colorchecker(spec: Spec, illuminant: str) -> Family:
     illuminant (Y = 1 for a perfect white), taken as XYZ-D65 into the scene reference."""
     import colour
 
-    from generator.colorimetry import reference
+    from generator import reference
 
     cmfs = colour.MSDS_CMFS[OBSERVER]
     light = colour.SDS_ILLUMINANTS[illuminant]
@@ -136,7 +136,7 @@ def monochromatic(spec: Spec, step: float) -> Family:
     """Monochromatic light of unit radiance every ``step`` nm from 380 to 780 nm (Y = ȳ(λ))."""
     import colour
 
-    from generator.colorimetry import reference
+    from generator import reference
 
     wavelengths = np.arange(380.0, 780.0 + step / 2, step)
     xyz = colour.MSDS_CMFS[OBSERVER][wavelengths]

@@ -541,7 +541,7 @@ def test_plot_maps_onto_the_display_asked_for(build_config, tmp_path, capsys):
 
 
 def test_matrix_takes_a_shows_own_spaces_as_its_config_converts(tmp_path, capsys):
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.spec import load
 
     (tmp_path / "show.toml").write_text(
@@ -567,7 +567,7 @@ def test_matrix_takes_a_shows_own_spaces_as_its_config_converts(tmp_path, capsys
 
 
 def test_info_takes_a_shows_own_space_with_its_reference_and_version(tmp_path, capsys):
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.spec import load
 
     (tmp_path / "show.toml").write_text(

@@ -231,7 +231,7 @@ def test_adobe_rgb_decodes_as_the_studio_config(default_spec):
     studio config's Gamma 2.2 Encoded AdobeRGB (2.2 was 5.5e-4 relative off at mid grey)."""
     import PyOpenColorIO as ocio
 
-    from generator.colorimetry import reference
+    from generator import reference
 
     assert CURVES["Adobe RGB (1998)"].exponent == 2.0 + 51.0 / 256.0
     codes = np.random.default_rng(2).random((256, 3))

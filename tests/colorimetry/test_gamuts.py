@@ -101,7 +101,7 @@ def test_a_camera_space_is_adapted_as_its_publisher_whatever_the_spec():
     """A spec adapting with CAT16 still converts ARRI LogC4 as ARRI publishes (CAT02)."""
     import dataclasses
 
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.colorimetry.matrices import rgb_to_rgb
     from generator.spec import load
 

@@ -6,8 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.luts import aces_bake, aces_probes, bake, probes
 
 SDR, HDR = "ACES 2.0 - SDR 100 nits (Rec.709)", "ACES 2.0 - HDR 1000 nits (P3 D65)"

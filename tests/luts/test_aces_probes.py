@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.luts import aces_probes
 
 

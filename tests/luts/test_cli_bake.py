@@ -23,7 +23,7 @@ def test_a_bake_into_hlg_warns_of_nothing(tmp_path):
     of the division (ten lines on stderr) are not the user's business."""
     import warnings
 
-    from generator.colorimetry import reference
+    from generator import reference
     from generator.spec import load
 
     hlg = next(d for d in load.load().displays if d.name == "Rec.2100-HLG - Display")

@@ -5,8 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.gamut.simple import desaturate
 from generator.luts import hsv, hsv_axes
 from generator.luts.view import bake_view_lut, view_transform

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from generator.colorimetry import reference
+from generator import reference
 from generator.luts import bake, fit, probes
 from generator.spec import load
 

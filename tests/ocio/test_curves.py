@@ -6,8 +6,8 @@ import numpy as np
 import PyOpenColorIO as ocio
 import pytest
 
-from generator import tolerances
-from generator.colorimetry import reference, transfer
+from generator import reference, tolerances
+from generator.colorimetry import transfer
 from generator.colorimetry.curves import CURVES
 from generator.luts.names import slug
 from generator.ocio.curves import code_clamp, curve_label, decode_transforms, is_baked

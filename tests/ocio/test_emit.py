@@ -10,8 +10,7 @@ import numpy as np
 import PyOpenColorIO as ocio
 import pytest
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.ocio.curves import is_baked
 from generator.spec import resolved
 from generator.verify.metrics import colour_relative_error, delta_e_itp, relative_error

@@ -59,8 +59,7 @@ def test_debian_oiiotool_shows_a_float_exr_through_a_view(build_config, default_
     import numpy as np
     import OpenImageIO as oiio
 
-    from generator import tolerances
-    from generator.colorimetry import reference
+    from generator import reference, tolerances
 
     oiiotool = require_program("/usr/bin/oiiotool")
     colour = (0.18, 0.3, 0.05)

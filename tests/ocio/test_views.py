@@ -135,7 +135,7 @@ def test_scale_keeps_the_hue_of_highlights_far_beyond_the_peak(built):
     codes off)."""
     import colour
 
-    from generator.colorimetry import reference
+    from generator import reference
 
     cfg, spec = built
     checker = colour.CCS_COLOURCHECKERS["ColorChecker24 - After November 2014"]
@@ -183,7 +183,7 @@ def test_perceptual_takes_bright_saturated_lights_to_white(built):
     sun) come out of every Perceptual view as the mapping sends them, to white: clamped at 32
     times the peak, a red light's channel beside a far negative green had made its luminance
     negative, and the view showed (0.69, 0, 0.36) where the mapping shows white."""
-    from generator.colorimetry import reference
+    from generator import reference
 
     cfg, spec = built
     hues = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 1, 0], [0, 1, 1], [1, 0, 1]], dtype=np.float64)

@@ -7,8 +7,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from generator import tolerances
-from generator.colorimetry import reference, transfer
+from generator import reference, tolerances
+from generator.colorimetry import transfer
 from generator.spec import load, resolved
 from generator.spec.schema import SpecError
 

@@ -5,8 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from generator import tolerances
-from generator.colorimetry import reference
+from generator import reference, tolerances
 from generator.spec import resolved
 from generator.verify import checks, paths, probes
 from generator.verify.allowance import float32_allowance

@@ -7,6 +7,9 @@ samples these functions, the verifier compares OCIO's output with them.
 Conventions: scene-linear values are relative to the scene reference (by
 default ACES2065-1); display-linear values are CIE XYZ relative to D65 with
 1.0 = 100 cd/m²; views clip each display channel to [0, peak / 100 cd/m²].
+
+Layer: above spec, gamut and rendering (it evaluates a spec's paths with them), below
+luts, ocio and verify (which sample it, emit it and compare with it).
 """
 
 from __future__ import annotations

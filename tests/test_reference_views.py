@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from generator.colorimetry import reference
+from generator import reference
 
 METHODS = ("clip", "desaturate", "scale", "rgc", "perceptual")
 
