@@ -21,9 +21,9 @@ from generator.colorimetry.gamuts import gamuts
 from generator.luts import aces_lattice
 from generator.luts.fit import tetrahedra
 from generator.luts.solve import interpolate
+from generator.metrics import delta_e_itp
 from generator.rendering import views
 from generator.spec.load import load
-from generator.verify.metrics import delta_e_itp
 
 #: The display each view is measured on.
 DISPLAYS = {

@@ -15,7 +15,7 @@ import numpy as np
 from generator import tolerances
 from generator.luts.names import slug
 from generator.luts.spi1d import format_spi1d
-from generator.verify.metrics import relative_error
+from generator.metrics import relative_error
 
 MIN_SIZE = 1024
 MAX_SIZE = 1 << 17

@@ -17,7 +17,7 @@ codes pass the top of a capped code range, as S-Log3's brightest codes fall shor
 times a 1000 cd/m² peak) are left out of both, as a file in that encoding never holds them.
 
 Errors are ten-bit code values (largest channel difference times 1023) for SDR
-displays and ΔE ITP (ITU-R BT.2124, :func:`~generator.verify.metrics.delta_e_itp`)
+displays and ΔE ITP (ITU-R BT.2124, :func:`~generator.metrics.delta_e_itp`)
 for HDR ones; each set reports its maximum and 99th percentile.
 """
 
@@ -95,7 +95,7 @@ def representable(spec: Spec, source: ColourSpace, ref: np.ndarray, code: np.nda
     codes (``code``, computed if not given) decode back to them within float64 rounding
     (REPRESENTABLE_RELATIVE of the largest component). Every colour, for a linear source."""
     from generator.colorimetry.transfer import Linear
-    from generator.verify.metrics import colour_relative_error
+    from generator.metrics import colour_relative_error
 
     if isinstance(source.curve, Linear):
         return np.ones(len(ref), dtype=bool)
@@ -161,7 +161,7 @@ def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
     """Per-colour error of code values ``actual`` against ``expected``, and its unit."""
     actual, expected = np.asarray(actual, dtype=np.float64), np.asarray(expected, dtype=np.float64)
     if display.is_hdr:
-        from generator.verify.metrics import delta_e_itp
+        from generator.metrics import delta_e_itp
 
         with np.errstate(all="ignore"):
             return np.nan_to_num(delta_e_itp(display, actual, expected)), "ΔE ITP"

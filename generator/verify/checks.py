@@ -166,7 +166,7 @@ def _inside(values: np.ndarray, bounds: tuple[float, float]) -> np.ndarray:
 
 def _representable(end: paths.Endpoint, ref: np.ndarray, codes: np.ndarray) -> np.ndarray:
     """Samples of a bounded encoding inside its code range whose codes decode back to ``ref``."""
-    from generator.verify.metrics import colour_relative_error
+    from generator.metrics import colour_relative_error
 
     back = _evaluate(end.decode, codes)
     with np.errstate(invalid="ignore"):

@@ -8,7 +8,7 @@ import pytest
 from generator import tolerances
 from generator.luts import aces_probes, pack, probes
 from generator.luts.view import bake_view_lut, view_filename, view_transform
-from generator.verify.metrics import delta_e_itp
+from generator.metrics import delta_e_itp
 
 
 def test_view_lut_reads_back_and_is_measured(default_spec, tmp_path):

@@ -10,9 +10,9 @@ from generator import reference, tolerances
 from generator.colorimetry import transfer
 from generator.colorimetry.curves import CURVES
 from generator.luts.names import slug
+from generator.metrics import colour_relative_error, relative_error
 from generator.ocio.curves import code_clamp, curve_label, decode_transforms, is_baked
 from generator.spec.schema import SpecError
-from generator.verify.metrics import colour_relative_error, relative_error
 from tests.conftest import VERSIONS
 
 

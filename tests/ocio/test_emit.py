@@ -11,9 +11,9 @@ import PyOpenColorIO as ocio
 import pytest
 
 from generator import reference, tolerances
+from generator.metrics import colour_relative_error, delta_e_itp, relative_error
 from generator.ocio.curves import is_baked
 from generator.spec import resolved
-from generator.verify.metrics import colour_relative_error, delta_e_itp, relative_error
 from tests.conftest import VERSIONS
 
 LOSSLESS = ocio.OPTIMIZATION_LOSSLESS

@@ -8,6 +8,7 @@ import PyOpenColorIO as ocio
 import pytest
 
 from generator import tolerances
+from generator.metrics import colour_relative_error
 from generator.rendering.aces2 import ACES_WHITE, AP0_PRIMARIES, AP1_PRIMARIES
 from generator.rendering.jmh import (
     MODEL_GAMMA,
@@ -20,7 +21,6 @@ from generator.rendering.jmh import (
     rgb_to_jmh,
     y_to_j,
 )
-from generator.verify.metrics import colour_relative_error
 from tests.rendering.aces2_cases import LED_WALL, float32, ocio_apply, probe_sets
 
 SPACES = {

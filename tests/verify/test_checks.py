@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 from generator import reference, tolerances
+from generator.metrics import dequantised, percentile_99
 from generator.spec import resolved
 from generator.verify import checks, paths, probes
 from generator.verify.allowance import float32_allowance
-from generator.verify.metrics import dequantised, percentile_99
 
 
 @pytest.fixture(scope="module")

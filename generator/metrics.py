@@ -1,4 +1,8 @@
-"""Error metrics, each named once: relative (value or colour), and ΔE ITP for HDR."""
+"""Error metrics, each named once: relative (value or colour), and ΔE ITP for HDR.
+
+Layer: beside :mod:`generator.reference` (ΔE ITP decodes with its display EOTF), below
+luts (whose fits are held to these metrics) and verify (which judges with them).
+"""
 
 from __future__ import annotations
 
