@@ -26,7 +26,7 @@ def wall(argv: list[str], repeat: int = 1) -> float:
 def main() -> None:
     import PyOpenColorIO as ocio
 
-    from generator.spec.load import newest_ocio_version
+    from generator.spec.allowed import newest_ocio_version
 
     ocioforge = [sys.executable, "-m", "generator"]
     newest = newest_ocio_version()

@@ -12,7 +12,7 @@ def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
     import numpy as np
 
     from generator import reference
-    from generator.spec.load import newest_ocio_version
+    from generator.spec.allowed import newest_ocio_version
 
     out = [
         f"name:      {space.name}",

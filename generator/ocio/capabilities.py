@@ -66,9 +66,9 @@ SPACE_BUILTINS = {
     "adx16": "ADX16_to_ACES2065-1",
 }
 
-#: HLG display encoding, including BT.2100's OOTF for a 1000 cd/m² display.
+#: HLG display encoding, including BT.2100's OOTF for a 1000 cd/m² display (the peak a
+#: spec's HLG display must have: :data:`generator.spec.allowed.HLG_DISPLAY_PEAK`).
 HLG_DISPLAY_BUILTIN = "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit"
-HLG_DISPLAY_PEAK = 1000.0
 
 
 def has_builtin(style: str, version: tuple[int, int]) -> bool:

@@ -19,7 +19,7 @@ from generator.luts.names import add_file
 from generator.luts.pool import Pool
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
-from generator.spec.load import COLORIMETRIC_ALIASES, VIEW_METHODS
+from generator.spec.allowed import COLORIMETRIC_ALIASES, VIEW_METHODS
 from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES, display_view_space
 from generator.spec.schema import ColourSpace, Display, Spec
 

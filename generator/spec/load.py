@@ -18,9 +18,16 @@ from generator import tolerances
 from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.colorimetry.transfer import Linear
-from generator.ocio.capabilities import HLG_DISPLAY_PEAK
 from generator.rendering import views as aces_views
-from generator.spec import fields, labels, namespace
+from generator.spec import fields, labels, namespace, resolved
+from generator.spec.allowed import (
+    COLORIMETRIC_ALIASES,
+    HLG_DISPLAY_PEAK,
+    OCIO_MIN_VERSION,
+    VIEW_METHODS,  # noqa: F401  (verify.paths reads load.VIEW_METHODS)
+    VIEWS,
+    newest_ocio_version,
+)
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
 TOP_KEYS = (
@@ -72,20 +79,6 @@ FILE_RULE_KEYS = ("name", "colour_space", "pattern", "extension", "regex")
 LIBRARY_DISPLAY_KEYS = ("name", "views")
 ENCODINGS = ("scene-linear", "display-linear", "log", "sdr-video", "edr-video", "hdr-video", "data")
 
-#: Views a display may offer: each scene-referred view names its gamut-mapping method
-#: (generator.gamut.METHODS); Raw shows data unchanged.
-VIEW_METHODS = {
-    "Colorimetric": "clip",
-    "Desaturate": "desaturate",
-    "Scale": "scale",
-    "Perceptual": "perceptual",
-    "RGC": "rgc",
-}
-VIEWS = (*VIEW_METHODS, "Raw")
-
-#: The ACES studio configs' name for a view without tone mapping: our Colorimetric.
-COLORIMETRIC_ALIASES = ("Un-tone-mapped",)
-
 #: Views a display offers when the spec does not say. Colorimetric (clip) and RGC are
 #: analytic; Scale is a CLF lattice on which the mapping is linear inside every tetrahedron,
 #: and Desaturate a lattice in OCIO's HSV on which it is trilinear (generator.luts.hsv):
@@ -130,18 +123,8 @@ DEFAULT_ROLES = {
     "linear": "ACEScg",
 }
 
-OCIO_MIN_VERSION = (2, 1)
-
 #: The chromatic adaptation of a spec that names none.
 DEFAULT_ADAPTATION = "Bradford"
-
-
-def newest_ocio_version() -> tuple[int, int]:
-    """The newest config version the installed PyOpenColorIO writes."""
-    import PyOpenColorIO as ocio
-
-    major, minor = ocio.__version__.split(".")[:2]
-    return int(major), int(minor)
 
 
 def default_text() -> str:
@@ -174,8 +157,6 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
         return parse(default_text(), "<default>", Path.cwd(), keep)
     path = Path(path)
     if path.is_dir() or path.suffix.lower() in (".ocio", ".json"):  # a build: the resolved spec it stored
-        from generator.spec import resolved
-
         folder = path if path.is_dir() else path.parent
         return resolved.read(path if path.suffix.lower() == ".json" else folder / resolved.FILENAME)
     from generator.files import not_readable

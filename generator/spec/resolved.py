@@ -19,6 +19,7 @@ import numpy as np
 from generator.colorimetry import transfer
 from generator.colorimetry.matrices import Gamut
 from generator.spec import fields
+from generator.spec.allowed import COLORIMETRIC_ALIASES, OCIO_MIN_VERSION, VIEWS, newest_ocio_version
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
 FILENAME = "ocioforge-spec.json"
@@ -205,7 +206,6 @@ class _Reader:
 
     def display(self, data, field: str) -> Display:
         from generator.rendering.views import is_aces_name
-        from generator.spec.load import COLORIMETRIC_ALIASES, VIEWS
 
         d = self.table(data, [f.name for f in dataclasses.fields(Display)], field)
         views = self.items(d["views"], f"{field}.views", lambda v, f: self.typed(v, str, f), 1)
@@ -265,8 +265,6 @@ class _Reader:
             raise self.fail("rgc", str(error)) from None
 
     def version(self, value) -> tuple[int, int]:
-        from generator.spec.load import OCIO_MIN_VERSION, newest_ocio_version
-
         if not isinstance(value, list) or len(value) != 2:
             raise self.fail("ocio_version", f"expected [major, minor], got {value!r}")
         version = tuple(self.typed(v, int, f"ocio_version[{i}]") for i, v in enumerate(value))
