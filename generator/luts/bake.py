@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from generator.files import check_file_output, write_files
-from generator.luts import formats, lattice
+from generator.luts import fit, formats, lattice, source_axes
 from generator.luts.axes import LogAxis
 from generator.spec.schema import ColourSpace, Display, Spec, SpecError
 
@@ -294,7 +294,7 @@ def _smallest_size(spec: Spec, display: Display, source: ColourSpace, method: st
             if fmt == "clf" and shaper == "auto":
                 lattice.display_axis(display, size, method)
             else:
-                lattice.source_axis(spec, source, display, size)
+                source_axes.source_axis(spec, source, display, size)
             return size
         except ValueError:
             continue
@@ -312,7 +312,7 @@ def build_lattice(req: Request) -> lattice.Lattice:
     if req.fmt == "clf" and req.shaper == "auto":
         return lattice.display_lattice(req.spec, req.display, req.method, req.size, source=req.source)
     shaper = "none" if not FORMATS[req.fmt].shaper else req.shaper
-    return lattice.source_lattice(req.spec, req.source, req.display, req.method, req.size, shaper)
+    return fit.source_lattice(req.spec, req.source, req.display, req.method, req.size, shaper)
 
 
 def describe(req: Request) -> str:

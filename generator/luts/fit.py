@@ -2,7 +2,8 @@
 :mod:`generator.luts.lattice`): tetrahedral interpolation at colours of the kinds the
 probes measure, drawn from another seed, against the reference's values there, with
 each node pulled toward its sampled value; then reweighted by each colour's error.
-The solver is :mod:`generator.luts.solve`."""
+The solver is :mod:`generator.luts.solve`. :func:`source_lattice` lays out and fits the
+lattice of a format that holds no matrix (.cube, .spi3d)."""
 
 from __future__ import annotations
 
@@ -10,8 +11,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from generator import reference
+from generator.colorimetry.transfer import Linear
 from generator.luts import numbers, probes, solve
-from generator.luts.lattice import CUBE_DECIMALS, Lattice, coordinates
+from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice, coordinates, node_values, preimages
+from generator.luts.source_axes import SOURCE_SHAPER_SIZES, shaper_domain, source_axis, source_domain
+from generator.spec.schema import ColourSpace, Display, Spec
 
 #: Colours per probe set in the least-squares fit of source-layout node values: fewer
 #: overfit the sample (measured at 33³, clip, on the pairs of OCIOBAKELUT_P99, the smallest
@@ -208,3 +213,61 @@ def fit(
     rtol = FIT_RTOL if rtol is None else rtol  # read when called: FIT_RTOL is the one default
     values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, rtol * whole, FIT_MAXITER)
     return numbers.rounded(values.T.reshape(lat.cube.shape), CUBE_DECIMALS)
+
+
+def _shaper_table(spec: Spec, source: ColourSpace, display: Display, size: int, shaper, domain) -> np.ndarray | None:
+    if shaper == "none":
+        return None
+    count = SOURCE_SHAPER_SIZES[isinstance(source.curve, Linear)]
+    with np.errstate(all="ignore"):
+        linear = source.curve.decode(np.linspace(domain[0], domain[1], count))
+        if shaper == "auto":
+            coordinate = source_axis(spec, source, display, size).coordinate(linear / display.clip_high)
+        else:
+            encoded = shaper.curve.encode(linear)
+            coordinate = (encoded - encoded[0]) / (encoded[-1] - encoded[0])
+    return numbers.rounded(coordinate, SHAPER_DECIMALS)
+
+
+def source_lattice(
+    spec: Spec,
+    source: ColourSpace,
+    display: Display,
+    method: str,
+    size: int,
+    shaper: str | ColourSpace = "auto",
+    params=None,
+) -> Lattice:
+    """The source layout. ``shaper``: "auto" (:class:`SourceAxis` on the decoded source),
+    "none" (the cube directly over the source domain) or a colour space whose
+    curve, applied to the decoded source values, spaces the nodes. ``params`` None takes
+    the spec's (:func:`~generator.reference.method_params`)."""
+    params = reference.method_params(spec, method, params, source, display)
+
+    domain = (
+        shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
+    )
+    table = _shaper_table(spec, source, display, size, shaper, domain)
+    codes = preimages(size, table, domain)
+    with np.errstate(all="ignore"):
+        linear = source.curve.decode(codes)
+    matrix = reference.scene_to_display_matrix(spec, display) @ reference.space_matrix(spec, source)
+    cube = node_values(display, method, linear, matrix, params)
+    lat = Lattice(source, display, method, None, None, None, domain, table, cube)
+    axis = source_axis(spec, source, display, size) if shaper == "auto" else None
+    zero = axis.zero if axis is not None and axis.values[axis.zero] == 0.0 else None
+    colours = _held(probes.training(spec, source, display, method, FIT_COUNT, params), domain)
+    return Lattice(source, display, method, None, None, None, domain, table, reweighted_fit(lat, colours, zero))
+
+
+def _held(colours: dict, domain: tuple[float, float]) -> dict:
+    """The training colours whose source values the file's domain holds: one beyond it is
+    clamped there, and fitting its mapped colour at the clamped input would pull the
+    domain's edge nodes off (an sRGB-encoded source, whose domain ends at code 1, put
+    near-white colours hundreds of codes off through an identity)."""
+    lo, hi = domain
+    out = {}
+    for name, (code, expected) in colours.items():
+        inside = np.all((code >= lo) & (code <= hi), axis=-1)
+        out[name] = (code[inside], expected[inside])
+    return out

@@ -9,13 +9,14 @@
   values; for the other methods an analytic pre-shaper and a 1D table lead to
   an :class:`~generator.luts.axes.Axis` and the lattice holds code values.
   CLF and the config's views use it.
-* Source axes (:func:`source_lattice`): formats that hold no matrix (.cube,
+* Source axes (:func:`~generator.luts.fit.source_lattice`): formats that hold no matrix (.cube,
   .spi3d) sample the whole transform in the source's own values; a 1D shaper
   table, uniform in source values, takes them to the coordinate of a
   :class:`~generator.luts.source_axes.SourceAxis`. A clipping plane of the display is
   oblique to these axes and crosses cells, so the node values are then fitted
   by least squares (:mod:`generator.luts.fit`) to colours of the kinds the probes measure,
-  drawn from another seed, reweighted by their errors (:func:`reweighted_fit`);
+  drawn from another seed, reweighted by their errors
+  (:func:`~generator.luts.fit.reweighted_fit`);
   greys and colours with a zero channel stay exact.
 
 Node values start from the reference evaluation
@@ -31,10 +32,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import reference
-from generator.colorimetry.transfer import Linear, PiecewisePower, Power
-from generator.luts import numbers, probes
+from generator.colorimetry.transfer import PiecewisePower, Power
+from generator.luts import numbers
 from generator.luts.axes import DEFAULT_SHARES, LOG_METHODS, Axis, LogAxis, grey_code, grey_linear
-from generator.luts.source_axes import SOURCE_SHAPER_SIZES, shaper_domain, source_axis, source_domain
 from generator.spec.schema import ColourSpace, Display, Spec
 
 #: Decimals written for lattice values holding display code values: 5e-6 of a code at
@@ -345,63 +345,3 @@ def display_lattice(
         return Lattice(source, display, method, decode, matrix, pre, domain, table, cube, None, LOG_DECIMALS, pre)
     cube = node_values(display, method, linear, None, params)
     return Lattice(source, display, method, decode, matrix, pre, domain, table, cube)
-
-
-def _shaper_table(spec: Spec, source: ColourSpace, display: Display, size: int, shaper, domain) -> np.ndarray | None:
-    if shaper == "none":
-        return None
-    count = SOURCE_SHAPER_SIZES[isinstance(source.curve, Linear)]
-    with np.errstate(all="ignore"):
-        linear = source.curve.decode(np.linspace(domain[0], domain[1], count))
-        if shaper == "auto":
-            coordinate = source_axis(spec, source, display, size).coordinate(linear / display.clip_high)
-        else:
-            encoded = shaper.curve.encode(linear)
-            coordinate = (encoded - encoded[0]) / (encoded[-1] - encoded[0])
-    return numbers.rounded(coordinate, SHAPER_DECIMALS)
-
-
-def source_lattice(
-    spec: Spec,
-    source: ColourSpace,
-    display: Display,
-    method: str,
-    size: int,
-    shaper: str | ColourSpace = "auto",
-    params=None,
-) -> Lattice:
-    """The source layout. ``shaper``: "auto" (:class:`SourceAxis` on the decoded source),
-    "none" (the cube directly over the source domain) or a colour space whose
-    curve, applied to the decoded source values, spaces the nodes. ``params`` None takes
-    the spec's (:func:`~generator.reference.method_params`)."""
-    from generator.luts.fit import FIT_COUNT, reweighted_fit  # fit.py builds on this module
-
-    params = reference.method_params(spec, method, params, source, display)
-
-    domain = (
-        shaper_domain(source, shaper, display) if isinstance(shaper, ColourSpace) else source_domain(source, display)
-    )
-    table = _shaper_table(spec, source, display, size, shaper, domain)
-    codes = preimages(size, table, domain)
-    with np.errstate(all="ignore"):
-        linear = source.curve.decode(codes)
-    matrix = reference.scene_to_display_matrix(spec, display) @ reference.space_matrix(spec, source)
-    cube = node_values(display, method, linear, matrix, params)
-    lat = Lattice(source, display, method, None, None, None, domain, table, cube)
-    axis = source_axis(spec, source, display, size) if shaper == "auto" else None
-    zero = axis.zero if axis is not None and axis.values[axis.zero] == 0.0 else None
-    colours = _held(probes.training(spec, source, display, method, FIT_COUNT, params), domain)
-    return Lattice(source, display, method, None, None, None, domain, table, reweighted_fit(lat, colours, zero))
-
-
-def _held(colours: dict, domain: tuple[float, float]) -> dict:
-    """The training colours whose source values the file's domain holds: one beyond it is
-    clamped there, and fitting its mapped colour at the clamped input would pull the
-    domain's edge nodes off (an sRGB-encoded source, whose domain ends at code 1, put
-    near-white colours hundreds of codes off through an identity)."""
-    lo, hi = domain
-    out = {}
-    for name, (code, expected) in colours.items():
-        inside = np.all((code >= lo) & (code <= hi), axis=-1)
-        out[name] = (code[inside], expected[inside])
-    return out

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from generator import reference, tolerances
-from generator.luts import bake, formats, lattice, probes
+from generator.luts import bake, formats, lattice, probes, source_axes
 from generator.luts.axes import LogAxis
 
 
@@ -127,7 +127,7 @@ def test_resolve_cube_keeps_greys_and_zero_channels(default_spec, tmp_path):
     )
     assert np.abs(apply(grey) - expected).max() * 1023 <= tolerances.LUT_CUBE_GREY_CODES
     lat = bake.build_lattice(req)
-    zero = lattice.source_axis(default_spec, req.source, req.display, 33).zero
+    zero = source_axes.source_axis(default_spec, req.source, req.display, 33).zero
     linear = req.source.curve.decode(lattice.preimages(lat.size, lat.shaper, lat.domain))
     matrix = reference.scene_to_display_matrix(default_spec, req.display) @ reference.space_matrix(
         default_spec, req.source
@@ -273,11 +273,13 @@ def test_a_clf_says_what_its_lattice_covers_and_where_its_codes_end(default_spec
 
 
 def test_a_clf_root_is_clf_v3_with_its_namespace(default_spec):
+    """As OCIO writes it: CLF v3 in SMPTE ST 2136-1's namespace."""
     from xml.etree import ElementTree
 
     root = ElementTree.fromstring(bake.bake(_request(default_spec, "clf"))[""])
-    assert root.tag == "{urn:AMPAS:CLF:v3.0}ProcessList" and root.get("compCLFversion") == "3.0"
-    assert root.find("{urn:AMPAS:CLF:v3.0}LUT3D").get("interpolation") == "tetrahedral"
+    namespace = "{http://www.smpte-ra.org/ns/2136-1/2024}"
+    assert root.tag == f"{namespace}ProcessList" and root.get("compCLFversion") == "3"
+    assert root.find(f"{namespace}LUT3D").get("interpolation") == "tetrahedral"
 
 
 def test_a_cube_header_gives_the_range_of_its_fitted_nodes(default_spec):

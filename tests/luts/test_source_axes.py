@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from generator.luts import lattice, source_axes
+from generator.luts import source_axes
 from generator.luts.axes import grey_code
 from generator.luts.source_axes import SourceAxis
 
@@ -13,7 +13,7 @@ from generator.luts.source_axes import SourceAxis
 @pytest.mark.parametrize("source", ("ACEScg", "ACEScct", "ARRI LogC4", "sRGB Encoded Rec.709 (sRGB)"))
 def test_source_axis_is_linear_in_code_values_between_nodes(default_spec, source):
     for display in default_spec.displays:
-        axis = lattice.source_axis(default_spec, default_spec.space(source), display, 33)
+        axis = source_axes.source_axis(default_spec, default_spec.space(source), display, 33)
         nodes = axis.values
         assert np.all(np.diff(nodes) > 0) and nodes[axis.zero] == 0.0
         assert nodes[axis.one] == pytest.approx(min(1.0, nodes[-1]), rel=1e-12)
@@ -39,8 +39,8 @@ def test_source_axis_spaces_negatives_when_the_display_reaches_outside_the_sourc
     )
     reach = source_axes.display_reach(default_spec, source, wide)
     assert 0.2 < reach < 0.25 and source_axes.display_reach(default_spec, source, narrow) < 1e-12
-    axis = lattice.source_axis(default_spec, source, wide, 33)
+    axis = source_axes.source_axis(default_spec, source, wide, 33)
     negative = axis.values[: axis.zero]
     assert negative.size == 1 + round(32 * source_axes.SOURCE_NEGATIVE_SHARE)
     assert negative[1] == pytest.approx(-reach, rel=1e-2) and np.all(np.diff(negative[1:]) > 0)
-    assert lattice.source_axis(default_spec, source, narrow, 33).zero == 1
+    assert source_axes.source_axis(default_spec, source, narrow, 33).zero == 1
