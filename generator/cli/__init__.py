@@ -21,8 +21,8 @@ COMMANDS = {
     "bake": "Bake a transform from a colour space to a display into a LUT file (.cube, .spi3d, .clf).",
     "verify": "Verify a built config: images through OCIO engines against the spec's own evaluation.",
     "plot": "Draw the CIE 1931 chromaticity diagram of a built config's colour spaces.",
-    "info": "Describe a colour space, the library's or a spec's: gamut, white, curve, matrix.",
-    "list": "List the library's colour spaces, displays and curves.",
+    "info": "Describe a colour space or display, the library's or a spec's: gamut, white, curve, matrix.",
+    "list": "List the library's colour spaces, displays and curves, or a spec's own.",
     "convert": "Convert image sequences through a config (in parallel, or on a Dask cluster), verified.",
 }
 

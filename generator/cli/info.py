@@ -1,4 +1,4 @@
-"""ocioforge info: everything about one colour space, of the library or of a spec."""
+"""ocioforge info: everything about one colour space or display, of the library or of a spec."""
 
 from __future__ import annotations
 
@@ -40,6 +40,39 @@ def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
     return out
 
 
+def _display_lines(display, spec) -> list[str]:
+    """What ``info`` prints for a display: its gamut, EOTF, peak and views, and its linear RGB
+    (1.0 = 100 cd/m²) to the display reference and from the scene reference, as the config converts."""
+    import numpy as np
+
+    from generator import reference
+    from generator.colorimetry.gamuts import D65
+    from generator.spec.namespace import DISPLAY_REFERENCE
+
+    g = display.gamut
+    same = np.allclose(g.white, D65, rtol=0, atol=1e-12)
+    absolute = "  (absolute: code 1 emits the peak)" if display.absolute else ""
+    out = [
+        f"name:      {display.name}  (a display)",
+        f"aliases:   {', '.join(display.aliases) or '-'}",
+        f"encoding:  {display.encoding}",
+        *([f"about:     {display.description}"] if display.description else []),
+        f"gamut:     {g.name}  ({g.citation})",
+        "primaries: " + "  ".join(f"{c} ({x:.5f}, {y:.5f})" for c, (x, y) in zip("RGB", g.primaries)),
+        f"white:     ({g.white[0]:.5f}, {g.white[1]:.5f})",
+        f"eotf:      {display.eotf_name}: {display.eotf!r}",
+        f"peak:      {display.peak:g} cd/m²{absolute}",
+        f"views:     {', '.join(display.views)}",
+        f"to {DISPLAY_REFERENCE} ({'the same white: no adaptation' if same else spec.chromatic_adaptation}):",
+    ]
+    out += [
+        "  " + " ".join(f"{v: .10f}" for v in row) for row in np.linalg.inv(reference.display_matrix(spec, display))
+    ]
+    out.append(f"from {spec.scene_reference} (display-linear, 1.0 = 100 cd/m²):")
+    out += ["  " + " ".join(f"{v: .10f}" for v in row) for row in reference.scene_to_display_matrix(spec, display)]
+    return out
+
+
 def _adaptation(spec, gamut) -> str:
     """How ``gamut`` adapts to the spec's scene reference, and on whose authority."""
     import numpy as np
@@ -70,7 +103,11 @@ def _expression(space, version) -> str:
     return f"analytic ({type(space.curve).__name__})"
 
 
-@click.command(cls=Command, help="Describe a colour space: gamut, white, curve, matrix, how OCIO expresses it.")
+@click.command(
+    cls=Command,
+    help="Describe a colour space (gamut, white, curve, matrix, how OCIO expresses it) or a display "
+    "(gamut, white, EOTF, peak, views, matrices).",
+)
 @click.argument("name", type=NAME)
 @click.option(
     "--spec",
@@ -78,11 +115,15 @@ def _expression(space, version) -> str:
     type=GivenPath(),
     default=None,
     help="Take NAME from a spec or a build (its folder or config.ocio), with its scene reference and "
-    "adaptation (default: the library's spaces, the default spec's).",
+    "adaptation (default: the library's spaces, the default spec's displays).",
 )
 def command(name, spec_path):
-    from generator.spec.load import load, named_space
+    from generator.spec.load import load, named_display, named_space
 
     spec = load(spec_path)
+    display = named_display(spec, name)
+    if display is not None:
+        say("\n".join(_display_lines(display, spec)))
+        return
     space = named_space(None if spec_path is None else spec, name, "ocioforge info", "NAME")
     say("\n".join(_lines(space, spec, None if spec_path is None else spec.ocio_version)))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from dataclasses import dataclass
 
 import click
 import numpy as np
@@ -30,10 +31,61 @@ def _ocio_snippet(matrix) -> str:
 
 
 def _node_name(space) -> str:
-    """The space's first alias usable as a node name (letters, digits, underscores)."""
+    """The space's (or display's) first alias usable as a node name (letters, digits, underscores)."""
     from generator.luts.names import slug
 
     return next((a for a in space.aliases if a.replace("_", "").isalnum()), slug(space.name))
+
+
+@dataclass(frozen=True)
+class Endpoint:
+    """SRC or DST: a colour space, a display or the display reference; ``kind`` says which."""
+
+    name: str
+    aliases: tuple[str, ...]
+    gamut: object
+    kind: str
+    record: object = None
+
+
+def _is_display(name: str) -> bool:
+    """Whether ``name`` is a library display's or the display reference's name or alias."""
+    from generator.colorimetry import library
+    from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES
+
+    names = [n for d in library.DISPLAYS for n in (d.name, *d.aliases)] + [DISPLAY_REFERENCE]
+    return name.lower() in {n.lower() for n in (*names, *DISPLAY_REFERENCE_ALIASES)}
+
+
+def endpoint(spec, name: str, which: str) -> Endpoint:
+    """SRC or DST by name or alias: a display of ``spec``, the display reference (CIE XYZ-D65),
+    or a colour space (the library's when ``spec`` is None)."""
+    from generator.colorimetry.gamuts import gamuts
+    from generator.spec import load
+    from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES
+    from generator.spec.schema import SpecError
+
+    if spec is not None:
+        display = load.named_display(spec, name)
+        if display is not None:
+            return Endpoint(display.name, display.aliases, display.gamut, "display", display)
+        if name.lower() in {n.lower() for n in (DISPLAY_REFERENCE, *DISPLAY_REFERENCE_ALIASES)}:
+            return Endpoint(DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES, gamuts()["CIE XYZ-D65"], "reference")
+    space = load.named_space(spec, name, "ocioforge matrix", which)
+    if space.gamut is None:
+        raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
+    return Endpoint(space.name, space.aliases, space.gamut, "space", space)
+
+
+def to_reference(spec, end: Endpoint) -> np.ndarray:
+    """``end``'s linear RGB (a display's: 1.0 = 100 cd/m²) to ``spec``'s scene reference, as its config converts."""
+    from generator import reference
+
+    if end.kind == "display":
+        return np.linalg.inv(reference.scene_to_display_matrix(spec, end.record))
+    if end.kind == "reference":
+        return np.linalg.inv(reference.scene_to_display_reference(spec))
+    return reference.gamut_matrix(spec, end.gamut)
 
 
 def published_matrix(source, target):
@@ -98,19 +150,16 @@ def command(src, dst, cat, fmt, spec_path):
     from generator.spec import load
 
     spec = None if spec_path is None else load.load(spec_path)
-    spaces = [load.named_space(spec, name, "ocioforge matrix", which) for name, which in ((src, "SRC"), (dst, "DST"))]
-    for space, which in zip(spaces, ("SRC", "DST")):
-        if space.gamut is None:
-            raise SpecError("ocioforge matrix", which, f"{space.name!r} has no RGB primaries (data or density)")
-    if spaces[0].gamut == spaces[1].gamut:  # one gamut: exactly the identity, not a product with its inverse
+    if spec is None and (_is_display(src) or _is_display(dst)):  # the library's displays: the default spec's
+        spec = load.load(None, keep=(src, dst))
+    ends = [endpoint(spec, name, which) for name, which in ((src, "SRC"), (dst, "DST"))]
+    if ends[0].gamut == ends[1].gamut and ends[0].kind == ends[1].kind:  # exactly the identity
         matrix = np.eye(3)
     elif cat:
-        matrix = rgb_to_rgb(spaces[0].gamut, spaces[1].gamut, cat)
+        matrix = rgb_to_rgb(ends[0].gamut, ends[1].gamut, cat)
     elif spec is not None:
-        from generator.reference import space_matrix
-
-        matrix = np.linalg.solve(space_matrix(spec, spaces[1]), space_matrix(spec, spaces[0]))
+        matrix = np.linalg.solve(to_reference(spec, ends[1]), to_reference(spec, ends[0]))
     else:
-        matrix = published_matrix(*(s.gamut for s in spaces))
-    label = f"{_node_name(spaces[0])}_to_{_node_name(spaces[1])}"
+        matrix = published_matrix(*(e.gamut for e in ends))
+    label = f"{_node_name(ends[0])}_to_{_node_name(ends[1])}"
     say(render(matrix, fmt, label))

@@ -340,12 +340,21 @@ def named_space(spec: Spec | None, name: str, source: str, field: str) -> Colour
     try:
         return spec.space(name)
     except KeyError:
+        displays = [n for d in spec.displays for n in (d.name, *d.aliases)]
         raise SpecError(
             source,
             field,
-            f"no colour space {name!r} in {spec.source}{suggest(name, spec.space_names)}; "
-            "allowed: one of its colour spaces",
+            f"no colour space {name!r} in {spec.source}, nor a display"
+            f"{suggest(name, [*spec.space_names, *displays])}; allowed: one of its colour spaces or "
+            "displays (ocioforge list --spec lists them)",
         ) from None
+
+
+def named_display(spec: Spec, name: str) -> Display | None:
+    """The display of ``spec`` called ``name`` or one of its aliases (in any case); None when
+    it has none of that name."""
+    key = name.lower()
+    return next((d for d in spec.displays if key in (n.lower() for n in (d.name, *d.aliases))), None)
 
 
 def from_library(space: library.SpaceDef) -> ColourSpace:
