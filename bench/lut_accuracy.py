@@ -215,6 +215,7 @@ def config_views(spec) -> None:
     measured through OCIO on ACEScg colours against the mapping. Perceptual's view is its
     lattice (verify holds OCIO to that): its row is the lattice's departure from the mapping."""
     from generator.luts.view import bake_view_lut
+    from generator.ocio.view_luts import view_figures
 
     print(
         "\n== config views (as the config runs them) against the mapping, ten-bit codes (SDR) or ΔE ITP (HDR), "
@@ -223,7 +224,7 @@ def config_views(spec) -> None:
     for display in spec.displays:
         for method in ("scale", "desaturate", "perceptual"):
             lut = bake_view_lut(spec, display, method)
-            figures = {name: (f.maximum, f.p99) for name, f in lut.figures.items()}
+            figures = {name: (f.maximum, f.p99) for name, f in view_figures(lut).items()}
             print(f"  {display.name[:24]:24s} {method:11s} {_fmt(figures)}")
 
 

@@ -5,22 +5,17 @@ The view is scene-reference linear RGB -> :func:`~generator.reference.normalised
 Range, LUT1D, LUT3D in display axes, see :mod:`generator.luts.lattice`); for
 desaturate, the matrix is followed by OCIO's RGB_TO_HSV, the shared coordinates
 file, this file and HSV_TO_RGB (:mod:`generator.luts.hsv`). The function is
-pure: it returns the file's name and bytes (measured through OCIO when asked); the
-config writer writes them.
+pure: it returns the file's name and bytes; the config writer writes them, and
+:mod:`generator.ocio.view_luts` measures them through OCIO as the config runs them.
 """
 
 from __future__ import annotations
 
-import tempfile
 from dataclasses import dataclass, field
-from functools import cached_property, lru_cache
-from pathlib import Path
+from functools import lru_cache
 
-import numpy as np
-
-from generator.luts import formats, hsv, hsv_axes, lattice, probes
+from generator.luts import formats, hsv, hsv_axes, lattice
 from generator.luts.axes import LOG_METHODS
-from generator.luts.curve1d import curve_file
 from generator.luts.names import file_stems
 from generator.spec.schema import Display, Spec
 
@@ -60,10 +55,8 @@ class ViewLut:
     display-linear RGB, 1 = the display's peak); the config applies it as a
     MatrixTransform before a FileTransform of ``filename``. The file's output is
     display code values, or with ``light`` normalised display-linear RGB (for an
-    HDR display, :func:`ends_in_light`: the config encodes). ``figures`` are the
-    measured errors through OCIO on :mod:`generator.luts.probes` sets (drawn from
-    the ACEScg gamut when the spec has it), measured when first asked for (a build
-    does not), ``bound`` their largest maximum.
+    HDR display, :func:`ends_in_light`: the config encodes). Measured through OCIO
+    as the config runs it by :func:`generator.ocio.view_luts.view_figures` (a build does not).
     """
 
     filename: str
@@ -75,43 +68,6 @@ class ViewLut:
     beside: tuple[tuple[str, bytes], ...] = field(default=(), repr=False)
     light: bool = False
     hsv: bool = False
-
-    @cached_property
-    def figures(self) -> dict:
-        """The view as the config runs it (every file by name on the search path, the
-        display's baked curve among them), measured through OCIO."""
-        bakes: dict = {}
-        transform = view_transform(
-            self.matrix,
-            self.filename,
-            *((self.spec, self.display) if self.light else ()),
-            hsv_folder="" if self.hsv else None,
-            bakes=bakes,
-        )
-        files = {
-            self.filename: self.data,
-            **dict(self.beside),
-            **{filename: curve_file(baked) for filename, baked in bakes.items()},
-        }
-        with tempfile.TemporaryDirectory() as folder:
-            for filename, content in files.items():
-                (Path(folder) / filename).write_bytes(content)
-            return probes.measure(
-                self.spec,
-                None,
-                self.display,
-                self.method,
-                probes.ocio_apply(transform, search_path=folder),
-                gamut_source=_gamut_source(self.spec),
-            )
-
-    @property
-    def bound(self) -> float:
-        return max(f.maximum for f in self.figures.values())
-
-    @property
-    def unit(self) -> str:
-        return next(iter(self.figures.values())).unit
 
 
 def ends_in_light(display: Display) -> bool:
@@ -129,52 +85,6 @@ def view_filename(spec: Spec, display: Display, method: str, size: int | None = 
     if method == HSV_METHOD and size is None:
         return f"view_{stem}_{method}_hsv{hsv_axes.HSV_SIZE}.clf"
     return f"view_{stem}_{method}_{size or view_size(display, method)}.clf"
-
-
-def lut_steps(matrix, path: str, hsv_folder: str | None = None) -> list:
-    """The OCIO transforms of a view LUT: MatrixTransform then FileTransform (tetrahedral);
-    for an HSV view (:mod:`generator.luts.hsv`), the file between OCIO's RGB_TO_HSV and
-    HSV_TO_RGB after the shared table (in ``hsv_folder``), all trilinear."""
-    import PyOpenColorIO as ocio
-
-    from generator.ocio.emit import matrix_transform
-
-    if hsv_folder is None:
-        return [matrix_transform(np.asarray(matrix)), ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)]
-    shared = f"{hsv_folder}/{hsv.SHARED_FILE}" if hsv_folder else hsv.SHARED_FILE
-    return [
-        matrix_transform(np.asarray(matrix)),
-        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV),
-        ocio.FileTransform(shared, interpolation=ocio.INTERP_LINEAR),
-        ocio.FileTransform(path, interpolation=ocio.INTERP_LINEAR),
-        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV, direction=ocio.TRANSFORM_DIR_INVERSE),
-    ]
-
-
-def view_transform(
-    matrix,
-    path: str,
-    spec: Spec | None = None,
-    display: Display | None = None,
-    hsv_folder: str | None = None,
-    bakes: dict | None = None,
-):
-    """:func:`lut_steps` as a GroupTransform; with ``spec`` and ``display``, for a LUT ending
-    in display light, then the display's own encoding (from normalised display-linear RGB
-    through CIE XYZ), whose baked curve files (a tabulated EOTF's, by name, for the search
-    path to find) go into ``bakes`` as in the config."""
-    import PyOpenColorIO as ocio
-
-    from generator import reference
-    from generator.ocio.emit import display_steps, matrix_transform
-
-    steps = lut_steps(matrix, path, hsv_folder)
-    if display is not None:
-        steps += [
-            matrix_transform(reference.normalised_display_to_xyz(spec, display)),
-            *display_steps(spec, display, {} if bakes is None else bakes),
-        ]
-    return ocio.GroupTransform(steps)
 
 
 @lru_cache(maxsize=64)
@@ -244,13 +154,6 @@ def _measured(
     measured when its figures are asked for."""
     matrix = tuple(tuple(float(v) for v in row) for row in matrix)
     return ViewLut(name, data, matrix, spec, display, method, tuple(beside.items()), light, hsv_view)
-
-
-def _gamut_source(spec: Spec):
-    try:
-        return spec.space("ACEScg")
-    except KeyError:
-        return None
 
 
 def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:

@@ -13,10 +13,11 @@ import PyOpenColorIO as ocio
 
 from generator import reference
 from generator.colorimetry.matrices import settled
-from generator.luts import aces_lattice
+from generator.luts import aces_lattice, hsv
 from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
 from generator.luts.pool import Pool
+from generator.luts.view import bake_view_lut_cached
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
 from generator.spec.allowed import COLORIMETRIC_ALIASES, VIEW_METHODS
@@ -61,6 +62,22 @@ def matrix_transform(matrix: np.ndarray, direction=ocio.TRANSFORM_DIR_FORWARD) -
     m44 = np.eye(4)
     m44[:3, :3] = settled(matrix)
     return ocio.MatrixTransform(matrix=[float(v) for v in m44.ravel()], direction=direction)
+
+
+def lut_steps(matrix, path: str, hsv_folder: str | None = None) -> list:
+    """The OCIO transforms of a view LUT: MatrixTransform then FileTransform (tetrahedral);
+    for an HSV view (:mod:`generator.luts.hsv`), the file between OCIO's RGB_TO_HSV and
+    HSV_TO_RGB after the shared table (in ``hsv_folder``), all trilinear."""
+    if hsv_folder is None:
+        return [matrix_transform(np.asarray(matrix)), ocio.FileTransform(path, interpolation=ocio.INTERP_TETRAHEDRAL)]
+    shared = f"{hsv_folder}/{hsv.SHARED_FILE}" if hsv_folder else hsv.SHARED_FILE
+    return [
+        matrix_transform(np.asarray(matrix)),
+        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV),
+        ocio.FileTransform(shared, interpolation=ocio.INTERP_LINEAR),
+        ocio.FileTransform(path, interpolation=ocio.INTERP_LINEAR),
+        ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_RGB_TO_HSV, direction=ocio.TRANSFORM_DIR_INVERSE),
+    ]
 
 
 def _matrix_unless_identity(matrix: np.ndarray) -> list:
@@ -180,9 +197,6 @@ def _mapped_view_transform(
     the display's own encoding is undone from, so the display space re-encodes it
     exactly; for an HDR display (PQ, HLG, extended range) the file ends in display
     light and the display space encodes it."""
-    from generator.luts import hsv
-    from generator.luts.view import lut_steps
-
     method = VIEW_METHODS[view]
     to_display = reference.normalised_display_matrix(spec, display)
     to_xyz = reference.normalised_display_to_xyz(spec, display)
@@ -380,8 +394,6 @@ class _ViewFile:
 
 
 def _view_file(spec: Spec, display: Display, method: str) -> _ViewFile:
-    from generator.luts.view import bake_view_lut_cached
-
     lut = bake_view_lut_cached(spec, display, method)
     return _ViewFile(lut.filename, lut.data, lut.matrix, lut.light, lut.hsv)
 
