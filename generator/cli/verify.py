@@ -42,7 +42,13 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
     default=None,
     help="Run only the checks whose title contains this text (e.g. HLG); an error if none does.",
 )
-@click.option("--summary", "summary_only", is_flag=True, help="Print the summary, not every row.")
+@click.option(
+    "--summary",
+    "summary_only",
+    is_flag=True,
+    help="Print the summary alone: not every row, nor each departure OCIO's default flags explain "
+    "(--report's files name them).",
+)
 @click.pass_context
 def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
     from generator.verify import report
@@ -62,7 +68,7 @@ def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
         written = report.write_report(result, report_dir, report_figures(result), force)
     if not summary_only:
         say(report.table(result))
-    say(report.summary(result))
+    say(report.summary(result, explained=not summary_only))  # the report names each explained row
     for path in written:
         say(f"wrote {printable(path)}")
     if not result.passed:

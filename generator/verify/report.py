@@ -86,8 +86,9 @@ def _against(o) -> str:
     return f"{_figure(o.worst)} {'>' if o.worst > o.check.tolerance else 'within'} {o.check.tolerance:g}"
 
 
-def summary(verification: Verification) -> str:
-    """Per engine and check type: counts, worst max and p99; then engines, failures, explanations."""
+def summary(verification: Verification, explained: bool = True) -> str:
+    """Per engine and check type: counts, worst max and p99; then engines, failures and (unless
+    ``explained`` is False: ``verify --summary``) one line per departure OCIO's default flags explain."""
     lines = [
         f"{verification.config}: {len(verification.checks)} checks, "
         f"{len(verification.outcomes)} results in {verification.seconds:.1f} s"
@@ -108,7 +109,7 @@ def summary(verification: Verification) -> str:
             f"{g[FAIL]:>5} {_figure(g['max']):>9} {g['p99']:>9.3g} {g['tolerance']:>9.3g}"
         )
     for o in verification.outcomes:
-        if o.verdict in (FAIL, APPROX):
+        if o.verdict == FAIL or (o.verdict == APPROX and explained):
             where = f"; worst input {o.worst_input}" if o.worst_input else ""
             lines.append(
                 f"{o.verdict}: {o.check.kind} {o.check.title} [{o.engine}]: {_against(o)}"
@@ -116,9 +117,11 @@ def summary(verification: Verification) -> str:
             )
     verdict = "passed" if verification.passed else "FAILED"
     nothing = "" if verification.compared else "nothing compared (no engine ran a check), "
+    approx = sum(o.verdict == APPROX for o in verification.outcomes)
     lines.append(
         f"verify {verdict}: {nothing}{len(verification.failures)} failing, "
-        f"{sum(o.verdict == APPROX for o in verification.outcomes)} explained by OCIO's default flags"
+        f"{approx} explained by OCIO's default flags"
+        + (" (each named without --summary, and in --report's files)" if approx and not explained else "")
         + (f", {_not_run(verification)}: {', '.join(verification.missing)}" if verification.missing else "")
     )
     return "\n".join(lines)
@@ -130,6 +133,8 @@ def _not_run(verification: Verification) -> str:
 
 
 def to_json(verification: Verification) -> dict:
+    """The verification as plain data: config, engines, timings, one row per outcome (NaN as null)."""
+
     def number(value):
         return None if not np.isfinite(value) else float(value)
 

@@ -237,3 +237,20 @@ def test_what_verify_cannot_do_is_one_line_before_any_check(config, capsys, argv
     out, err = capsys.readouterr()
     assert exited.value.code == 2 and err.count("\n") == 1 and words in err, err
     assert "verify passed" not in out and "FAILED" not in out
+
+
+def test_verify_summary_leaves_each_explained_row_to_the_report(config, tmp_path):
+    """--summary prints the summary alone: the departures OCIO's default flags explain (dozens on
+    the default config) are counted, and named in the table's run and in the report."""
+    args = ("verify", config, "--engines", "ocio", "--quick", "--only", "-> ADX10")
+    full = run(*args)
+    assert full.exit_code == 0, full.output
+    assert "approx: from reference ACES2065-1 -> ADX10 [ocio default]" in full.output
+    short = run(*args, "--summary", "--report", tmp_path / "report")
+    assert short.exit_code == 0, short.output
+    assert not [line for line in short.output.splitlines() if line.startswith("approx:")]
+    assert "explained by OCIO's default flags (each named without --summary, and in --report's files)" in short.output
+    page = (tmp_path / "report" / "report.html").read_text()
+    assert "approx: from reference ACES2065-1 -&gt; ADX10 [ocio default]" in page
+    results = json.loads((tmp_path / "report" / "summary.json").read_text())["results"]
+    assert any(r["verdict"] == "approx" and "OPTIMIZATION_" in r["note"] for r in results)
