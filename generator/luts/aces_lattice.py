@@ -133,24 +133,13 @@ def ocio_file(lat: AcesLattice) -> bytes:
     Exponent (monCurveMirrorFwd)."""
     import PyOpenColorIO as ocio
 
-    span = lat.span
-    log = ocio.LogAffineTransform(
-        logSideSlope=[1.0 / span] * 3,
-        logSideOffset=[-np.log2(lat.toe) / span] * 3,
-        linSideSlope=[1.0] * 3,
-        linSideOffset=[lat.toe] * 3,
-    )
-    log.setBase(2.0)
-    cube = ocio.Lut3DTransform(gridSize=lat.size)
-    cube.setInterpolation(ocio.INTERP_TETRAHEDRAL)
-    cube.setData(np.ascontiguousarray(lat.cube, dtype=np.float32).ravel())
+    from generator.luts import transforms  # with PyOpenColorIO, when a file is written
+
+    cube = transforms.lut3d(lat.cube)
     # Written as 16-bit integer codes (OCIO keeps six digits, 1.5e-6 of the range, and values
     # beyond it): two thirds of the text of float32 values.
     cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
-    gamma, offset = lat.curve
-    decode = ocio.ExponentWithLinearTransform(
-        gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0], negativeStyle=ocio.NEGATIVE_MIRROR
-    )
+    log, decode = transforms.log_shaper(lat.span, lat.toe), transforms.mon_curve(*lat.curve)
     group = ocio.GroupTransform([log, cube, decode])
     group.getFormatMetadata().setID(f"ocioforge:{file_name(lat.view)[:-4]}")
     group.getFormatMetadata().addChildElement(

@@ -8,12 +8,18 @@
   input domain in ``DOMAIN_MIN`` / ``DOMAIN_MAX``, red fastest.
 * ``spi3d``: Sony Pictures Imageworks 3D (``SPILUT 1.0``, explicit node indices,
   input [0, 1]); the shaper, where there is one, is a separate .spi1d.
-* ``clf``: Academy/ASC Common LUT Format v3 (S-2014-006, 2020 revision), all
-  32-bit float: source decoding, Matrix, pre-shaper (Exponent, or Log for a
-  logarithmic lattice), Range, LUT1D, LUT3D and, after a logarithmic lattice,
-  the LUT1D to code values (or, in a config view ending in display light, the
-  Exponent or Log operator undoing the lattice's curve), in one ProcessList;
-  the 3D array has blue fastest.
+* ``clf``: Academy/ASC Common LUT Format, written by OCIO from the same transforms
+  a config uses (:mod:`generator.luts.transforms`, :mod:`generator.luts.clf`):
+  source decoding, Matrix, pre-shaper (Exponent, or Log for a logarithmic
+  lattice), Range, LUT1D, LUT3D and, after a logarithmic lattice, the LUT1D to
+  code values (or, in a config view ending in display light, the Exponent or Log
+  operator undoing the lattice's curve), in one ProcessList.
+
+The .cube and .spi writers are ours: colour-science's write a TITLE line OCIO's
+Resolve reader refuses, a .cube's domain with the table's fixed decimals (a shaper's
+-0.0078125 becomes -0.00781) and a .spi1d's values with fixed decimals (a curve's toe
+loses float32 digits); its .spi3d writer gives the same numbers, 60 times slower (6.3 s
+for a 65³ table against 0.1 s), with trailing zeros.
 
 Every writer returns text as bytes; the same lattice always gives the same bytes.
 """
@@ -21,20 +27,14 @@ Every writer returns text as bytes; the same lattice always gives the same bytes
 from __future__ import annotations
 
 import numpy as np
+import PyOpenColorIO as ocio
 
-from generator.colorimetry.matrices import settled
-from generator.colorimetry.transfer import Linear, LogCamera, PiecewisePower, Power
-from generator.luts import numbers
+from generator.luts import numbers, transforms
 from generator.luts.axes import LogAxis
-from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice
+from generator.luts.clf import clf_file
+from generator.luts.lattice import SHAPER_DECIMALS, Lattice
 from generator.luts.names import ascii_text
 from generator.luts.spi1d import format_spi1d
-
-#: The XML namespace of CLF v3 (S-2014-006), which its version attribute "3.0" goes with.
-CLF_NAMESPACE = "urn:AMPAS:CLF:v3.0"
-
-#: Interpolation CLF's LUT3D asks for (and what the config's FileTransform uses).
-INTERPOLATION = "tetrahedral"
 
 
 def red_fastest(cube: np.ndarray) -> np.ndarray:
@@ -125,127 +125,66 @@ def needs_spi1d(lattice: Lattice) -> bool:
     return lattice.shaper is not None or tuple(lattice.domain) != (0.0, 1.0)
 
 
-def table_array(rows: np.ndarray, dim: str, decimals: int) -> str:
-    """A CLF Array of ``rows`` (values within (-10, 10)) with fixed ``decimals``."""
-    return f'<Array dim="{dim}">\n' + numbers.table(rows, decimals).decode("ascii") + "</Array>\n"
-
-
-def op(tag: str, body: str, in_depth: str = "32f", out_depth: str = "32f", **attributes) -> str:
-    """A CLF process node, 32-bit float in and out unless told (a half-domain LUT1D reads 16f)."""
-    attrs = "".join(f' {key}="{value}"' for key, value in attributes.items())
-    return f'<{tag} inBitDepth="{in_depth}" outBitDepth="{out_depth}"{attrs}>\n{body}</{tag}>\n'
-
-
-def _exponent(style: str, gamma: float, offset: float | None = None) -> str:
-    extra = f' offset="{_n(offset)}"' if offset is not None else ""
-    return op("Exponent", f'<ExponentParams exponent="{_n(gamma)}"{extra}/>\n', style=style)
-
-
-def _range(lo: float, hi: float) -> str:
-    body = "".join(
-        f"<{tag}>{_n(v)}</{tag}>\n"
-        for tag, v in (("minInValue", lo), ("maxInValue", hi), ("minOutValue", 0.0), ("maxOutValue", 1.0))
-    )
-    return op("Range", body)
-
-
-def _lut1d(values: np.ndarray, decimals: int) -> str:
-    return op("LUT1D", table_array(values[:, None], f"{values.size} 1", decimals))
-
-
-def _log_axis(axis: LogAxis, style: str = "linToLog") -> str:
-    """The Log operator taking normalised display-linear x to the coordinate of ``axis``:
-    ``log2(x + toe) / span - log2(toe) / span`` (``logToLin``: back)."""
-    params = dict(
-        base=2.0,
-        logSideSlope=1.0 / axis.span,
-        logSideOffset=-np.log2(axis.toe) / axis.span,
-        linSideSlope=1.0,
-        linSideOffset=axis.toe,
-    )
-    attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
-    return op("Log", f"<LogParams {attrs}/>\n", style=style)
-
-
-def _pre_shaper(pre, forward: bool = True) -> str:
-    """A :class:`~generator.luts.lattice.PreShaper` as an Exponent operator (its inverse
-    with ``forward`` False)."""
-    direction = "Rev" if forward else "Fwd"
+def _pre_shaper(pre, forward: bool = True) -> ocio.Transform:
+    """A :class:`~generator.luts.lattice.PreShaper`'s curve as an Exponent (CLF's basicMirrorRev,
+    or monCurveMirrorRev with an offset); its inverse with ``forward`` False."""
+    direction = transforms.INVERSE if forward else transforms.FORWARD
     if pre.offset:
-        return _exponent(f"monCurveMirror{direction}", pre.gamma, pre.offset)
-    return _exponent(f"basicMirror{direction}", pre.gamma)
+        return transforms.mon_curve(pre.gamma, pre.offset, direction=direction)
+    return transforms.power(pre.gamma, direction=direction)
 
 
-def _log_camera(curve: LogCamera) -> str:
-    """A LogCamera curve's decoding: CLF's camera style with a break, its plain log style without."""
-    params = dict(
-        base=curve.base,
-        logSideSlope=curve.log_side_slope,
-        logSideOffset=curve.log_side_offset,
-        linSideSlope=curve.lin_side_slope,
-        linSideOffset=curve.lin_side_offset,
-    )
-    if curve.lin_side_break is not None:
-        params["linSideBreak"] = curve.lin_side_break
-    if curve.linear_slope is not None:
-        params["linearSlope"] = curve.linear_slope
-    attrs = " ".join(f'{key}="{_n(value)}"' for key, value in params.items())
-    style = "cameraLogToLin" if curve.lin_side_break is not None else "logToLin"
-    return op("Log", f"<LogParams {attrs}/>\n", style=style)
+def _axis_shaper(axis, forward: bool = True) -> list:
+    """A lattice's curve of normalised display-linear light (``forward``; else back): the Log of a
+    :class:`LogAxis`, or a :class:`~generator.luts.lattice.PreShaper`'s Exponent between the
+    scalings keeping the peak at 1."""
+    if isinstance(axis, LogAxis):
+        return [transforms.log_shaper(axis.span, axis.toe, transforms.FORWARD if forward else transforms.INVERSE)]
+    if axis.scale == 1.0:
+        return [_pre_shaper(axis, forward)]
+    if forward:
+        return [transforms.scale_transform(axis.scale), _pre_shaper(axis), transforms.scale_transform(1.0 / axis.norm)]
+    return [
+        transforms.scale_transform(axis.norm),
+        _pre_shaper(axis, False),
+        transforms.scale_transform(1.0 / axis.scale),
+    ]
 
 
-def decode_ops(name: str, curve) -> str:
-    """CLF operators decoding ``curve``: analytic (Exponent, Log) where CLF has one,
-    else the baked 1D LUT of :mod:`generator.luts.curve1d` behind a Range."""
-    if isinstance(curve, Linear):
-        return ""
-    if isinstance(curve, Power):
-        return _exponent("basicMirrorFwd", curve.exponent)
-    if isinstance(curve, PiecewisePower):
-        return _exponent("monCurveFwd", curve.gamma, curve.offset)
-    if isinstance(curve, LogCamera):
-        return _log_camera(curve)
+def decode_steps(name: str, curve) -> list:
+    """Transforms decoding ``curve``, as the config's (:func:`generator.ocio.curves.decode_transforms`)
+    where OCIO has an exact operator in every version; else the baked curve of
+    :mod:`generator.luts.curve1d`, whose 1D LUT the file holds (CLF has no builtins)."""
+    analytic = transforms.analytic_decode(curve)
+    if analytic is not None:
+        return analytic
     from generator.luts.curve1d import bake_curve
 
     baked = bake_curve(name, curve, curve.domain)
-    ops = _range(*baked.domain)
-    if baked.shaper != 1:
-        ops += _exponent("basicFwd", 1.0 / baked.shaper)
-    values = np.asarray(baked.values)
-    return ops + op("LUT1D", f'<Array dim="{values.size} 1">\n' + "".join(f"{v:.9g}\n" for v in values) + "</Array>\n")
+    return transforms.baked_decode(baked.domain, baked.shaper, transforms.lut1d(baked.values))
 
 
-def _matrix(matrix: np.ndarray) -> str:
-    rows = "".join(" ".join(_n(v) for v in row) + "\n" for row in settled(matrix))
-    return op("Matrix", f'<Array dim="3 3">\n{rows}</Array>\n')
-
-
-def _pre(lattice: Lattice, include_matrix: bool) -> list[str]:
-    """Operators before the Range of a display layout: decoding and Matrix (with
-    ``include_matrix``), then the Log or Exponent pre-shaper."""
-    ops = []
-    if include_matrix:
-        if lattice.decode is not None:
-            ops.append(decode_ops(lattice.source.name, lattice.decode))
-        ops.append(_matrix(lattice.matrix))
-    pre = lattice.pre
-    if isinstance(pre, LogAxis):
-        return [*ops, _log_axis(pre)]
-    if pre.scale == 1.0:
-        return [*ops, _pre_shaper(pre)]
-    return [*ops, _matrix(np.eye(3) * pre.scale), _pre_shaper(pre), _matrix(np.eye(3) / pre.norm)]
-
-
-def _light(lattice: Lattice) -> list[str]:
-    """The exact operator after the lattice of a file ending in display light."""
-    if lattice.light is None:
-        return []
-    if isinstance(lattice.light, LogAxis):
-        return [_log_axis(lattice.light, "logToLin")]
-    light = lattice.light
-    if light.scale == 1.0:
-        return [_pre_shaper(light, forward=False)]
-    return [_matrix(np.eye(3) * light.norm), _pre_shaper(light, forward=False), _matrix(np.eye(3) / light.scale)]
+def clf_steps(lattice: Lattice, include_matrix: bool = True) -> list:
+    """The transforms of a lattice's CLF. Display layout: [decoding, Matrix,] pre-shaper, Range,
+    [LUT1D,] LUT3D, [LUT1D,] [the pre-shaper undone]; without ``include_matrix`` they start at
+    the pre-shaper and take normalised display-linear RGB (the config keeps the matrix as a
+    MatrixTransform). Source layout: Range, [LUT1D,] LUT3D."""
+    steps = []
+    if lattice.pre is not None:
+        if include_matrix:
+            if lattice.decode is not None:
+                steps += decode_steps(lattice.source.name, lattice.decode)
+            steps.append(transforms.matrix_transform(lattice.matrix))
+        steps += _axis_shaper(lattice.pre)
+    steps.append(transforms.range_transform(*lattice.domain))
+    if lattice.shaper is not None:
+        steps.append(transforms.lut1d(lattice.shaper))
+    steps.append(transforms.lut3d(lattice.cube))
+    if lattice.post is not None:
+        steps.append(transforms.lut1d(lattice.post))
+    if lattice.light is not None:
+        steps += _axis_shaper(lattice.light, forward=False)
+    return steps
 
 
 def clf(
@@ -255,41 +194,5 @@ def clf(
     include_matrix: bool = True,
     descriptors: tuple[str, str] = ("", ""),
 ) -> bytes:
-    """A CLF v3 ProcessList of ``lattice``. Display layout: [decoding, Matrix,] pre-shaper,
-    Range, [LUT1D,] LUT3D, [LUT1D]; without ``include_matrix`` the file starts at the
-    pre-shaper and its input is normalised display-linear RGB (the config keeps
-    the matrix as a MatrixTransform). Source layout: Range, [LUT1D,] LUT3D."""
-    ops = _pre(lattice, include_matrix) if lattice.pre is not None else []
-    ops.append(_range(*lattice.domain))
-    if lattice.shaper is not None:
-        ops.append(_lut1d(lattice.shaper, SHAPER_DECIMALS))
-    n = lattice.size
-    ops.append(
-        op(
-            "LUT3D",
-            table_array(blue_fastest(lattice.cube), f"{n} {n} {n} 3", lattice.decimals),
-            interpolation=INTERPOLATION,
-        )
-    )
-    if lattice.post is not None:
-        ops.append(_lut1d(lattice.post, CUBE_DECIMALS))
-    ops += _light(lattice)
-    return clf_document(ops, identifier, description, descriptors)
-
-
-def clf_document(ops: list[str], identifier: str, description: str, descriptors: tuple[str, str] = ("", "")) -> bytes:
-    """A CLF v3 ProcessList of the process nodes ``ops`` (text from :func:`op`)."""
-    head = (
-        f'<?xml version="1.0" encoding="UTF-8"?>\n'
-        f'<ProcessList xmlns="{CLF_NAMESPACE}" compCLFversion="3.0" id="{_xml(identifier)}">\n'
-        f"<Description>{_xml(description)}</Description>\n"
-    )
-    if descriptors[0]:
-        head += f"<InputDescriptor>{_xml(descriptors[0])}</InputDescriptor>\n"
-    if descriptors[1]:
-        head += f"<OutputDescriptor>{_xml(descriptors[1])}</OutputDescriptor>\n"
-    return (head + "".join(ops) + "</ProcessList>\n").encode("utf-8")
-
-
-def _xml(text: str) -> str:
-    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace('"', "&quot;")
+    """The CLF of ``lattice`` (:func:`clf_steps`), written by OCIO (:mod:`generator.luts.clf`)."""
+    return clf_file(clf_steps(lattice, include_matrix), identifier, description, descriptors)

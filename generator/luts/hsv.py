@@ -22,8 +22,11 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
+import PyOpenColorIO as ocio
 
 from generator import reference
+from generator.luts import numbers, transforms
+from generator.luts.clf import clf_file
 from generator.luts.hsv_axes import (
     HSV_SIZE,
     SHARED_SCALE,
@@ -52,8 +55,8 @@ HSV_ENTRIES = 6 * 2048 + 1
 #: Name of the shared file in a config's LUT folder.
 SHARED_FILE = "hsv_coordinates.clf"
 
-#: Significant digits of the 3D table's values: 9 write any float32 back exactly, whatever
-#: its size (values over range reach about 7e12).
+#: Significant digits of the 3D table's and the shared table's values (over range about 7e12):
+#: 9 keep every float32; the file holds float32 of them.
 HSV_DIGITS = 9
 
 #: Decimals of the 1D tables' values (lattice coordinates and hue, within [0, 1]).
@@ -124,44 +127,37 @@ def apply(lat: HsvLattice, values: np.ndarray, weight_bits: int | None = None) -
     return np.stack([kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
 
 
-def _rows(values: np.ndarray, digits: int) -> str:
-    return "".join(" ".join(f"{v:.{digits}g}" for v in row) + "\n" for row in values.tolist())
+def _significant(values: np.ndarray, digits: int) -> np.ndarray:
+    """``values`` rounded to ``digits`` significant digits (as text, which numpy cannot vectorise)."""
+    return np.array([float(f"{v:.{digits}g}") for v in values.ravel().tolist()]).reshape(values.shape)
 
 
 def hsv_clf(lat: HsvLattice, identifier: str, description: str) -> bytes:
-    """The CLF v3 ProcessList of ``lat``: Matrix (hue back from the shared table's ``H / 6``),
-    LUT1D (hue to ``kappa``; the other coordinates pass), LUT3D (trilinear), LUT1D."""
-    from generator.luts.formats import clf_document, op, table_array
-
-    matrix = np.diag([SHARED_SCALE, 1.0, 1.0])
-    n = lat.size
-    ops = [
-        op("Matrix", f'<Array dim="3 3">\n{_rows(matrix, 17)}</Array>\n'),
-        op("LUT1D", table_array(lat.pre, f"{HSV_ENTRIES} 3", HSV_TABLE_DECIMALS)),
-        op(
-            "LUT3D",
-            f'<Array dim="{n} {n} {n} 3">\n{_rows(lat.cube.reshape(-1, 3), HSV_DIGITS)}</Array>\n',
-            interpolation="trilinear",
-        ),
-        op("LUT1D", table_array(lat.post, f"{HSV_ENTRIES} 3", HSV_TABLE_DECIMALS)),
+    """The CLF of ``lat``, written by OCIO (:mod:`generator.luts.clf`): Matrix (hue back from the
+    shared table's ``H / 6``), LUT1D (hue to ``kappa``; the other coordinates pass), LUT3D
+    (trilinear), LUT1D."""
+    steps = [
+        transforms.matrix_transform(np.diag([SHARED_SCALE, 1.0, 1.0])),
+        transforms.lut1d(numbers.rounded(lat.pre, HSV_TABLE_DECIMALS)),
+        transforms.lut3d(_significant(lat.cube, HSV_DIGITS), ocio.INTERP_LINEAR),
+        transforms.lut1d(numbers.rounded(lat.post, HSV_TABLE_DECIMALS)),
     ]
-    return clf_document(ops, identifier, description)
+    return clf_file(steps, identifier, description)
+
+
+def shared_steps() -> list:
+    """The shared file's transforms: a Matrix taking OCIO's ``(H, S, V)`` to ``(H, 2 - S, V)``,
+    then one half-domain LUT1D (:func:`shared_table`)."""
+    matrix = transforms.matrix_transform(np.diag([1.0, -1.0, 1.0]), offset=[0.0, 2.0, 0.0])
+    matrix.setFileOutputBitDepth(ocio.BIT_DEPTH_F16)  # the LUT1D after it reads half floats
+    return [matrix, transforms.lut1d(_significant(shared_table(), HSV_DIGITS), half_domain=True)]
 
 
 @lru_cache(maxsize=1)
 def shared_clf() -> bytes:
-    """The shared CLF: a Matrix taking OCIO's ``(H, S, V)`` to ``(H, 2 - S, V)``, then one
-    half-domain LUT1D (:func:`shared_table`)."""
-    from generator.luts.formats import clf_document, op
-
-    matrix = "1 0 0 0\n0 -1 0 2\n0 0 1 0\n"
-    body = "".join(f"{h:.9g} {s:.9g} {v:.9g}\n" for h, s, v in shared_table().tolist())
-    nodes = [
-        op("Matrix", f'<Array dim="3 4 3">\n{matrix}</Array>\n', out_depth="16f"),
-        op("LUT1D", f'<Array dim="65536 3">\n{body}</Array>\n', in_depth="16f", halfDomain="true"),
-    ]
-    return clf_document(
-        nodes,
+    """The shared CLF of :func:`shared_steps`, written by OCIO."""
+    return clf_file(
+        shared_steps(),
         "ocioforge:hsv_coordinates",
         "ocioforge: OCIO HSV (H, S, V) to the desaturate views' lattice coordinates (H / 6, "
         "saturation's u = 1 / (2 - S) above S = 1, value's), shared by every display.",

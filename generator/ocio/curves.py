@@ -10,13 +10,13 @@ import PyOpenColorIO as ocio
 
 from generator.colorimetry import transfer
 from generator.colorimetry.curves import CURVES
+from generator.luts import transforms
 from generator.luts.curve1d import BakedCurve, bake_curve
 from generator.luts.names import add_file, file_stems, slug
 from generator.ocio.capabilities import clamped_code_domain, curve_chain
 from generator.spec.schema import Spec
 
-INVERSE = ocio.TRANSFORM_DIR_INVERSE
-FORWARD = ocio.TRANSFORM_DIR_FORWARD
+INVERSE, FORWARD = transforms.INVERSE, transforms.FORWARD
 
 
 def _is_custom(curve_name: str) -> bool:
@@ -39,43 +39,13 @@ def curve_label(spec: Spec, owner: str, curve_name: str) -> str:
     return file_stems([*baked, owner], taken=(slug(n) for n in CURVES))[owner]
 
 
-def _log(curve: transfer.LogCamera) -> ocio.Transform:
-    """LogCameraTransform, or LogAffineTransform without a break. The base is set apart:
-    LogAffineTransform's constructor has no ``base`` argument in any OCIO 2.x Python."""
-    args = dict(
-        logSideSlope=[curve.log_side_slope] * 3,
-        logSideOffset=[curve.log_side_offset] * 3,
-        linSideSlope=[curve.lin_side_slope] * 3,
-        linSideOffset=[curve.lin_side_offset] * 3,
-        direction=INVERSE,
-    )
-    if curve.lin_side_break is None:
-        t = ocio.LogAffineTransform(**args)
-    else:
-        t = ocio.LogCameraTransform(linSideBreak=[curve.lin_side_break] * 3, **args)
-        if curve.linear_slope is not None:
-            t.setLinearSlopeValue([curve.linear_slope] * 3)
-    t.setBase(curve.base)
-    return t
-
-
 def _baked(name: str, curve, bakes: dict[str, BakedCurve]) -> list:
-    """Normalise the code to [0, 1] over the domain, apply the shaper, look up the LUT."""
+    """The baked curve's decoding (:func:`~generator.luts.transforms.baked_decode`), its LUT the
+    .spi1d file recorded in ``bakes``."""
     baked = bake_curve(name, curve, curve.domain)
     add_file(bakes, baked.filename, baked)
-    lo, hi = baked.domain
-    steps = []
-    if (lo, hi) != (0.0, 1.0):
-        scale = 1.0 / (hi - lo)
-        steps.append(
-            ocio.MatrixTransform(
-                matrix=[scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, scale, 0, 0, 0, 0, 1], offset=[-lo * scale] * 3 + [0.0]
-            )
-        )
-    if baked.shaper != 1:
-        steps.append(ocio.ExponentTransform(value=[1.0 / baked.shaper] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_CLAMP))
-    steps.append(ocio.FileTransform(src=baked.filename, interpolation=ocio.INTERP_LINEAR, direction=FORWARD))
-    return steps
+    table = ocio.FileTransform(src=baked.filename, interpolation=ocio.INTERP_LINEAR, direction=FORWARD)
+    return transforms.baked_decode(baked.domain, baked.shaper, table)
 
 
 def is_baked(name: str, curve, version: tuple[int, int]) -> bool:
@@ -86,20 +56,11 @@ def is_baked(name: str, curve, version: tuple[int, int]) -> bool:
 
 
 def decode_transforms(name: str, curve, version: tuple[int, int], bakes: dict[str, BakedCurve]) -> list:
-    """OCIO transforms taking code values of ``curve`` to linear."""
-    if isinstance(curve, transfer.Linear):
-        return []
-    if isinstance(curve, transfer.Power):
-        return [ocio.ExponentTransform(value=[curve.exponent] * 3 + [1.0], negativeStyle=ocio.NEGATIVE_MIRROR)]
-    if isinstance(curve, transfer.PiecewisePower):
-        style = ocio.NEGATIVE_MIRROR if curve.mirror else ocio.NEGATIVE_LINEAR
-        return [
-            ocio.ExponentWithLinearTransform(
-                gamma=[curve.gamma] * 3 + [1.0], offset=[curve.offset] * 3 + [0.0], negativeStyle=style
-            )
-        ]
-    if isinstance(curve, transfer.LogCamera):
-        return [_log(curve)]
+    """OCIO transforms taking code values of ``curve`` to linear: exact operators
+    (:func:`~generator.luts.transforms.analytic_decode`), else a baked LUT or OCIO's builtins."""
+    analytic = transforms.analytic_decode(curve)
+    if analytic is not None:
+        return analytic
     if is_baked(name, curve, version):
         return _baked(name, curve, bakes)
     return [
@@ -114,14 +75,13 @@ def code_clamp(curve_name: str, version: tuple[int, int]) -> list:
     domain = clamped_code_domain(curve_name, version)
     if domain is None:
         return []
-    lo, hi = domain
-    return [ocio.RangeTransform(minInValue=lo, maxInValue=hi, minOutValue=lo, maxOutValue=hi)]
+    return [transforms.range_transform(*domain, out=domain)]
 
 
-def group(transforms: list, direction=FORWARD) -> ocio.Transform | None:
+def group(steps: list, direction=FORWARD) -> ocio.Transform | None:
     """One transform for a list: None when empty, the transform itself when single, else a group."""
-    if not transforms:
+    if not steps:
         return None
-    if len(transforms) == 1 and direction == FORWARD:
-        return transforms[0]
-    return ocio.GroupTransform(transforms, direction=direction)
+    if len(steps) == 1 and direction == FORWARD:
+        return steps[0]
+    return ocio.GroupTransform(steps, direction=direction)

@@ -12,11 +12,11 @@ import numpy as np
 import PyOpenColorIO as ocio
 
 from generator import reference
-from generator.colorimetry.matrices import settled
 from generator.luts import aces_lattice, hsv
 from generator.luts.curve1d import BakedCurve
 from generator.luts.names import add_file
 from generator.luts.pool import Pool
+from generator.luts.transforms import matrix_transform
 from generator.luts.view import bake_view_lut_cached
 from generator.ocio import curves
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
@@ -56,12 +56,6 @@ class Emitted:
     config: ocio.Config
     luts: dict[str, BakedCurve]
     view_luts: dict[str, bytes]
-
-
-def matrix_transform(matrix: np.ndarray, direction=ocio.TRANSFORM_DIR_FORWARD) -> ocio.MatrixTransform:
-    m44 = np.eye(4)
-    m44[:3, :3] = settled(matrix)
-    return ocio.MatrixTransform(matrix=[float(v) for v in m44.ravel()], direction=direction)
 
 
 def lut_steps(matrix, path: str, hsv_folder: str | None = None) -> list:
