@@ -96,8 +96,15 @@ def adaptation_matrix(source_white, target_white, cat: str = "Bradford") -> np.n
         raise ValueError(f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}")
     if CATS[cat] is None or np.allclose(source_white, target_white, rtol=0, atol=1e-12):
         return np.eye(3)
+    return von_kries(xy_to_XYZ(source_white), xy_to_XYZ(target_white), cat)
+
+
+def von_kries(source_xyz, target_xyz, cat: str) -> np.ndarray:
+    """XYZ -> XYZ von Kries adaptation in the cone space of ``cat`` (a key of
+    :data:`CONE_MATRICES`) from white ``source_xyz`` to ``target_xyz`` (tristimulus values,
+    whose scale is kept: the package's one chromatic adaptation)."""
     cones = np.array(CONE_MATRICES[cat], dtype=np.float64)
-    gain = (cones @ xy_to_XYZ(target_white)) / (cones @ xy_to_XYZ(source_white))
+    gain = (cones @ np.asarray(target_xyz, dtype=np.float64)) / (cones @ np.asarray(source_xyz, dtype=np.float64))
     return (np.linalg.inv(cones) * gain[np.newaxis, :]) @ cones
 
 

@@ -95,6 +95,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from generator.colorimetry.matrices import von_kries
 from generator.gamut.display import DisplayGamut, matrix_tuple, sanitize
 
 #: Bisection steps for a boundary chroma; the bracket shrinks to 2^-40 of its width.
@@ -193,10 +194,7 @@ class PerceptualParams:
 
 def adapted_matrix(display: DisplayGamut) -> np.ndarray:
     """Display RGB to Oklab-white-adapted XYZ, shape (3, 3) (CAT02 von Kries)."""
-    cat = _colour().adaptation.matrix_chromatic_adaptation_VonKries(
-        display.white_xyz, _oklab_white_xyz(), transform="CAT02"
-    )
-    return cat @ display.matrix
+    return von_kries(display.white_xyz, _oklab_white_xyz(), "CAT02") @ display.matrix
 
 
 def display_to_oklab(rgb: np.ndarray, display: DisplayGamut) -> np.ndarray:

@@ -154,3 +154,15 @@ def test_written_matrices_hold_no_float_residue(build_config):
     assert entries.size > 100
     residue = entries[(entries != 0.0) & (np.abs(entries) < 1e-12)]
     assert residue.size == 0, residue
+
+
+def test_von_kries_of_tristimulus_whites_is_colour_sciences():
+    """The one adaptation path takes whites as tristimulus values too (the perceptual mapping's
+    display white to Oklab's, whose Y is not 1), bit for bit as colour-science's."""
+    from colour.adaptation import matrix_chromatic_adaptation_VonKries
+
+    from generator.colorimetry.matrices import von_kries
+
+    source, target = np.array([0.9505, 1.0, 1.089]), np.array([0.95047, 0.99999, 1.08883])
+    theirs = matrix_chromatic_adaptation_VonKries(source, target, transform="CAT02")
+    assert np.array_equal(von_kries(source, target, "CAT02"), theirs)
