@@ -3,7 +3,8 @@
 Format: ``Version 1``, ``From lo hi`` (the input domain, sampled uniformly),
 ``Length N``, ``Components 1``, then ``{`` N values ``}``. Values are written
 with 9 significant digits (float32 round-trips exactly), so the same samples
-always give the same bytes.
+always give the same bytes. Ours, not colour-science's, whose fixed decimals drop a
+curve toe's float32 digits.
 """
 
 from __future__ import annotations
