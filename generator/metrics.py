@@ -8,7 +8,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from generator import tolerances
+from generator import reference, tolerances
+from generator.colorimetry.gamuts import gamuts
+from generator.colorimetry.matrices import rgb_to_rgb
 
 
 def relative_error(actual, expected) -> np.ndarray:
@@ -34,10 +36,6 @@ def delta_e_itp(display, code_a, code_b) -> np.ndarray:
     linear RGB through CIE XYZ, then to ICtCp (ITU-R BT.2100, PQ).
     """
     import colour
-
-    from generator import reference
-    from generator.colorimetry.gamuts import gamuts
-    from generator.colorimetry.matrices import rgb_to_rgb
 
     to_2020 = rgb_to_rgb(display.gamut, gamuts()["Rec.2020"], "none")
     ictcp = [

@@ -16,8 +16,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from generator.colorimetry.gamuts import D65
+from generator.colorimetry.adx import aces_to_adx, adx_to_aces
+from generator.colorimetry.gamuts import D65, gamuts
 from generator.colorimetry.matrices import Gamut, adaptation_matrix, apply_matrix, rgb_to_rgb, rgb_to_xyz_adapted
+from generator.gamut import METHODS, DisplayGamut, PerceptualParams
+from generator.rendering import views
 from generator.spec.schema import ColourSpace, Display, Spec
 
 
@@ -44,8 +47,6 @@ def space_matrix(spec: Spec, space: ColourSpace) -> np.ndarray:
 
 
 def adx_reference_matrix(spec: Spec) -> np.ndarray:
-    from generator.colorimetry.gamuts import gamuts
-
     return rgb_to_rgb(gamuts()["AP0"], spec.reference.gamut, spec.chromatic_adaptation)
 
 
@@ -55,8 +56,6 @@ def to_reference(spec: Spec, space: ColourSpace, rgb) -> np.ndarray:
     if space.is_data:
         return rgb.copy()
     if space.special:
-        from generator.colorimetry.adx import adx_to_aces
-
         return apply_matrix(adx_reference_matrix(spec), adx_to_aces(rgb, int(space.special[3:])))
     return apply_matrix(space_matrix(spec, space), space.curve.decode(rgb))
 
@@ -67,8 +66,6 @@ def from_reference(spec: Spec, space: ColourSpace, ref) -> np.ndarray:
     if space.is_data:
         return ref.copy()
     if space.special:
-        from generator.colorimetry.adx import aces_to_adx
-
         return aces_to_adx(apply_matrix(np.linalg.inv(adx_reference_matrix(spec)), ref), int(space.special[3:]))
     return space.curve.encode(apply_matrix(np.linalg.inv(space_matrix(spec, space)), ref))
 
@@ -120,8 +117,6 @@ def colorimetric_view(spec: Spec, display: Display, ref) -> np.ndarray:
 def display_gamut(display: Display):
     """The :class:`~generator.gamut.DisplayGamut` of ``display``: its linear RGB to XYZ
     matrix (SMPTE RP 177) and white, as the gamut-mapping methods need them."""
-    from generator.gamut import DisplayGamut
-
     return DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
 
 
@@ -169,8 +164,6 @@ def gamut_map(display: Display, method: str, linear, params=None) -> np.ndarray:
     """Display-linear RGB (1.0 = 100 cd/m², any values) gamut mapped into the display's
     cube, normalised: shape (..., 3), within [0, 1] (1 = the display's peak). The
     methods of :data:`generator.gamut.METHODS` act on ``linear / display.clip_high``."""
-    from generator.gamut import METHODS
-
     gamut = None if method in ("clip", "scale") else display_gamut(display)
     return METHODS[method](np.asarray(linear, dtype=np.float64) / display.clip_high, gamut, params)
 
@@ -188,8 +181,6 @@ def method_params(
     if method == "rgc":
         return spec.rgc
     if method == "perceptual" and source is not None and display is not None:
-        from generator.gamut import PerceptualParams
-
         return PerceptualParams(source_to_display=source_gamut_matrix(spec, source, display))
     return None
 
@@ -218,15 +209,11 @@ def mapped_view(spec: Spec, display: Display, method: str, ref, params=None) -> 
 
 def aces_view_of(display: Display, view: str):
     """The :class:`~generator.rendering.views.ACESView` called ``view`` on ``display``, or None."""
-    from generator.rendering import views
-
     return views.resolve(view, display.name, display.peak, display.gamut.primaries, display.gamut.whitepoint)
 
 
 def to_aces_matrix(spec: Spec) -> np.ndarray:
     """Scene-reference linear RGB to ACES2065-1, the ACES output transforms' input."""
-    from generator.colorimetry.gamuts import gamuts
-
     return np.linalg.inv(gamut_matrix(spec, gamuts()["AP0"]))
 
 
@@ -239,7 +226,5 @@ def display_xyz_encode(spec: Spec, display: Display, xyz) -> np.ndarray:
 def aces_view(spec: Spec, display: Display, view: str, ref) -> np.ndarray:
     """Scene-reference linear RGB through the ACES view ``view`` of ``display``: to
     ACES2065-1, the output transform (float64) to CIE XYZ, the display's encoding."""
-    from generator.rendering import views
-
     xyz = views.evaluate(aces_view_of(display, view), apply_matrix(to_aces_matrix(spec), ref))
     return display_xyz_encode(spec, display, xyz)

@@ -7,6 +7,10 @@ import time
 import click
 
 from generator.cli import NAME, Command, GivenPath, printable, say
+from generator.files import check_file_output, target
+from generator.luts import bake
+from generator.spec import load
+from generator.spec.schema import SpecError
 
 
 @click.command(
@@ -64,11 +68,6 @@ from generator.cli import NAME, Command, GivenPath, printable, say
 )
 @click.option("--force", is_flag=True, help="Replace existing files (through a link, the file it points to).")
 def command(source, display, method, view, size, fmt, shaper, spec_path, output, force):
-    from generator.files import check_file_output, target
-    from generator.luts import bake
-    from generator.spec import load
-    from generator.spec.schema import SpecError
-
     started = time.perf_counter()
     if view is not None and method is not None:
         raise SpecError(

@@ -8,6 +8,8 @@ from pathlib import Path
 import click
 
 from generator.cli import NAME, Command, GivenPath, printable, say
+from generator.ocio.write import build, for_folder, target
+from generator.spec import labels, load
 
 
 def counted(number: int, noun: str) -> str:
@@ -21,9 +23,6 @@ def counted(number: int, noun: str) -> str:
 @click.option("--ocio-version", type=NAME, help="Config version to write, e.g. 2.1 (overrides the spec).")
 @click.option("--force", is_flag=True, help="Replace the output folder if it holds a previous build.")
 def command(spec, output, ocio_version, force):
-    from generator.ocio.write import build, for_folder, target
-    from generator.spec import labels, load
-
     started = time.perf_counter()
     parsed = load.load(spec)
     version = load.parse_version(ocio_version, "--ocio-version") if ocio_version else None

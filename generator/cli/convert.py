@@ -9,6 +9,9 @@ import time
 import click
 
 from generator.cli import NAME, Command, ConfigPath, GivenPath, printable, say
+from generator.convert import run as runner
+from generator.convert.plan import plan_run
+from generator.spec.schema import SpecError
 
 FORMAT_NAMES = ("exr", "tiff", "png", "jpeg", "dpx")
 
@@ -93,10 +96,6 @@ def command(
     fail_fast,
     memory,
 ):
-    from generator.convert import run as runner
-    from generator.convert.plan import plan_run
-    from generator.spec.schema import SpecError
-
     started = time.perf_counter()
     plan, sources = plan_run(
         inputs,

@@ -3,17 +3,20 @@
 from __future__ import annotations
 
 import click
+import numpy as np
 
+from generator import reference
 from generator.cli import NAME, Command, GivenPath, say
+from generator.colorimetry import transfer
+from generator.colorimetry.gamuts import D65, STUDIO_CONFIG_ADAPTATION
+from generator.ocio.curves import is_baked
+from generator.spec.allowed import newest_ocio_version
+from generator.spec.load import load, named_display, named_space
+from generator.spec.namespace import DISPLAY_REFERENCE
 
 
 def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
     """What ``info`` prints; ``target``, the OCIO version a given spec builds, is marked."""
-    import numpy as np
-
-    from generator import reference
-    from generator.spec.allowed import newest_ocio_version
-
     out = [
         f"name:      {space.name}",
         f"aliases:   {', '.join(space.aliases) or '-'}",
@@ -43,12 +46,6 @@ def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
 def _display_lines(display, spec) -> list[str]:
     """What ``info`` prints for a display: its gamut, EOTF, peak and views, and its linear RGB
     (1.0 = 100 cd/m²) to the display reference and from the scene reference, as the config converts."""
-    import numpy as np
-
-    from generator import reference
-    from generator.colorimetry.gamuts import D65
-    from generator.spec.namespace import DISPLAY_REFERENCE
-
     g = display.gamut
     same = np.allclose(g.white, D65, rtol=0, atol=1e-12)
     absolute = "  (absolute: code 1 emits the peak)" if display.absolute else ""
@@ -75,11 +72,6 @@ def _display_lines(display, spec) -> list[str]:
 
 def _adaptation(spec, gamut) -> str:
     """How ``gamut`` adapts to the spec's scene reference, and on whose authority."""
-    import numpy as np
-
-    from generator import reference
-    from generator.colorimetry.gamuts import STUDIO_CONFIG_ADAPTATION
-
     if np.allclose(gamut.white, spec.reference.gamut.white, rtol=0, atol=1e-12):
         return "the same white: no adaptation"
     cat = reference.adaptation_for(spec, gamut)
@@ -89,9 +81,6 @@ def _adaptation(spec, gamut) -> str:
 
 
 def _expression(space, version) -> str:
-    from generator.colorimetry import transfer
-    from generator.ocio.curves import is_baked
-
     if space.is_data:
         return "data (no transform)"
     if space.special:
@@ -118,8 +107,6 @@ def _expression(space, version) -> str:
     "adaptation (default: the library's spaces, the default spec's displays).",
 )
 def command(name, spec_path):
-    from generator.spec.load import load, named_display, named_space
-
     spec = load(spec_path)
     display = named_display(spec, name)
     if display is not None:

@@ -7,27 +7,26 @@ import sys
 import click
 
 from generator.cli import Command, GivenPath, say
+from generator.colorimetry import library
+from generator.colorimetry.curves import CURVES
+from generator.rendering.views import catalogue
+from generator.spec.load import load
+from generator.spec.schema import SpecError
 
 
 def _rows(what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]:
     """The header and rows of the listing of ``what``."""
-    from generator.colorimetry import library
-
     if what == "displays":
         return (
             ("display", "gamut", "EOTF", "peak cd/m²", "aliases"),
             [(d.name, d.gamut, d.eotf, f"{d.peak:g}", ", ".join(d.aliases)) for d in library.DISPLAYS],
         )
     if what == "views":
-        from generator.rendering.views import catalogue
-
         return (
             ("ACES view", "ACES", "peak cd/m²", "OCIO builtin"),
             [(v.name, v.version, f"{v.peak:g}", v.style.rsplit(" - ", 1)[-1]) for v in catalogue().values()],
         )
     if what == "curves":
-        from generator.colorimetry.curves import CURVES
-
         return ("curve", "family"), [(name, type(curve).__name__) for name, curve in CURVES.items()]
     return (
         ("colour space", "family", "gamut", "curve", "aliases"),
@@ -75,8 +74,6 @@ def _spec_rows(spec, what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]
     "with their views, or (--views) each display's views.",
 )
 def command(displays, curves, views, spaces, spec_path):
-    from generator.spec.schema import SpecError
-
     given = (("spaces", spaces), ("displays", displays), ("curves", curves), ("views", views))
     chosen = [name for name, flag in given if flag]
     if len(chosen) > 1:
@@ -94,8 +91,6 @@ def command(displays, curves, views, spaces, spec_path):
             "lists the library's curves, not a spec's; allowed with --spec: --spaces, --displays, --views",
         )
     else:
-        from generator.spec.load import load
-
         header, rows = _spec_rows(load(spec_path), chosen[0] if chosen else "spaces")
     if not sys.stdout.isatty():  # piped (grep, a script): never wrapped
         for row in (header, *rows):

@@ -8,7 +8,18 @@ from dataclasses import dataclass
 import click
 import numpy as np
 
+from generator import reference
 from generator.cli import NAME, Command, GivenPath, say
+from generator.colorimetry import library
+from generator.colorimetry.gamuts import gamuts
+from generator.colorimetry.matrices import CATS, rgb_to_rgb, settled
+from generator.luts.names import slug
+from generator.ocio.emit import matrix_transform
+from generator.reference import adaptation_between
+from generator.spec import load
+from generator.spec.load import DEFAULT_ADAPTATION
+from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES
+from generator.spec.schema import SpecError
 
 FORMATS = ("plain", "json", "nuke", "ocio")
 
@@ -16,8 +27,6 @@ FORMATS = ("plain", "json", "nuke", "ocio")
 def _ocio_snippet(matrix) -> str:
     """The matrix as an OCIO config line, serialised by OCIO itself."""
     import PyOpenColorIO as ocio
-
-    from generator.ocio.emit import matrix_transform
 
     cfg = ocio.Config()
     cs = ocio.ColorSpace(name="matrix")
@@ -32,8 +41,6 @@ def _ocio_snippet(matrix) -> str:
 
 def _node_name(space) -> str:
     """The space's (or display's) first alias usable as a node name (letters, digits, underscores)."""
-    from generator.luts.names import slug
-
     return next((a for a in space.aliases if a.replace("_", "").isalnum()), slug(space.name))
 
 
@@ -50,9 +57,6 @@ class Endpoint:
 
 def _is_display(name: str) -> bool:
     """Whether ``name`` is a library display's or the display reference's name or alias."""
-    from generator.colorimetry import library
-    from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES
-
     names = [n for d in library.DISPLAYS for n in (d.name, *d.aliases)] + [DISPLAY_REFERENCE]
     return name.lower() in {n.lower() for n in (*names, *DISPLAY_REFERENCE_ALIASES)}
 
@@ -60,11 +64,6 @@ def _is_display(name: str) -> bool:
 def endpoint(spec, name: str, which: str) -> Endpoint:
     """SRC or DST by name or alias: a display of ``spec``, the display reference (CIE XYZ-D65),
     or a colour space (the library's when ``spec`` is None)."""
-    from generator.colorimetry.gamuts import gamuts
-    from generator.spec import load
-    from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES
-    from generator.spec.schema import SpecError
-
     if spec is not None:
         display = load.named_display(spec, name)
         if display is not None:
@@ -79,8 +78,6 @@ def endpoint(spec, name: str, which: str) -> Endpoint:
 
 def to_reference(spec, end: Endpoint) -> np.ndarray:
     """``end``'s linear RGB (a display's: 1.0 = 100 cd/m²) to ``spec``'s scene reference, as its config converts."""
-    from generator import reference
-
     if end.kind == "display":
         return np.linalg.inv(reference.scene_to_display_matrix(spec, end.record))
     if end.kind == "reference":
@@ -91,19 +88,12 @@ def to_reference(spec, end: Endpoint) -> np.ndarray:
 def published_matrix(source, target):
     """``source`` to ``target`` linear RGB as a config of the default spec converts: each to
     ACES2065-1 with the adaptation behind its published matrices, else the default one."""
-    from generator.colorimetry.gamuts import gamuts
-    from generator.colorimetry.matrices import rgb_to_rgb
-    from generator.reference import adaptation_between
-    from generator.spec.load import DEFAULT_ADAPTATION
-
     aces = gamuts()["AP0"]
     to_aces = [rgb_to_rgb(g, aces, adaptation_between(g, aces, DEFAULT_ADAPTATION)) for g in (source, target)]
     return np.linalg.solve(to_aces[1], to_aces[0])
 
 
 def render(matrix, fmt: str, label: str) -> str:
-    from generator.colorimetry.matrices import settled
-
     matrix = settled(matrix)
     rows = [[float(v) for v in row] for row in matrix]
     if fmt == "json":
@@ -137,9 +127,6 @@ def render(matrix, fmt: str, label: str) -> str:
     "does (default: the library's spaces).",
 )
 def command(src, dst, cat, fmt, spec_path):
-    from generator.colorimetry.matrices import CATS, rgb_to_rgb
-    from generator.spec.schema import SpecError
-
     if cat is not None:
         chosen = next((c for c in CATS if c.lower() == cat.lower()), None)
         if chosen is None:
@@ -147,7 +134,6 @@ def command(src, dst, cat, fmt, spec_path):
                 "ocioforge matrix", "--cat", f"unknown chromatic adaptation {cat!r}; allowed: {', '.join(CATS)}"
             )
         cat = chosen
-    from generator.spec import load
 
     spec = None if spec_path is None else load.load(spec_path)
     if spec is None and (_is_display(src) or _is_display(dst)):  # the library's displays: the default spec's

@@ -7,6 +7,10 @@ from pathlib import Path
 import click
 
 from generator.cli import NAME, Command, ConfigPath, GivenPath, printable, say
+from generator.files import check_file_output, target, write_atomic
+from generator.spec.schema import SpecError
+from generator.verify.figures import chromaticity, png
+from generator.verify.run import load
 
 FORMATS = ("png", "svg", "pdf")
 
@@ -30,11 +34,6 @@ FORMATS = ("png", "svg", "pdf")
 )
 @click.option("--force", is_flag=True, help="Replace an existing image (through a link, the file it points to).")
 def command(config, output, mapping, display_name, force):
-    from generator.files import check_file_output, target, write_atomic
-    from generator.spec.schema import SpecError
-    from generator.verify.figures import chromaticity, png
-    from generator.verify.run import load
-
     if display_name is not None and not mapping:
         raise SpecError("ocioforge plot", "--display", "chooses the display --mapping draws; allowed: with --mapping")
     check_file_output(output)
@@ -50,8 +49,6 @@ def command(config, output, mapping, display_name, force):
 
 def _display(spec, name: str | None):
     """The display called ``name`` or one of its aliases (case-insensitive), the first without one."""
-    from generator.spec.schema import SpecError
-
     if name is None:
         return spec.displays[0]
     for display in spec.displays:

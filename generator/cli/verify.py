@@ -2,12 +2,20 @@
 
 from __future__ import annotations
 
+import errno
+import os
 import sys
+import tempfile
 from pathlib import Path
 
 import click
 
 from generator.cli import NAME, Command, ConfigPath, GivenPath, fail, printable, say
+from generator.files import CannotWrite, target
+from generator.verify import report
+from generator.verify.figures import report_figures
+from generator.verify.report import report_paths
+from generator.verify.run import verify
 
 ENGINES = "ocio,oiiotool,ocioconvert,blender"
 
@@ -51,9 +59,6 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
 )
 @click.pass_context
 def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
-    from generator.verify import report
-    from generator.verify.run import verify
-
     if report_dir:
         _check_report_folder(Path(report_dir), force)
     names = tuple(dict.fromkeys(e.strip().lower() for e in engines.split(",") if e.strip()))  # each engine once
@@ -63,8 +68,6 @@ def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
     result = verify(config, names, density="quick" if quick else "full", only=only or "", strict=named)
     written = []
     if report_dir:  # first: a verdict printed to a full device is lost, the report's is not
-        from generator.verify.figures import report_figures
-
         written = report.write_report(result, report_dir, report_figures(result), force)
     if not summary_only:
         say(report.table(result))
@@ -79,13 +82,6 @@ def _check_report_folder(folder: Path, force: bool) -> None:
     """The report's folder can be written, checked before the run (it used to fail after it):
     a folder or a new path whose nearest existing parent is a writable folder, its report files
     absent or (with ``force``) regular files."""
-    import errno
-    import os
-    import tempfile
-
-    from generator.files import CannotWrite, target
-    from generator.verify.report import report_paths
-
     existing = next(p for p in (folder, *folder.parents) if p.exists())
     for code, broken in (
         (errno.ENOTDIR, not existing.is_dir()),

@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterator, Mapping
 from functools import cache
 
 from generator.colorimetry.matrices import Gamut
+from generator.colorimetry.vendor import VENDOR_GAMUTS
 
 D65 = (0.3127, 0.3290)
 E = (1.0 / 3.0, 1.0 / 3.0)
@@ -157,7 +158,7 @@ def _xyz() -> dict[str, Gamut]:
 
 
 def _cie_rgb() -> Gamut:
-    from generator.colorimetry.spectral import cie_rgb_primaries
+    from generator.colorimetry.spectral import cie_rgb_primaries  # lazy: colour-science takes seconds
 
     return Gamut(
         "CIE RGB",
@@ -168,8 +169,6 @@ def _cie_rgb() -> Gamut:
 
 
 def _vendor() -> dict[str, Gamut]:
-    from generator.colorimetry.vendor import VENDOR_GAMUTS
-
     return {
         name: Gamut(name, _rounded(g.primaries), tuple(g.whitepoint), citation=g.citation)
         for name, g in VENDOR_GAMUTS.items()

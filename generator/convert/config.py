@@ -14,7 +14,11 @@ import hashlib
 import os
 from pathlib import Path
 
+from generator.files import Refused, not_readable
+from generator.ocio.write import build, for_folder
+from generator.spec.load import load as load_spec
 from generator.spec.schema import SpecError
+from generator.verify.run import load as load_built
 
 #: The default config's folder name inside the cache (the embedded spec's name).
 DEFAULT_NAME = "ocioforge-studio"
@@ -37,16 +41,12 @@ def _sources_digest() -> str:
 
 def default_config(announce=lambda text: None) -> Path:
     """The default spec's config, built into the cache the first time (``announce`` told)."""
-    from generator.files import Refused
-    from generator.ocio.write import build, for_folder
-    from generator.spec import load
-
     folder = cache_folder() / f"default-{_sources_digest()}" / DEFAULT_NAME
     config = folder / "config.ocio"
     if not config.is_file():
         announce(f"building the default config into {folder} (once)")
         try:
-            build(for_folder(load.load(), folder), folder)
+            build(for_folder(load_spec(), folder), folder)
         except Refused:  # another run built it first
             if not config.is_file():
                 raise
@@ -67,12 +67,8 @@ def load(path: str, verify: bool):
     import PyOpenColorIO as ocio
 
     if verify:
-        from generator.verify.run import load as load_built
-
         load_built(path)  # raises SpecError naming what is missing or different
     elif not path.startswith("ocio://"):
-        from generator.files import not_readable
-
         why = not_readable(path)
         if why is not None:
             raise SpecError(

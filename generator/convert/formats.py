@@ -8,6 +8,7 @@ truncates: up to a whole code off).
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 
 import numpy as np
@@ -68,8 +69,6 @@ _OIIO_DEPTH = {"half": "half", "float": "float", "uint8": "uint8", "uint16": "ui
 
 def format_of(path: str) -> str | None:
     """The format a file's suffix names, or None."""
-    import os
-
     return SUFFIXES.get(os.path.splitext(path)[1].lower())
 
 

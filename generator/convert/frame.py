@@ -12,6 +12,7 @@ included, leaves nothing under an output's name.
 
 from __future__ import annotations
 
+import filecmp
 import os
 import shutil
 import tempfile
@@ -23,8 +24,11 @@ import numpy as np
 
 from generator.convert import formats, pixels
 from generator.convert.frames import Source
-from generator.convert.judge import Route, Verdict
+from generator.convert.judge import Route, Verdict, judge
 from generator.convert.pixels import FrameError
+from generator.ocio.environment import set_aside
+from generator.spec import resolved
+from generator.verify.paths import LazyEndpoints
 
 WRITTEN, SKIPPED, FAILED = "written", "skipped", "failed"
 
@@ -91,9 +95,6 @@ def _processor(config: str, src: str, dst: str, display: str, view: str):
 @lru_cache(maxsize=4)
 def _spec(config: str):
     """The spec stored beside ``config`` and its endpoints (costly: built once per process)."""
-    from generator.spec import resolved
-    from generator.verify.paths import LazyEndpoints
-
     spec = resolved.read_beside(config)
     return spec, LazyEndpoints(spec)
 
@@ -124,8 +125,6 @@ def written_space(plan: Plan) -> str:
 
 def convert_frame(plan: Plan, source: Source) -> FrameResult:
     """Convert one frame as ``plan`` says; any failure is the frame's, with its reason."""
-    from generator.ocio.environment import set_aside
-
     started = time.perf_counter()
     if plan.skip_existing and os.path.lexists(source.output):
         return FrameResult(source.path, source.output, SKIPPED)
@@ -219,8 +218,6 @@ def _place(staged: str, output: str, force: bool) -> None:
     """Rename the complete file onto ``output`` (keeping the permissions of a file it replaces).
     Without ``force`` an output was absent when the run began: one there now is this frame's own,
     written by a worker that died before saying so (the same bytes), or another's, refused."""
-    import filecmp
-
     if os.path.lexists(output):
         if not force and not (os.path.isfile(output) and filecmp.cmp(staged, output, shallow=False)):
             raise FrameError(f"{output} appeared during the run; allowed: --force to replace it, or --skip-existing")
@@ -231,8 +228,6 @@ def _place(staged: str, output: str, force: bool) -> None:
 def _verify(plan, source, frame_parts, fmt, depth, route) -> Verdict:
     """Read the written file back and judge its converted parts, on every pixel or on evenly
     spaced rows holding about ``plan.verify`` pixels per part; the worst verdict."""
-    from generator.convert.judge import judge
-
     spec, ends = _spec(plan.config)
     verdicts = []
     written, inp = pixels.open_input(source.output), pixels.open_input(source.path)

@@ -16,6 +16,9 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from generator.convert import formats
+from generator.verify import probes as probe_sets
+from generator.verify.checks import conversion_check
+from generator.verify.judge import policy_violations, sample_errors
 
 
 @dataclass(frozen=True)
@@ -59,10 +62,6 @@ def judge(
     """``written`` (n, 3, float64, as read back) against the reference of ``inputs`` (n, 3) through
     ``route``; ``positions`` (n, 2) the pixels' x, y; ``depth`` the written sample type; ``ends``
     the spec's endpoints (:func:`generator.verify.paths.endpoints`, built once per process)."""
-    from generator.verify import probes as probe_sets
-    from generator.verify.checks import conversion_check
-    from generator.verify.judge import policy_violations, sample_errors
-
     finite = np.all(np.isfinite(inputs), axis=-1)
     order = np.concatenate([np.flatnonzero(finite), np.flatnonzero(~finite)])
     inputs, written, positions = inputs[order], written[order], positions[order]

@@ -7,6 +7,7 @@ channels are found by name (R, G, B; alpha as OIIO names it).
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass
 
@@ -204,6 +205,4 @@ def write_rows(out, spec, y0: int, y1: int, data: np.ndarray) -> None:
 def stamp_of(path: str) -> str:
     """A DateTime for an output whose source has none: the source file's modification time
     (UTC), the same on every machine and every run."""
-    import os
-
     return time.strftime("%Y:%m:%d %H:%M:%S", time.gmtime(os.stat(path).st_mtime))

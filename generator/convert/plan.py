@@ -10,6 +10,7 @@ from generator.convert import config as configs
 from generator.convert import formats
 from generator.convert.frame import EVERY_PIXEL, Plan
 from generator.convert.frames import FramesError, Source, sources
+from generator.files import target
 from generator.spec.schema import SpecError
 
 
@@ -48,8 +49,6 @@ def _outputs(found: list[Source], force: bool, skip_existing: bool) -> list[Sour
     """Each output checked as every command checks a file it writes (:func:`generator.files.target`):
     an existing one needs --force (or --skip-existing, which leaves it); through a link, the file
     it points to is written."""
-    from generator.files import target
-
     if force and skip_existing:
         raise SpecError("--force", "--skip-existing", "ask for opposite things; allowed: one of them")
     if skip_existing:

@@ -9,8 +9,10 @@ has its frames run again elsewhere by the scheduler, and what it had staged is n
 
 from __future__ import annotations
 
+import multiprocessing
 import os
 from collections.abc import Callable
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
 from generator.convert.frame import FAILED, FrameResult, Plan, convert_frame
 from generator.convert.frames import Source
@@ -60,9 +62,6 @@ def _pool_start(threads: int) -> None:
 
 
 def _in_pool(plan, sources, report, jobs, fail_fast) -> list[FrameResult]:
-    import multiprocessing
-    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
-
     threads = max(1, (os.cpu_count() or 1) // jobs)
     # forkserver: forking this process, whose libraries may hold threads (OIIO's), can deadlock or crash
     # the children; the server forks them from a clean process that has loaded the modules once

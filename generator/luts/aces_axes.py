@@ -16,10 +16,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import reference
+from generator.colorimetry.matrices import settled
 from generator.colorimetry.transfer import Linear
 from generator.luts import numbers
 from generator.luts.axes import LogAxis
 from generator.luts.lattice import SHAPER_DECIMALS
+from generator.luts.source_axes import code_range
+from generator.rendering import views
 from generator.spec.schema import ColourSpace, Display, Spec
 
 #: The axis's toe in the basis's linear values: it is uniform in log2(x + toe) below
@@ -70,8 +73,6 @@ class Basis:
 
 def basis(view) -> Basis:
     """Where ``view`` (an :class:`~generator.rendering.views.ACESView`) clamps its input."""
-    from generator.rendering import views
-
     if view.version == "2.0":
         t = views.tables(view)
         return Basis("AP1", t.ap0_to_ap1, float(t.tone.forward_limit))
@@ -178,9 +179,6 @@ def source_range(spec: Spec, source: ColourSpace, display: Display, view) -> tup
     """Decoded source values the source layout covers: those of the view's basis cube, within the
     source's code range (and :data:`LINEAR_FLOOR` for a linear source); 0 from below where the
     source's gamut is the basis (its lower faces are the view's clamp)."""
-    from generator.colorimetry.matrices import settled
-    from generator.luts.source_axes import code_range
-
     corners = np.indices((2, 2, 2)).reshape(3, -1).T * basis(view).upper
     linear = corners @ np.linalg.inv(settled(basis_matrix(spec, source, view))).T
     low, high = float(linear.min()), float(linear.max())
@@ -196,6 +194,4 @@ def source_range(spec: Spec, source: ColourSpace, display: Display, view) -> tup
 def same_basis(spec: Spec, source: ColourSpace, view) -> bool:
     """Whether ``source``'s linear RGB is ``view``'s basis (the matrix is the identity as written):
     its domain's clamp is then the view's own."""
-    from generator.colorimetry.matrices import settled
-
     return bool(np.array_equal(settled(basis_matrix(spec, source, view)), np.eye(3)))

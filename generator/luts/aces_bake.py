@@ -22,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 
 from generator import reference
+from generator.colorimetry.matrices import settled
 from generator.colorimetry.transfer import Linear
 from generator.luts import aces_probes, numbers
 from generator.luts.aces_axes import (
@@ -35,8 +36,13 @@ from generator.luts.aces_axes import (
     source_range,
     view_axes,
 )
+from generator.luts.aces_lattice import to_xyz
 from generator.luts.axes import LogAxis
+from generator.luts.fit import reweighted_fit, tetrahedra
 from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice, coordinates, grid, preimages
+from generator.luts.solve import interpolate
+from generator.luts.source_axes import shaper_domain
+from generator.rendering import views
 from generator.spec.schema import ColourSpace, Display, Spec
 
 #: Colours per probe kind the lattice is fitted to (six kinds; more fit the nodes few colours
@@ -63,8 +69,6 @@ def _training(spec: Spec, source: ColourSpace, display: Display, view, domain=No
 
 
 def _fitted(lat: Lattice, colours: dict, decimals: int) -> np.ndarray:
-    from generator.luts.fit import reweighted_fit  # fit.py builds on lattice.py, as this module does
-
     return numbers.rounded(reweighted_fit(lat, colours, None, ACES_FIT_RTOL), decimals)
 
 
@@ -77,8 +81,6 @@ def display_lattice(
     the display's codes of the light before that clamp, which a 1D table of two entries
     after the lattice applies exactly (the clamp bends the codes where the lattice cannot). The
     lattice's values are written with ``decimals`` decimals."""
-    from generator.colorimetry.matrices import settled
-
     log, _, table = view_axes(view)
     matrix = settled(basis_matrix(spec, source, view))
     nodes = grid(log.position(preimages(size, table, (0.0, 1.0)))).reshape(-1, 3)
@@ -117,9 +119,6 @@ def light_before_clamp(spec: Spec, display: Display, view):
     (1, or lower for an ACES 2.0 white scaling); None elsewhere. ACES 1.3's output ends in XYZ
     before its display's clamp; ACES 2.0 clamps its limiting RGB, the display's own when they
     share primaries and white."""
-    from generator.luts.aces_lattice import to_xyz
-    from generator.rendering import views
-
     if display.eotf_name == "HLG":
         return None
     to_display = reference.display_matrix(spec, display) / display.clip_high
@@ -191,8 +190,6 @@ def source_lattice(
     no table, the lattice uniform in source values), a lattice of fitted display codes, written
     with ``decimals`` decimals; the table has ``entries`` entries (default
     :data:`ACES_SHAPER_SIZES`)."""
-    from generator.luts.source_axes import shaper_domain
-
     low, high = source_range(spec, source, display, view)
     with np.errstate(all="ignore"):
         domain = tuple(float(v) for v in source.curve.encode(np.array([low, high])))
@@ -239,9 +236,6 @@ def file_output(lat: Lattice, code) -> np.ndarray:
     """A lattice's file evaluated in float64 as OCIO runs it: source code values (n, 3) to display
     code values (n, 3): the display layout's decoding, matrix and Log operator, the 1D table
     (linear), the lattice (tetrahedral) and the table after it (linear, clamped to its input range)."""
-    from generator.luts.fit import tetrahedra
-    from generator.luts.solve import interpolate
-
     code = np.asarray(code, dtype=np.float64).reshape(-1, 3)
     with np.errstate(all="ignore"):
         u = coordinates(lat, _log_coordinate(lat, code) if isinstance(lat.pre, LogAxis) else code)

@@ -21,6 +21,7 @@ import numpy as np
 
 from generator import reference
 from generator.colorimetry.gamuts import gamuts
+from generator.luts.probes import held
 from generator.spec.schema import ColourSpace, Display, Spec
 
 SETS = ("in_gamut", "ap0", "dark", "bright", "greys", "camera")
@@ -82,8 +83,6 @@ def in_source(
     (the reference, :func:`~generator.reference.aces_view`), keeping the colours the
     source's encoding holds (:func:`~generator.luts.probes.held`) and, given a ``domain``, whose
     codes lie in it."""
-    from generator.luts.probes import held
-
     ref = reference.apply_matrix(np.linalg.inv(reference.to_aces_matrix(spec)), aces)
     with np.errstate(all="ignore"):
         code = reference.from_reference(spec, source, ref)

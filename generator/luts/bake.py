@@ -16,9 +16,16 @@ from pathlib import Path
 
 import numpy as np
 
+from generator import reference
+from generator.colorimetry import library
+from generator.colorimetry.transfer import Linear
 from generator.files import check_file_output, write_files
-from generator.luts import fit, formats, lattice, source_axes
+from generator.gamut import METHODS
+from generator.luts import aces_bake, fit, formats, lattice, source_axes
 from generator.luts.axes import LogAxis
+from generator.luts.names import slug
+from generator.rendering import views
+from generator.spec.fields import suggest
 from generator.spec.schema import ColourSpace, Display, Spec, SpecError
 
 WHERE = "ocioforge bake"
@@ -75,8 +82,6 @@ class Request:
 
 def find_display(spec: Spec, name: str, field: str) -> Display:
     """The display called ``name`` or one of its aliases; SpecError naming the kind otherwise."""
-    from generator.spec.fields import suggest
-
     for display in spec.displays:
         if name.lower() in (n.lower() for n in (display.name, *display.aliases)):
             return display
@@ -94,14 +99,11 @@ def find_display(spec: Spec, name: str, field: str) -> Display:
 
 def find_source(spec: Spec, name: str, field: str, role: str = "source") -> ColourSpace:
     """An encoded scene colour space (not data, not a display, a per-channel curve and primaries)."""
-    from generator.spec.fields import suggest
-
     try:
         space = spec.space(name)
     except KeyError:
         if any(name.lower() in (n.lower() for n in (d.name, *d.aliases)) for d in spec.displays):
             raise SpecError(WHERE, field, f"{name!r} is a display; {field} takes a scene colour space") from None
-        from generator.colorimetry import library
 
         if name.lower() in (n.lower() for d in library.SPACES for n in (d.name, *d.aliases)):
             raise SpecError(
@@ -165,8 +167,6 @@ def request(
 ) -> Request:
     """Validate a bake's parameters (SpecError naming the option otherwise). With ``view`` (an
     ACES view's name) the bake is that view and ``method`` is not used."""
-    from generator.gamut import METHODS
-
     if fmt not in FORMATS:
         raise SpecError(WHERE, "--format", f"unknown format {fmt!r}; allowed: {', '.join(FORMATS)}")
     if view is None and method not in METHODS:
@@ -195,9 +195,6 @@ def find_view(display: Display, name: str):
     """The ACES view called ``name`` that ``display`` can show (SpecError naming ``--view``
     otherwise), in any case: a studio view, or the display's own ACES 2.0 view; "ACES 2.0" is the
     display's first ACES 2.0 studio view, or its own."""
-    from generator import reference
-    from generator.rendering import views
-
     shown = [v for v in (*views.catalogue(), _own_name(display)) if v and _shows(display, v)]
     if name.lower() == views.OWN_ACES2.lower():
         studio = [v for v in views.STUDIO_VIEWS.get(display.name, ()) if v.startswith(views.OWN_ACES2 + " - ")]
@@ -219,8 +216,6 @@ def find_view(display: Display, name: str):
 
 def _own_name(display: Display) -> str:
     """The display's own ACES 2.0 view's name ("" where the algorithm cannot take the display)."""
-    from generator.rendering import views
-
     try:
         return views.own_view(display.name, display.peak, display.gamut.primaries, display.gamut.whitepoint).name
     except ValueError:
@@ -228,9 +223,6 @@ def _own_name(display: Display) -> str:
 
 
 def _shows(display: Display, name: str) -> bool:
-    from generator import reference
-    from generator.rendering import views
-
     found = reference.aces_view_of(display, name)
     return found is not None and not views.cannot_show(
         found, display.gamut.primaries, display.peak, display.is_hdr or display.absolute
@@ -244,8 +236,6 @@ SHAPER_KEYWORDS = ("auto", "none")
 def _shaper_space(spec: Spec, name: str) -> ColourSpace:
     """The colour space whose curve spaces a lattice's nodes: encoded, not linear (a lattice
     uniform in linear light leaves black hundreds of codes off)."""
-    from generator.colorimetry.transfer import Linear
-
     space = find_source(spec, name, "--shaper", "shaper")
     if isinstance(space.curve, Linear):
         raise SpecError(
@@ -270,8 +260,6 @@ def _refuse_linear_without_shaper(source: ColourSpace, fmt: str, shaper) -> None
     """A lattice with no shaper over a linear source is uniform in linear light, up to 16 times
     white: two of a 33³ lattice's nodes lie below display white, and ACEScg black comes out at
     sRGB code 0.25. No request for such a file is taken (a log source's codes are its shaper)."""
-    from generator.colorimetry.transfer import Linear
-
     if not isinstance(source.curve, Linear) or (FORMATS[fmt].shaper and shaper != "none"):
         return
     option, what = ("--format", f"{fmt} holds no shaper") if not FORMATS[fmt].shaper else ("--shaper", "no shaper")
@@ -303,8 +291,6 @@ def _smallest_size(spec: Spec, display: Display, source: ColourSpace, method: st
 
 def build_lattice(req: Request) -> lattice.Lattice:
     if req.view is not None:
-        from generator.luts import aces_bake
-
         if req.fmt == "clf" and req.shaper == "auto":
             return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size)
         shaper = "none" if not FORMATS[req.fmt].shaper else req.shaper
@@ -323,11 +309,7 @@ def describe(req: Request) -> str:
 
 def notes(req: Request, lat: lattice.Lattice) -> list[str]:
     """Comment lines: what the file does and what its input is."""
-    from generator import reference
-
     if req.view is not None:
-        from generator.luts import aces_bake
-
         return [f"ocioforge: {describe(req)}.", *aces_bake.notes(lat, req.view, req.shaper)]
     lo, hi = lat.domain
     top = float(reference.display_encode(req.display, np.full(3, req.display.clip_high))[0])
@@ -391,8 +373,6 @@ def lattice_files(req: Request, lat: lattice.Lattice) -> dict[str, bytes]:
 
 
 def identifier(req: Request) -> str:
-    from generator.luts.names import slug
-
     return f"ocioforge:{slug(req.source.name)}_to_{slug(req.display.name)}_{slug(req.method)}_{req.size}"
 
 

@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import tolerances
+from generator.colorimetry.transfer import Tabulated
 from generator.luts.names import slug
 from generator.luts.spi1d import format_spi1d
 from generator.metrics import relative_error
@@ -103,8 +104,6 @@ def _row_intervals(curve, domain: tuple[float, float]) -> int:
     of LUT intervals putting an entry on every row (a multiple of the table's, at least
     MIN_SIZE, at most MAX_SIZE); 0 otherwise. Linear interpolation between such entries is
     the table's own, so a steep row (a clip flag on the top code) costs nothing."""
-    from generator.colorimetry.transfer import Tabulated
-
     if not isinstance(curve, Tabulated) or (curve.code[0], curve.code[-1]) != tuple(domain):
         return 0
     code = np.asarray(curve.code)

@@ -33,6 +33,7 @@ import numpy as np
 
 from generator import reference
 from generator.colorimetry.transfer import PiecewisePower, Power
+from generator.gamut import METHODS
 from generator.luts import numbers
 from generator.luts.axes import DEFAULT_SHARES, LOG_METHODS, Axis, LogAxis, grey_code, grey_linear
 from generator.spec.schema import ColourSpace, Display, Spec
@@ -278,8 +279,6 @@ HLG_UNCLIPPED_SCALE = 0.25
 def _log_lattice(display: Display, method: str, axis: LogAxis, params) -> tuple[np.ndarray, np.ndarray]:
     """Cube of mapped coordinates (the coordinate of the grey of the same code) and the
     1D table from coordinate to code value."""
-    from generator.gamut import METHODS
-
     top = reference.display_encode(display, np.full(3, display.clip_high))[0]
     scale = HLG_UNCLIPPED_SCALE if display.eotf_name == "HLG" else 1.0
     with np.errstate(all="ignore"):
@@ -298,8 +297,6 @@ def _log_lattice(display: Display, method: str, axis: LogAxis, params) -> tuple[
 
 def _log_light(display: Display, method: str, axis: LogAxis, params) -> np.ndarray:
     """Cube of the :class:`LogAxis` coordinates of the mapped colours (display light)."""
-    from generator.gamut import METHODS
-
     mapped = METHODS[method](grid(axis.nodes()), None, params)  # clip and scale need no display gamut
     return numbers.rounded(axis.coordinate(mapped), LOG_DECIMALS)
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import hashlib
 import re
+import unicodedata
 from collections import Counter
 from collections.abc import Iterable
 
@@ -19,8 +20,6 @@ STEM_MAX = 229
 
 def _unaccented(text: str) -> str:
     """``text`` with accents taken off its letters (``Caméra`` as ``Camera``)."""
-    import unicodedata
-
     return "".join(c for c in unicodedata.normalize("NFKD", text) if not unicodedata.combining(c))
 
 

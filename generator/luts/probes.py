@@ -29,6 +29,9 @@ import numpy as np
 
 from generator import reference, tolerances
 from generator.colorimetry.matrices import channel_max, channel_min
+from generator.colorimetry.transfer import Linear
+from generator.luts.source_axes import code_range
+from generator.metrics import colour_relative_error, delta_e_itp
 from generator.spec.schema import ColourSpace, Display, Spec
 
 SETS = ("in_gamut", "dark", "out_of_gamut", "over_range")
@@ -94,9 +97,6 @@ def representable(spec: Spec, source: ColourSpace, ref: np.ndarray, code: np.nda
     """Which scene-reference colours ``ref`` (n, 3) the encoding of ``source`` holds: their
     codes (``code``, computed if not given) decode back to them within float64 rounding
     (REPRESENTABLE_RELATIVE of the largest component). Every colour, for a linear source."""
-    from generator.colorimetry.transfer import Linear
-    from generator.metrics import colour_relative_error
-
     if isinstance(source.curve, Linear):
         return np.ones(len(ref), dtype=bool)
     with np.errstate(all="ignore"):
@@ -110,8 +110,6 @@ def held(spec: Spec, source: ColourSpace, display: Display, ref: np.ndarray, cod
     """:func:`representable` colours whose codes also lie within the source's code range where
     the curve caps it (S-Log3's and an sRGB encoding's codes end at 1, below the brightest
     over-range probes of a 1000 cd/m² display): no file of the source holds the others."""
-    from generator.luts.source_axes import code_range
-
     keep = representable(spec, source, ref, code)
     _low, high, capped = code_range(source, display)
     if capped:
@@ -161,8 +159,6 @@ def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
     """Per-colour error of code values ``actual`` against ``expected``, and its unit."""
     actual, expected = np.asarray(actual, dtype=np.float64), np.asarray(expected, dtype=np.float64)
     if display.is_hdr:
-        from generator.metrics import delta_e_itp
-
         with np.errstate(all="ignore"):
             return np.nan_to_num(delta_e_itp(display, actual, expected)), "ΔE ITP"
     return channel_max(np.abs(actual - expected)) * 1023.0, "10-bit codes"

@@ -14,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from functools import lru_cache
 
+from generator import reference
 from generator.luts import formats, hsv, hsv_axes, lattice
 from generator.luts.axes import LOG_METHODS
 from generator.luts.names import file_stems
@@ -158,8 +159,6 @@ def _measured(
 
 def _bake_hsv_view(spec: Spec, display: Display) -> ViewLut:
     """The desaturate view of ``display`` as an HSV lattice, measured through OCIO."""
-    from generator import reference
-
     name = view_filename(spec, display, HSV_METHOD)
     text = (
         f"ocioforge view LUT: OCIO HSV of normalised {display.name} linear RGB (1 = peak, after the config's "

@@ -13,6 +13,8 @@ from pathlib import Path
 from generator import tolerances
 from generator.files import staged_folder
 from generator.luts.curve1d import MAX_SIZE, curve_file
+from generator.luts.names import slug
+from generator.ocio.curves import curve_label
 from generator.ocio.emit import LUT_FOLDER, emit
 from generator.ocio.environment import set_aside
 from generator.spec import resolved
@@ -34,9 +36,6 @@ class BuildResult:
 def _check_baked(spec: Spec, luts: dict) -> None:
     """A curve no 1D LUT holds within BAKED_CURVE_RELATIVE (a table stepping between unevenly
     spaced rows) is refused, naming its file, rather than written off its bound."""
-    from generator.luts.names import slug
-    from generator.ocio.curves import curve_label
-
     owners = [(s.name, s.curve_name, "custom_space") for s in spec.colour_spaces if not (s.is_data or s.special)]
     owners += [(d.name, d.eotf_name, "display") for d in spec.displays]
     for name, lut in luts.items():

@@ -7,13 +7,20 @@ errors, and returns a frozen record; a bad value raises
 
 from __future__ import annotations
 
+import csv
 import difflib
 import math
 from pathlib import Path
 
+import numpy as np
+
 from generator import tolerances
 from generator.colorimetry import transfer
+from generator.colorimetry.curves import CURVES
+from generator.files import not_readable
+from generator.gamut.rgc import OCIO_RANGES, RGCParams
 from generator.spec.schema import SpecError
+from generator.tolerances import GAMUT_MIN_XY_AREA
 
 TRANSFER_FAMILIES = {
     "linear": (),
@@ -98,8 +105,6 @@ def _area(a, b, c) -> float:
 def check_triangle(primaries: tuple, white: tuple, source: str, field: str, white_field: str) -> None:
     """The primaries must span a triangle and the white point lie inside it, each by at least
     :data:`~generator.tolerances.GAMUT_MIN_XY_AREA`, so the gamut's matrix is well conditioned."""
-    from generator.tolerances import GAMUT_MIN_XY_AREA
-
     area = _area(*primaries)
     if abs(area) < GAMUT_MIN_XY_AREA:
         raise SpecError(
@@ -123,7 +128,6 @@ def check_triangle(primaries: tuple, white: tuple, source: str, field: str, whit
 def resolve_path(value, base: Path, source: str, field: str) -> Path:
     if not isinstance(value, str) or not value:
         raise SpecError(source, field, f"expected a file path, got {value!r}")
-    from generator.files import not_readable
 
     path = (base / value).resolve() if not Path(value).is_absolute() else Path(value)
     why = not_readable(path)
@@ -135,8 +139,6 @@ def resolve_path(value, base: Path, source: str, field: str) -> Path:
 
 
 def _csv(reader, path: Path, source: str, field: str):
-    import csv
-
     try:
         return reader(path)
     except UnicodeDecodeError:
@@ -147,7 +149,7 @@ def _csv(reader, path: Path, source: str, field: str):
 
 def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float]:
     """A white point: [x, y], a named CIE illuminant, a CCT in kelvin, or an SPD CSV file."""
-    from generator.colorimetry import spectral
+    from generator.colorimetry import spectral  # lazy: it imports colour-science (seconds)
 
     if isinstance(value, list):
         return xy_pair(value, source, field, white=True)
@@ -176,7 +178,7 @@ def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float
 
 
 def spectral_primaries(value, base: Path, source: str, field: str) -> tuple:
-    from generator.colorimetry import spectral
+    from generator.colorimetry import spectral  # lazy: it imports colour-science (seconds)
 
     path = resolve_path(value, base, source, field)
     xy = _csv(spectral.read_primaries_spectra_csv, path, source, field)
@@ -185,8 +187,6 @@ def spectral_primaries(value, base: Path, source: str, field: str) -> tuple:
 
 def transfer_function(value, base: Path, source: str, field: str):
     """A transfer function: a library curve name, or a table with a ``family``."""
-    from generator.colorimetry.curves import CURVES
-
     if isinstance(value, str):
         for name, curve in CURVES.items():
             if name.lower() == value.lower():
@@ -222,7 +222,7 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
     if family == "linear":
         return "linear", transfer.Linear()
     if family == "tabulated":
-        from generator.colorimetry import spectral
+        from generator.colorimetry import spectral  # lazy: it imports colour-science (seconds)
 
         path = resolve_path(value["file"], base, source, f"{field}.file")
         code, linear = _csv(spectral.read_curve_csv, path, source, f"{field}.file")
@@ -301,8 +301,6 @@ def _check_black(curve, source: str, field: str) -> None:
     """A log_camera curve without a toe keeps black off the log's pole: float32's rounding of
     linear 0 (a unit in the last place of 1, what a matrix leaves in a channel at 0) moves
     black's code by at most the verifier's ANALYTIC_RELATIVE (floor RELATIVE_FLOOR)."""
-    import numpy as np
-
     if curve.lin_side_offset <= 0.0:
         raise SpecError(
             source,
@@ -348,8 +346,6 @@ RGC_KEYS = ("limits", "thresholds", "power")
 def rgc_params(value, source: str):
     """The spec's [rgc] table (limits and thresholds as [cyan, magenta, yellow], power), each
     key defaulting to ACES 1.3's value, within what OpenColorIO's fixed function accepts."""
-    from generator.gamut.rgc import OCIO_RANGES, RGCParams
-
     defaults = RGCParams()
     if value is None:
         return defaults

@@ -3,6 +3,7 @@ where the spec gives them (each check a SpecError naming the field and what is a
 
 from __future__ import annotations
 
+import json
 import re
 
 from generator.spec.schema import SpecError
@@ -179,8 +180,6 @@ def label(value, source: str, field: str, context: bool = True) -> str:
 def toml_key(key: str) -> str:
     """``key`` as TOML writes it in a dotted field name: bare, or quoted when it holds other
     characters than letters, digits, '-' and '_' (an empty key among them)."""
-    import json
-
     return key if re.fullmatch(r"[A-Za-z0-9_-]+", key) else json.dumps(key, ensure_ascii=False)
 
 

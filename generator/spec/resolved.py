@@ -17,9 +17,14 @@ from typing import ClassVar
 import numpy as np
 
 from generator.colorimetry import transfer
-from generator.colorimetry.matrices import Gamut
+from generator.colorimetry.curves import CURVES
+from generator.colorimetry.matrices import CATS, Gamut
+from generator.files import not_readable
+from generator.gamut.rgc import RGCParams
+from generator.rendering.views import is_aces_name
 from generator.spec import fields
 from generator.spec.allowed import COLORIMETRIC_ALIASES, OCIO_MIN_VERSION, VIEWS, newest_ocio_version
+from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces, generated
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
 
 FILENAME = "ocioforge-spec.json"
@@ -127,8 +132,6 @@ class _Reader:
         return tuple(self.typed(v, float, f"{field}[{i}]") for i, v in enumerate(value))
 
     def gamut(self, data, field: str) -> Gamut:
-        from generator.colorimetry.matrices import CATS
-
         keys = ("name", "primaries", "whitepoint", "adapting_white", "citation", "adaptation")
         d = self.table(data, keys, field)
         primaries = self.items(d["primaries"], f"{field}.primaries", self.xy, 3)
@@ -156,8 +159,6 @@ class _Reader:
         return fields.plausible_xy(self.xy(value, field), self.source, field, white=True)
 
     def curve(self, data, field: str):
-        from generator.colorimetry.curves import CURVES
-
         family = self.typed(self.typed(data, dict, field).get("family"), str, f"{field}.family")
         if family == "Function":
             name = self.table(data, ("family", "name"), field)["name"]
@@ -205,8 +206,6 @@ class _Reader:
         )
 
     def display(self, data, field: str) -> Display:
-        from generator.rendering.views import is_aces_name
-
         d = self.table(data, [f.name for f in dataclasses.fields(Display)], field)
         views = self.items(d["views"], f"{field}.views", lambda v, f: self.typed(v, str, f), 1)
         unknown = next(
@@ -253,8 +252,6 @@ class _Reader:
 
     def rgc(self, value):
         """RGC parameters as :func:`dumps` records them (field by field), ACES 1.3's if absent."""
-        from generator.gamut.rgc import RGCParams
-
         if value is None:
             return RGCParams()
         names = [f.name for f in dataclasses.fields(RGCParams)]
@@ -273,8 +270,6 @@ class _Reader:
         return version
 
     def spec(self, data) -> Spec:
-        from generator.colorimetry.matrices import CATS
-
         keys = [f.name for f in dataclasses.fields(Spec) if f.metadata.get("resolved", True) and f.name != "rgc"]
         # Builds before the spec held RGC parameters recorded none: they used ACES 1.3's.
         data = dict(data) if isinstance(data, dict) else data
@@ -306,8 +301,6 @@ class _Reader:
         builds before names were written as the space's own wrote them),
         the roles' targets among the spec's, its displays and the display reference, the file
         rules' among those and the roles."""
-        from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces, generated
-
         spaces = {n.lower() for n in spec.space_names}
         targets = (
             spaces | {n.lower() for d in spec.displays for n in (d.name, *d.aliases)} | {DISPLAY_REFERENCE.lower()}
@@ -341,8 +334,6 @@ def read_beside(config_path: str | Path) -> Spec:
 
 def read(path: Path) -> Spec:
     """The resolved spec stored at ``path``."""
-    from generator.files import not_readable
-
     why = not_readable(path)
     if why not in (None, "does not exist"):
         raise SpecError(str(path), "-", f"{why}; allowed: the {FILENAME} a build writes beside its config.ocio")
