@@ -18,7 +18,15 @@ from functools import lru_cache
 import numpy as np
 
 from generator import reference, tolerances
+from generator.colorimetry.curves import PQ_PEAK
 from generator.colorimetry.matrices import apply_matrix
+from generator.gamut.simple import desaturate
+from generator.luts import hsv_axes
+from generator.luts.evaluate import at_coordinates, coordinates, index_rounding
+from generator.luts.hsv import luminance_weights
+from generator.luts.view import view_lattice
+from generator.ocio.capabilities import HALF_DOMAIN, PQ_BUILTIN, curve_chain, pq_builtin_tables
+from generator.ocio.curves import curve_label
 from generator.spec.schema import Display, Spec
 from generator.verify import paths
 
@@ -54,14 +62,15 @@ def float32_shift(src: paths.Endpoint, dst_matrix, codes: np.ndarray) -> tuple[n
         return ref, apply_matrix(to_dst, apply_matrix(np.abs(src.matrix), source) + k * u * np.abs(ref))
 
 
-def float32_allowance(src: paths.Endpoint, dst_matrix, encode, codes: np.ndarray) -> np.ndarray | None:
+def float32_allowance(src: paths.Endpoint, dst_matrix, encode, codes: np.ndarray, shifted=None) -> np.ndarray | None:
     """The code difference float32 evaluation alone may make, per sample and channel:
     the destination's linear values moved by :func:`float32_shift` either way, and
     encoded. Where the destination curve is steep (a power law near zero) this is far
-    more than the tolerance, and no float32 engine can do better."""
+    more than the tolerance, and no float32 engine can do better. ``shifted``: that
+    :func:`float32_shift`, when already computed."""
     if src.matrix is None or src.linear is None or dst_matrix is None or encode is None:
         return None
-    ref, shift = float32_shift(src, dst_matrix, codes)
+    ref, shift = shifted or float32_shift(src, dst_matrix, codes)
     with np.errstate(all="ignore"):
         moved = [encode(ref + sign * apply_matrix(dst_matrix, shift)) for sign in (1.0, -1.0)]
         base = encode(ref)
@@ -91,8 +100,6 @@ def _desaturate_shift(display: Display, linear: np.ndarray, shift: np.ndarray) -
     colour of luminance near 0 maps near black, up to 1 / (smallest luminance weight) times
     its luminance's rounding), plus the float32 resolution of its HSV values through the
     view (:func:`hsv_rounding_shift`)."""
-    from generator.luts.hsv import luminance_weights
-
     weights = luminance_weights(display)
     luminance = linear @ weights
     low = np.minimum(linear.min(axis=-1), 0.0)
@@ -120,9 +127,6 @@ def hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
     (:func:`generator.luts.hsv_axes.float32_resolution`), either way, summed over the three
     (to first order a bound): the mapping's own sensitivity, which is large where a colour
     of luminance near 0 maps near black."""
-    from generator.gamut.simple import desaturate
-    from generator.luts import hsv_axes
-
     gamut, peak = reference.display_gamut(display), display.clip_high
     with np.errstate(all="ignore"):
         values = hsv_axes.ocio_rgb_to_hsv(np.nan_to_num(linear.reshape(-1, 3)) / peak)
@@ -145,7 +149,13 @@ def hsv_rounding_shift(display: Display, linear: np.ndarray) -> np.ndarray:
 
 
 def mapped_allowance(
-    src: paths.Endpoint, back: np.ndarray, display: Display, view: str, codes: np.ndarray, expected: np.ndarray
+    src: paths.Endpoint,
+    back: np.ndarray,
+    display: Display,
+    view: str,
+    codes: np.ndarray,
+    expected: np.ndarray,
+    shifted=None,
 ) -> np.ndarray | None:
     """:func:`float32_allowance` for a gamut-mapped view: the float32 shift of the display's
     linear values (and the mapping operator's own departure) applied to the mapped light,
@@ -153,7 +163,7 @@ def mapped_allowance(
     below 0 to just above it, where a power law is steepest."""
     if src.matrix is None or src.linear is None:
         return None
-    ref, shift = float32_shift(src, back, codes)
+    ref, shift = shifted or float32_shift(src, back, codes)
     with np.errstate(all="ignore"):
         shift = shift + _operator_shift(display, view, apply_matrix(np.linalg.inv(back), ref), shift)
     return _encoded_shift(display, expected, shift)
@@ -181,22 +191,29 @@ def _encoded_shift(display: Display, expected: np.ndarray, shift: np.ndarray) ->
     return np.where(np.isfinite(allowance), allowance, 0.0)
 
 
-def view_allowance(spec: Spec, src, back, display, view, codes, expected, clip_encode):
+def view_allowance(spec: Spec, src, back, display, view, codes, expected, clip_encode, shifted=None):
     """The allowance of a view check: :func:`float32_allowance` through the Colorimetric
     view for clip, :func:`lattice_allowance` for a view defined by its lattice (``spec``
-    rebuilds it), :func:`mapped_allowance` for the other gamut-mapped views."""
+    rebuilds it), :func:`mapped_allowance` for the other gamut-mapped views. ``shifted``:
+    ``float32_shift(src, back, codes)``, shared by the views of one display."""
     if expected is None:
         return None
     method = paths.view_method(view)
     if method == "clip":
-        return float32_allowance(src, back, clip_encode, codes)
+        return float32_allowance(src, back, clip_encode, codes, shifted)
     if method in paths.lattice_defined():
-        return lattice_allowance(spec, src, back, display, method, codes)
-    return mapped_allowance(src, back, display, view, codes, expected)
+        return lattice_allowance(spec, src, back, display, method, codes, shifted)
+    return mapped_allowance(src, back, display, view, codes, expected, shifted)
 
 
 def lattice_allowance(
-    spec: Spec, src: paths.Endpoint, back: np.ndarray, display: Display, method: str, codes: np.ndarray
+    spec: Spec,
+    src: paths.Endpoint,
+    back: np.ndarray,
+    display: Display,
+    method: str,
+    codes: np.ndarray,
+    shifted=None,
 ) -> np.ndarray | None:
     """For a view defined by its lattice (:func:`paths.lattice_codes`): the float32 shift of
     the display's linear values (:func:`float32_shift`) carried through the file with the
@@ -204,19 +221,15 @@ def lattice_allowance(
     display's curve, steepest at 0, where the shift of a zero channel meets it."""
     if src.matrix is None or src.linear is None:
         return None
-    ref, shift = float32_shift(src, back, codes)
+    ref, shift = shifted or float32_shift(src, back, codes)
     with np.errstate(all="ignore"):
         linear = apply_matrix(np.linalg.inv(back), ref)
     return lattice_file_allowance(spec, display, method, linear, shift)
 
 
-#: Displacements of a lattice coordinate, each axis -1, 0 or +1 times its reach: a
-#: tetrahedral lattice is linear on pieces bounded, around a node, by planes through it
-#: (``d_i = d_j``, ``d_i = 0``), so its largest change over a box of displacements from a node
-#: is at one of these (a displacement along two axes reaches a diagonal neighbour, which
-#: displacements along one axis at a time do not: measured 14 times their sum near a black
-#: node between bright ones, Display P3 HDR). Elsewhere the reach, a few float32 roundings,
-#: seldom meets a piece's boundary.
+#: Displacements of a lattice coordinate, each axis -1, 0 or +1 times its reach: a tetrahedral
+#: lattice is linear on pieces bounded, around a node, by planes through it, so its largest
+#: change over a box around a node is at one of these (diagonals included).
 _BOX = np.array([d for d in np.ndindex(3, 3, 3) if d != (1, 1, 1)], dtype=np.float64) - 1.0
 
 
@@ -228,13 +241,8 @@ def lattice_file_allowance(
     input's ``shift`` (if any) moves it, plus its float32 rounding (FLOAT32_MATRIX_ROUNDINGS u
     of a coordinate within [0, 1]: its Range's multiply-add and its shaper table's
     interpolation; and the rounding of the table's index, :func:`index_rounding`); the
-    largest change of the file's output over that box (:data:`_BOX`).
-    Near black, a coordinate's rounding times the lattice's slope is a large share of the
-    light (2 % at 1e-7 of the peak on Display P3 HDR; 3e-8 of the peak where the mapping is
-    black, which PQ's steep start makes 0.5 ΔE ITP)."""
-    from generator.luts.evaluate import at_coordinates, coordinates, index_rounding
-    from generator.luts.view import view_lattice
-
+    largest change of the file's output over that box (:data:`_BOX`). Near black, a
+    coordinate's rounding times the lattice's slope is a large share of the light."""
     lat, peak = view_lattice(spec, display, method), display.clip_high
 
     def codes(coordinate):
@@ -258,40 +266,41 @@ def lattice_file_allowance(
     return np.where(np.isfinite(worst), worst, 0.0)
 
 
+@lru_cache(maxsize=4)
 def _half_floats(top: float = np.inf) -> np.ndarray:
-    """Every finite half float from 0 to ``top``, ascending, as float64."""
+    """Every finite half float from 0 to ``top``, ascending, as float64 (read-only: shared)."""
     halves = np.arange(0x7C00, dtype=np.uint16).view(np.float16).astype(np.float64)
-    return halves[halves <= top]
+    halves = halves[halves <= top]
+    halves.flags.writeable = False
+    return halves
 
 
 @lru_cache(maxsize=8)
-def _pq_table(curve, size: int) -> tuple[np.ndarray, np.ndarray]:
+def _pq_table(curve, size: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """OCIO's ST-2084 table of ``size`` codes from 0 to 1 (HALF_DOMAIN: every half-float code
-    up to 1) as (lights, codes), the lights in float32 as OCIO stores them; where several codes
-    give one light (the codes below PQ's black), the first, so the inverse departs most there."""
-    from generator.ocio.capabilities import HALF_DOMAIN
-
+    up to 1) as (lights, codes), the lights in float32 as OCIO stores them, and its inverse
+    tabulated at every half-float light (the default optimisation's); where several codes give
+    one light (the codes below PQ's black), the first, so the inverse departs most there."""
     codes = _half_floats(1.0) if size == HALF_DOMAIN else np.linspace(0.0, 1.0, size)
     lights = np.asarray(curve.decode(codes), dtype=np.float32).astype(np.float64)
     lights, first = np.unique(lights, return_index=True)
-    return lights, codes[first]
+    return lights, codes[first], np.interp(_half_floats(), lights, codes[first])
 
 
-def pq_table_departure(curve, size: int, light: np.ndarray) -> np.ndarray:
+def pq_table_departure(curve, size: int, light: np.ndarray, exact: np.ndarray | None = None) -> np.ndarray:
     """How far OCIO's encoding of display ``light`` (1 = 100 cd/m²) through the inverse of its
     ST-2084 table of ``size`` (:data:`generator.ocio.capabilities.PQ_BUILTIN_TABLES`) lands from
-    PQ ``curve``: the larger of the exact inverse (PQ interpolated linearly between the lights of
-    the table's codes) and the default optimisation's (that inverse tabulated at every half-float
-    light, interpolated linearly). Both chords cut PQ's steep curvature near black, where the
-    half floats and the table's codes are coarse: up to 0.07 ten-bit codes below 1e-4 cd/m², 0.003
-    up to 0.01 cd/m² (4096 codes)."""
-    lights, codes = _pq_table(curve, size)
-    halves = _half_floats()
+    PQ ``curve`` (``exact``: its codes, when already computed): the larger of the exact inverse (PQ
+    interpolated linearly between the lights of the table's codes) and the default optimisation's
+    (that inverse tabulated at every half-float light, interpolated linearly). Both chords cut PQ's
+    steep curvature near black, where the half floats and the table's codes are coarse."""
+    lights, codes, tabulated = _pq_table(curve, size)
     light = np.asarray(light, dtype=np.float64)
     with np.errstate(all="ignore"):
-        exact = np.asarray(curve.encode(light), dtype=np.float64)
+        if exact is None:
+            exact = np.asarray(curve.encode(light), dtype=np.float64)
         inverse = np.interp(light, lights, codes)
-        fast = np.interp(light, halves, np.interp(halves, lights, codes))
+        fast = np.interp(light, _half_floats(), tabulated)
     return np.nan_to_num(np.maximum(np.abs(inverse - exact), np.abs(fast - exact)))
 
 
@@ -301,15 +310,14 @@ def _pq_builtin_departure(
     """:func:`pq_table_departure` at codes ``expected`` of the curve ``owner`` encodes with,
     over the libraries that read the config, where the ST-2084 builtin expresses it (light
     from ``decode``, clipped to [0, ``top``]); None otherwise."""
-    from generator.ocio.capabilities import PQ_BUILTIN, curve_chain, pq_builtin_tables
-    from generator.ocio.curves import curve_label
-
     chain = curve_chain(curve_label(spec, owner, curve_name), spec.ocio_version) or ()
     if PQ_BUILTIN not in {style for style, _ in chain}:
         return None
     with np.errstate(all="ignore"):
         light = np.clip(decode(expected), 0.0, top)
-    return np.max([pq_table_departure(curve, size, light) for size in pq_builtin_tables(spec.ocio_version)], axis=0)
+        exact = np.asarray(curve.encode(light), dtype=np.float64)
+    tables = pq_builtin_tables(spec.ocio_version)
+    return np.max([pq_table_departure(curve, size, light, exact) for size in tables], axis=0)
 
 
 def builtin_encoding_allowance(spec: Spec, display: Display, expected: np.ndarray) -> np.ndarray | None:
@@ -331,8 +339,6 @@ def scene_encoding_allowance(spec: Spec, space, expected: np.ndarray) -> np.ndar
     """As :func:`builtin_encoding_allowance` for a scene space the ST-2084 builtin encodes (its
     codes clamped to the signal range, 0 to 10000 cd/m²): OCIO 2.1 to 2.3 read the config with
     a 4096-code table, 1.2e-4 relative off near black."""
-    from generator.colorimetry.curves import PQ_PEAK
-
     return _pq_builtin_departure(spec, space.name, space.curve_name, space.curve, space.curve.decode, PQ_PEAK, expected)
 
 

@@ -15,7 +15,7 @@ import shutil
 from dataclasses import dataclass
 from pathlib import Path
 
-from generator.verify.checks import VIEW, Check
+from generator.verify.check import VIEW, Check
 from generator.verify.hosts import TOO_NEW, NotRunnable, read_output, run_host, write_inputs
 from generator.verify.judge import Output
 from generator.verify.paths import RAW
@@ -34,6 +34,7 @@ class BlenderEngine:
     kinds: tuple = (VIEW,)
 
     def supports(self, check: Check, spec) -> bool:
+        """Whether Blender can run ``check``: no view from an inactive space; Raw from scene_linear alone."""
         inactive = set()
         for name in spec.inactive:
             try:
@@ -51,16 +52,20 @@ class BlenderEngine:
             return False
 
     def executable(self) -> str | None:
+        """The blender on PATH, or None."""
         return shutil.which("blender")
 
     def missing(self, config: Path) -> str:
+        """Why Blender cannot run here, or ""."""
         return "" if self.executable() else "blender is not installed (Debian's blender)"
 
     def version(self) -> str:
+        """The first line of ``blender --version``."""
         result = run_host([self.executable(), "--version"])
         return (result.stdout.strip().splitlines() or ["blender"])[0]
 
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
+        """Each check's probes through Blender's view transform, read back from 16-bit PNGs."""
         sources = {}
         for check in checks:
             sources.setdefault((check.src, id(check.probes)), check)

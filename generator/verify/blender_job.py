@@ -13,6 +13,7 @@ import bpy
 
 
 def configure(scene):
+    """Scene settings under which a render is the view transform alone: no dither, look, exposure or curve."""
     scene.render.dither_intensity = 0.0
     view = scene.view_settings
     view.look = "None"
@@ -26,6 +27,7 @@ def configure(scene):
 
 
 def main():
+    """Render the request's jobs (input, space, display, view, output) and write each one's status."""
     with open(sys.argv[sys.argv.index("--") + 1], encoding="utf-8") as handle:
         request = json.load(handle)
     scene = bpy.context.scene

@@ -3,96 +3,65 @@
 Coverage, from the resolved spec (never from the config): every colour space
 to the scene reference and back; every display/view from the scene_linear
 role, from the compositing_log role and from a display-referred space; every
-baked LUT file on its own (:mod:`generator.verify.lut_checks`). Each check names the item a failure points at: the
-colour space, "display / view", or the LUT file.
+baked LUT file on its own (:mod:`generator.verify.lut_checks`). Each check names
+the item a failure points at: the colour space, "display / view", or the LUT file.
+The record itself, its kinds and metrics are :mod:`generator.verify.check`'s.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from functools import lru_cache
+from functools import partial
 
 import numpy as np
 
 from generator import reference, tolerances
+from generator.metrics import colour_relative_error
 from generator.spec.schema import Display, Spec
-from generator.verify import paths, probes
-from generator.verify.allowance import determinate, float32_allowance, view_allowance, with_encoding
+from generator.verify import lut_checks, paths, probes
+from generator.verify.allowance import (
+    determinate,
+    float32_allowance,
+    float32_shift,
+    view_allowance,
+    with_encoding,
+)
+from generator.verify.check import (
+    CODES,
+    COLOUR,
+    FROM_REFERENCE,
+    ITP,
+    KINDS,
+    LUT,
+    RELATIVE,
+    TO_REFERENCE,
+    VIEW,
+    Check,
+    baked_lut,
+    discontinuity_band,
+    evaluate,
+    judging,
+)
 from generator.verify.probes import Family, Probes, Sizes
 
-TO_REFERENCE, FROM_REFERENCE, VIEW, LUT = "to reference", "from reference", "view", "LUT file"
-KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
-#: Metrics: largest per-channel relative error; colour relative error (over the largest
-#: component, the float32 limit after a matrix); ΔE ITP for HDR displays.
-RELATIVE, COLOUR, ITP, CODES = "relative", "colour relative", "ΔE ITP", "10-bit codes"
-
-
-#: Methods whose config view is an exact lattice (scale's log lattice, desaturate's HSV
-#: lattice): held to the issue's every-set bound for exact mappings.
-def view_lut_tolerance(display: Display) -> float:
-    """The bound for a config's baked view LUT, in 10-bit codes (ΔE ITP for HDR displays,
-    DELTA_E_ITP_PER_PQ_CODE each): the LUT issue's in-gamut target, on every probe set.
-    Scale and Desaturate are exact lattices, Perceptual is held to its own lattice: all
-    three are exact but for float32, which each sample's allowance carries (measured 0.026
-    codes and 0.003 ΔE ITP on the default config lossless). The issue's every-set bound of
-    a code let a Scale file whose output was scaled by 0.9991 pass (0.92 codes)."""
-    return tolerances.LUT_VIEW_HDR_IN_GAMUT_DELTA_E_ITP if display.is_hdr else tolerances.LUT_CLF_IN_GAMUT_CODES
-
-
-@dataclass(frozen=True, eq=False)
-class Check:
-    """One conversion an engine runs and the verifier judges.
-
-    ``expected`` is None when the reference evaluation has nothing for the item
-    (``problem`` says why): such a check fails. ``scale`` divides the colour
-    error (a baked curve's error grows by its matrix's largest row sum); ``keep``
-    marks the samples compared (a discontinuity band is left out);
-    ``allowance`` is the float32 limit (:func:`float32_allowance`), an absolute
-    difference per sample and channel taken off before the metric; ``encode``, a
-    float64 function the engine's output goes through first (a view file ending in
-    display light is encoded as its display space does).
-    """
-
-    kind: str
-    item: str
-    src: str
-    dst: str = ""
-    display: str = ""
-    view: str = ""
-    lut: str = ""
-    interpolation: str = "linear"
-    probes: Probes = field(default_factory=lambda: Probes(()), repr=False)
-    expected: np.ndarray | None = field(default=None, repr=False)
-    output: str = paths.CODE
-    metric: str = RELATIVE
-    tolerance: float = tolerances.ANALYTIC_RELATIVE
-    target: Display | None = field(default=None, repr=False)
-    scale: float = 1.0
-    keep: np.ndarray | None = field(default=None, repr=False)
-    allowance: np.ndarray | None = field(default=None, repr=False)
-    problem: str = ""
-    encode: object | None = field(default=None, repr=False)
-
-    @property
-    def title(self) -> str:
-        if self.kind == VIEW:
-            return f"{self.display} / {self.view} from {self.src}"
-        if self.kind == LUT:
-            return self.lut
-        return f"{self.src} -> {self.dst}"
-
-
-def _evaluate(fn, values: np.ndarray) -> np.ndarray:
-    with np.errstate(all="ignore"):
-        return np.asarray(fn(values), dtype=np.float64)
-
-
-@lru_cache(maxsize=64)
-def baked_lut(name: str, curve):
-    """The LUT the build writes for ``curve`` (deterministic: the bake is re-run from the spec)."""
-    from generator.luts.curve1d import bake_curve
-
-    return bake_curve(name, curve, curve.domain)
+#: The record's names, from :mod:`generator.verify.check`, where callers have long found them.
+__all__ = [
+    "CODES",
+    "COLOUR",
+    "FROM_REFERENCE",
+    "ITP",
+    "KINDS",
+    "LUT",
+    "RELATIVE",
+    "TO_REFERENCE",
+    "VIEW",
+    "Check",
+    "build_checks",
+    "conversion_check",
+    "input_probes",
+    "space_checks",
+    "view_checks",
+    "view_sources",
+]
 
 
 def input_probes(end: paths.Endpoint, scene: tuple[Family, ...], sizes: Sizes) -> Probes:
@@ -103,53 +72,15 @@ def input_probes(end: paths.Endpoint, scene: tuple[Family, ...], sizes: Sizes) -
         lut = (len(baked.values), baked.shaper)
     families = probes.code_families(*end.code_range, sizes, lut)
     for family in scene:
-        values = family.values if family.name == probes.NON_FINITE else _evaluate(end.encode, family.values)
+        values = family.values if family.name == probes.NON_FINITE else evaluate(end.encode, family.values)
         families.append(Family(family.name, values, family.notes))
     return Probes(tuple(families))
-
-
-def _band(end: paths.Endpoint | None, codes: np.ndarray, curve=None) -> np.ndarray | None:
-    """Samples away from a baked curve's published discontinuities (None: keep all)."""
-    curve = curve if end is None else end.curve if end.baked else None
-    jumps = getattr(curve, "discontinuities", ())
-    if not jumps:
-        return None
-    keep = np.ones(len(codes), dtype=bool)
-    for jump in jumps:
-        keep &= np.all(np.abs(codes - jump) > tolerances.DISCONTINUITY_BAND, axis=-1)
-    return keep
-
-
-def _judging(
-    out: paths.Endpoint | None, display: Display | None, baked_src: paths.Endpoint | None, view: str = ""
-) -> dict:
-    """Metric, tolerance, scale and target for an output kind (a baked source, a view)."""
-    method = paths.view_method(view) if view else None
-    if view and paths.is_aces13(view):
-        # OCIO's ACES 1.x builtins depart from the CTL (black's offset, the red modifier's
-        # saturation, rescaled tone-curve slopes): held to what was measured against them.
-        return dict(
-            metric=ITP if display.is_hdr else CODES,
-            target=display,
-            tolerance=tolerances.ACES13_OCIO_RED_DARK_DELTA_E_ITP if display.is_hdr else tolerances.ACES13_OCIO_CODES,
-        )
-    if method is not None and method not in paths.ANALYTIC_METHODS:
-        return dict(metric=ITP if display.is_hdr else CODES, tolerance=view_lut_tolerance(display), target=display)
-    if baked_src is not None and baked_src.baked and (out is None or out.output == paths.LINEAR):
-        gain = float(np.abs(baked_src.matrix).sum(1).max())
-        return dict(metric=COLOUR, tolerance=tolerances.BAKED_CURVE_RELATIVE, scale=gain)
-    if display is not None and display.is_hdr:
-        return dict(metric=ITP, tolerance=tolerances.ANALYTIC_DELTA_E_ITP, target=display)
-    if out is not None and out.output == paths.LINEAR:
-        return dict(metric=COLOUR)
-    tolerance = tolerances.BAKED_CURVE_RELATIVE if out is not None and out.baked else tolerances.ANALYTIC_RELATIVE
-    return dict(metric=RELATIVE, tolerance=tolerance, target=display)
 
 
 def _expected(fn, values: np.ndarray, what: str) -> tuple[np.ndarray | None, str]:
     if fn is None:
         return None, f"the reference evaluation has no {what}"
-    return _evaluate(fn, values), ""
+    return evaluate(fn, values), ""
 
 
 def _hlg_dark(display: Display, codes: np.ndarray) -> np.ndarray:
@@ -166,9 +97,7 @@ def _inside(values: np.ndarray, bounds: tuple[float, float]) -> np.ndarray:
 
 def _representable(end: paths.Endpoint, ref: np.ndarray, codes: np.ndarray) -> np.ndarray:
     """Samples of a bounded encoding inside its code range whose codes decode back to ``ref``."""
-    from generator.metrics import colour_relative_error
-
-    back = _evaluate(end.decode, codes)
+    back = evaluate(end.decode, codes)
     with np.errstate(invalid="ignore"):
         return _inside(codes, end.code_range) & (colour_relative_error(back, ref) <= tolerances.REPRESENTABLE_RELATIVE)
 
@@ -185,13 +114,13 @@ def _keep(
     HLG_BUILTIN_BLACK for HLG displays."""
     masks = []
     if src is not None:
-        masks.append(_band(src, inputs))
+        masks.append(discontinuity_band(src, inputs))
         if src.valid is not None:
             masks.append(_inside(inputs, src.code_range) & src.valid(inputs))
         if src.display is not None and src.display.eotf_name == "HLG":
             masks.append(~_hlg_dark(src.display, inputs))
     if dst is not None and expected is not None:
-        masks.append(_band(dst, expected))
+        masks.append(discontinuity_band(dst, expected))
         if dst.valid is not None:
             masks.append(_representable(dst, inputs, expected) & dst.valid(expected))
     if display is not None and display.eotf_name == "HLG" and expected is not None:
@@ -207,7 +136,7 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
     for end in ends.values():
         if end.decode is not None:
             inputs = input_probes(end, scene, sizes)
-            expected = _evaluate(lambda v: ref.encode(end.decode(v)), inputs.values)  # noqa: B023 (called at once)
+            expected = evaluate(lambda v: ref.encode(end.decode(v)), inputs.values)  # noqa: B023 (called at once)
             out.append(
                 Check(
                     TO_REFERENCE,
@@ -219,14 +148,14 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
                     output=ref.output,
                     keep=_keep(end, None, None, inputs.values, expected),
                     allowance=_input_rounding(end, ref, inputs.values),
-                    **_judging(ref, None, end),
+                    **judging(ref, None, end),
                 )
             )
         decoded = (
             []
             if end.decode is None
             else [
-                Family(f.name, _evaluate(end.decode, f.values), f.notes)
+                Family(f.name, evaluate(end.decode, f.values), f.notes)
                 for f in probes.code_families(*end.code_range, sizes)
             ]
         )
@@ -256,7 +185,7 @@ def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes
                 problem=problem,
                 allowance=allowance,
                 keep=keep,
-                **_judging(end, end.display, None, end.view),
+                **judging(end, end.display, None, end.view),
             )
         )
     return out
@@ -268,8 +197,6 @@ def _input_rounding(end: paths.Endpoint, ref: paths.Endpoint, codes: np.ndarray)
     codes times the curve's slope among it. A table may rise steeply between two rows (a clip
     flag: 80 to 100 over one 10-bit step, 8e4 per code, where a code's rounding is 1e-4 of the
     value); no float32 engine can do better there."""
-    from generator.verify.allowance import float32_shift
-
     if not end.baked or end.matrix is None or end.linear is None or ref.matrix is None:
         return None
     with np.errstate(all="ignore"):
@@ -305,31 +232,46 @@ def view_sources(spec: Spec, ends: dict) -> list[paths.Endpoint]:
 
 
 def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
-    """Every display/view from each of :func:`view_sources`."""
+    """Every display/view from each of :func:`view_sources`. Each source's probes are decoded
+    once; an ACES view's rendering (:func:`paths.aces_stage`) is evaluated once per source and
+    shared by the displays showing it, as is the float32 shift of a display's linear values
+    by its views."""
     out = []
-    sources = [(src, input_probes(src, scene, sizes)) for src in view_sources(spec, ends)]
+    sources = []
+    for src in view_sources(spec, ends):
+        inputs = input_probes(src, scene, sizes)
+        sources.append((src, inputs, None if src.decode is None else _read_only(evaluate(src.decode, inputs.values))))
+    rendered = {}
     for display in spec.displays:
         back, clip = ends[display.name].matrix, ends[display.name].encode
+        shifts = {}
         for view in display.views:
-            fn = paths.view_function(spec, display, view)
-            for src, inputs in sources:
-                common = dict(probes=inputs, display=display.name, view=view)
+            stage = None if view == paths.RAW else paths.aces_stage(spec, display, view)
+            fn = None if view == paths.RAW or stage is not None else paths.view_function(spec, display, view)
+            for src, inputs, decoded in sources:
+                title, common = f"{display.name} / {view}", dict(probes=inputs, display=display.name, view=view)
                 if view == paths.RAW:
-                    out.append(
-                        Check(
-                            VIEW,
-                            f"{display.name} / {view}",
-                            src.name,
-                            output=paths.DATA,
-                            expected=inputs.values.copy(),
-                            **common,
-                        )
-                    )
+                    out.append(Check(VIEW, title, src.name, output=paths.DATA, expected=inputs.values.copy(), **common))
                     continue
-                through = None if fn is None else (lambda v, f=fn, s=src: f(s.decode(v)))
-                expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
+                if decoded is None or (stage is None and fn is None):
+                    expected, problem = None, f"the reference evaluation has no evaluation of the view {view!r}"
+                elif stage is not None:
+                    key = (stage[0], src.name)
+                    if key not in rendered:
+                        rendered[key] = _read_only(evaluate(stage[1], decoded))
+                    expected, problem = (
+                        evaluate(partial(reference.display_xyz_encode, spec, display), rendered[key]),
+                        "",
+                    )
+                else:
+                    expected, problem = evaluate(fn, decoded), ""
+                shifted = None
+                if expected is not None and src.matrix is not None and src.linear is not None:
+                    if src.name not in shifts:
+                        shifts[src.name] = float32_shift(src, back, inputs.values)
+                    shifted = shifts[src.name]
                 allowance = with_encoding(
-                    view_allowance(spec, src, back, display, view, inputs.values, expected, clip),
+                    view_allowance(spec, src, back, display, view, inputs.values, expected, clip, shifted),
                     spec,
                     display,
                     expected,
@@ -337,7 +279,7 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
                 out.append(
                     Check(
                         VIEW,
-                        f"{display.name} / {view}",
+                        title,
                         src.name,
                         output=paths.DISPLAY,
                         expected=expected,
@@ -345,10 +287,16 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
                         allowance=allowance,
                         keep=_keep(src, None, display, inputs.values, expected),
                         **common,
-                        **_judging(None, display, None, view),
+                        **judging(None, display, None, view),
                     )
                 )
     return out
+
+
+def _read_only(values: np.ndarray) -> np.ndarray:
+    """``values``, marked read-only: an array several checks' evaluations share."""
+    values.flags.writeable = False
+    return values
 
 
 def conversion_check(
@@ -413,7 +361,7 @@ def conversion_check(
         problem=problem,
         allowance=allowance,
         keep=keep,
-        **_judging(target, target.display, source, target.view),
+        **judging(target, target.display, source, target.view),
     )
 
 
@@ -451,7 +399,7 @@ def _view_conversion(spec: Spec, ends: dict, source, inputs: Probes, display: st
         allowance=allowance,
         keep=_keep(source, None, target, inputs.values, expected),
         **common,
-        **_judging(None, target, None, view),
+        **judging(None, target, None, view),
     )
 
 
@@ -466,20 +414,9 @@ def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
     if VIEW in kinds:
         out += view_checks(spec, ends, scene, sizes)
     if LUT in kinds:
-        from generator.verify import lut_checks  # it builds on this module
-
         out += (
             lut_checks.lut_checks(spec, sizes)
             + lut_checks.view_lut_checks(spec, scene, sizes)
             + lut_checks.aces_lut_checks(spec, sizes)
         )
     return out
-
-
-@lru_cache(maxsize=32)
-def display_code_limit(display: Display) -> float:
-    """The largest code value ``display`` is sent: the largest over the corners of its
-    light cube [0, peak]^3 (HLG's inverse OOTF lifts a saturated peak above the white's code)."""
-    corners = np.array(np.meshgrid([0.0, 1.0], [0.0, 1.0], [0.0, 1.0])).reshape(3, -1).T * display.clip_high
-    with np.errstate(all="ignore"):
-        return float(np.nanmax(reference.display_encode(display, corners[1:])))

@@ -12,6 +12,10 @@ act on (:func:`_additions`).
 
 from __future__ import annotations
 
+import PyOpenColorIO as ocio
+
+from generator.ocio.emit import LUT_FOLDER, generated_spaces, space_categories
+from generator.ocio.write import leaf_transforms
 from generator.spec.schema import Display, Spec
 
 
@@ -30,8 +34,6 @@ def _names(listed) -> list[str]:
 def _menu(space) -> tuple:
     """What hosts sort and filter a colour space's menus by, as the build writes it: family,
     encoding, the data flag and categories."""
-    from generator.ocio.emit import space_categories
-
     if isinstance(space, Display):
         return ("Display", space.encoding, False, ["file-io"])
     return (space.family, space.encoding, space.is_data, space_categories(space))
@@ -39,8 +41,6 @@ def _menu(space) -> tuple:
 
 def differences(cfg, spec: Spec) -> list[str]:
     """Each declaration of ``cfg`` that is not what ``spec`` builds, described in a phrase."""
-    import PyOpenColorIO as ocio
-
     out = []
     roles = dict(cfg.getRoles())
     for role, target in spec.roles:
@@ -82,8 +82,6 @@ def differences(cfg, spec: Spec) -> list[str]:
         if shared:
             out.append(f"{display.name} also lists the shared views {shared}, which the build does not write")
     out += _additions(cfg, spec)
-    from generator.ocio.emit import LUT_FOLDER
-
     if cfg.getSearchPath() != LUT_FOLDER:
         out.append(
             f"the search path is {cfg.getSearchPath()!r}, the build's {LUT_FOLDER!r} (the folder beside the "
@@ -103,8 +101,6 @@ def differences(cfg, spec: Spec) -> list[str]:
         extra = [] if held is None else sorted(set(held.getAliases()) - set(space.aliases))
         if extra:
             out.append(f"{space.name} has the aliases {extra}, which the spec does not give it")
-    from generator.ocio.emit import generated_spaces
-
     for built in generated_spaces(spec):
         held = cfg.getColorSpace(built.getName())
         if held is None:
@@ -123,8 +119,6 @@ def _additions(cfg, spec: Spec) -> list[str]:
     views, and so which default, a host offers an image), named transforms (listed in hosts'
     colour-space menus), context variables (a file name then depends on the shell), and a file
     read by any name but a bare one on the search path (a path leaves the build's folder)."""
-    import PyOpenColorIO as ocio
-
     out = []
     version = (cfg.getMajorVersion(), cfg.getMinorVersion())
     if version != tuple(spec.ocio_version):
@@ -153,10 +147,6 @@ def _additions(cfg, spec: Spec) -> list[str]:
 
 def _file_sources(cfg) -> list[tuple[str, str]]:
     """Every FileTransform's file in ``cfg``'s colour spaces and view transforms, with its owner."""
-    import PyOpenColorIO as ocio
-
-    from generator.ocio.write import leaf_transforms
-
     return [(owner, t.getSrc()) for owner, t in leaf_transforms(cfg) if isinstance(t, ocio.FileTransform)]
 
 

@@ -14,16 +14,16 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+import PyOpenColorIO as ocio
 
-from generator.verify.checks import KINDS, LUT, VIEW, Check
+from generator.verify.check import KINDS, LUT, VIEW, Check
 from generator.verify.judge import Output
 
 ENGINE_NAMES = ("ocio", "oiiotool", "ocioconvert", "blender", "gpu")
 
 
 def load_config(config_path: str | Path):
-    import PyOpenColorIO as ocio
-
+    """The config at ``config_path``, freshly loaded by PyOpenColorIO."""
     return ocio.Config.CreateFromFile(str(config_path))
 
 
@@ -31,17 +31,34 @@ def uncached_config(config_path: str | Path):
     """The config with OCIO's processor cache off, for processors of single operators: OCIO
     caches a Lut1DTransform's processor by a key its values are not in, so the second of two
     tables of one length (a view's hue table and its inverse) got the first's processor."""
-    import PyOpenColorIO as ocio
-
     cfg = load_config(config_path)
     cfg.setProcessorCacheFlags(ocio.PROCESSOR_CACHE_OFF)
     return cfg
 
 
+#: The configs of the running verification, by (path, processor cache on): loaded once, so the
+#: in-process engines and the explanations share each one's processors (:func:`run_config`).
+_RUN_CONFIGS: dict[tuple[str, bool], object] = {}
+
+
+def clear_caches() -> None:
+    """Forget OCIO's caches (it caches LUT files by path) and the running verification's configs:
+    a verification reads the files as they are when it starts."""
+    ocio.ClearAllCaches()
+    _RUN_CONFIGS.clear()
+
+
+def run_config(config_path: str | Path, cached: bool = True):
+    """The config at ``config_path``, loaded once until :func:`clear_caches` (``cached=False``:
+    :func:`uncached_config`'s, for processors of single operators)."""
+    key = (str(config_path), cached)
+    if key not in _RUN_CONFIGS:
+        _RUN_CONFIGS[key] = load_config(config_path) if cached else uncached_config(config_path)
+    return _RUN_CONFIGS[key]
+
+
 def processor(cfg, check: Check, config_dir: Path):
     """The OCIO processor ``check`` exercises."""
-    import PyOpenColorIO as ocio
-
     if check.kind == VIEW:
         return cfg.getProcessor(check.src, check.display, check.view, ocio.TRANSFORM_DIR_FORWARD)
     if check.kind == LUT:
@@ -69,20 +86,20 @@ class OcioEngine:
     kinds: tuple = KINDS
 
     def missing(self, config_path: Path) -> str:
+        """Never missing: PyOpenColorIO is a dependency."""
         return ""
 
     def version(self) -> str:
-        import PyOpenColorIO as ocio
-
+        """PyOpenColorIO's version and the optimisation flags."""
         return f"PyOpenColorIO {ocio.__version__}, {self.flags}"
 
     def optimisation(self):
-        import PyOpenColorIO as ocio
-
+        """The OCIO optimisation flags this engine names."""
         return getattr(ocio, self.flags)
 
     def run(self, config_path: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
-        cfg = load_config(config_path)
+        """Each check's probes through its processor, one output each (an error names what OCIO raised)."""
+        cfg = run_config(config_path)
         out = []
         for check in checks:
             try:
@@ -108,8 +125,6 @@ def isolate(cfg, transforms: list, values: np.ndarray, exact, odd, error_of) -> 
     error; and the chain's own error run operator by operator with ``exact`` alone (a chain OCIO
     evaluates differently whole, merging its operators, departs by itself, and then names no
     operator). ``cfg`` should be :func:`uncached_config`'s."""
-    import PyOpenColorIO as ocio
-
     processors = [cfg.getProcessor(t) for t in transforms]
 
     def run(index: int) -> np.ndarray:
@@ -137,9 +152,7 @@ def explain_default_flags(config_path: Path, check: Check, error_of) -> str:
     brings the error within it, and the operator of the chain whose fast evaluation alone
     gives the largest error. ``error_of(values)`` is the check's worst error for an engine
     output. "" when no single flag explains it (the failure is then the config's)."""
-    import PyOpenColorIO as ocio
-
-    cfg = uncached_config(config_path)
+    cfg = run_config(config_path, cached=False)
     proc = processor(cfg, check, config_path.parent)
     default = ocio.OPTIMIZATION_DEFAULT
     for name in DEFAULT_EXTRAS:

@@ -18,6 +18,8 @@ import numpy as np
 
 from generator import reference
 from generator.colorimetry.matrices import apply_matrix
+from generator.gamut import METHODS, DisplayGamut
+from generator.rendering import views
 from generator.spec.schema import Display, Spec
 from generator.verify import probes
 
@@ -26,6 +28,7 @@ RAMP_WAVELENGTHS = (450.0, 480.0, 500.0, 520.0, 560.0, 590.0, 620.0)
 
 
 def _pyplot():
+    """pyplot on the Agg backend (matplotlib is imported only when figures are asked for: it is slow to load)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -64,9 +67,6 @@ def _triangle(axes, primaries, label: str, colour=None, style="-") -> None:
 def _mapped(spec: Spec, display: Display, scene: np.ndarray) -> dict[str, np.ndarray]:
     """Display-linear RGB of ``scene`` colours after each mapping method and each ACES view
     the display offers, in [0, 1] of peak."""
-    from generator.gamut import METHODS, DisplayGamut
-    from generator.rendering import views
-
     gamut = DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
     linear = apply_matrix(reference.display_matrix(spec, display) @ reference.scene_to_display_reference(spec), scene)
     out = {name: method(linear / display.clip_high, gamut) for name, method in METHODS.items()}
@@ -82,7 +82,7 @@ def _mapped(spec: Spec, display: Display, scene: np.ndarray) -> dict[str, np.nda
 def chromaticity(spec: Spec, display: Display | None = None, spaces: bool = False):
     """The xy diagram: locus, display triangles (and every space's with ``spaces``),
     probe colours and, for ``display``, where each mapping method sends them."""
-    from generator.colour_science import plotting
+    from generator.colour_science import plotting  # colour-science's plotting: slow to import, figures only
 
     plt = _pyplot()
     figure, axes = plt.subplots(figsize=(9, 9))
@@ -115,7 +115,7 @@ def chromaticity(spec: Spec, display: Display | None = None, spaces: bool = Fals
 def mapping_ramps(spec: Spec, display: Display):
     """Ramps from grey (Y = 0.3) to spectral colours of the same luminance, each method's result
     shown with the display's own encoding (one row per wavelength, one panel per method)."""
-    import colour
+    import colour  # slow to import: figures only
 
     plt = _pyplot()
     steps = np.linspace(0.0, 1.0, 96)

@@ -16,9 +16,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+import PyOpenColorIO as ocio
 
-from generator.verify.checks import KINDS, Check
-from generator.verify.engines import load_config, processor
+from generator.verify.check import KINDS, Check
+from generator.verify.engines import apply, cpu_with, isolate, load_config, processor, uncached_config
 from generator.verify.judge import Output
 
 #: GLSL version the shaders are written in (OCIO's GPU_LANGUAGE_GLSL_4_0), and the OpenGL
@@ -45,7 +46,7 @@ void main() { ocioforge_output = ocioforge_view(texelFetch(ocioforge_input, ivec
 
 def open_device():
     """A headless OpenGL context (moderngl over EGL); raises when none can be opened."""
-    import moderngl
+    import moderngl  # optional: without it the GPU engine reports itself missing
 
     return moderngl.create_standalone_context(backend="egl", require=GLSL_VERSION)
 
@@ -53,7 +54,6 @@ def open_device():
 def _texture(texture, interpolation, resources: list, unit: int, program, sampler: str):
     """Bind a LUT's ``texture`` (kept in ``resources``, to be released) to ``unit`` as ``sampler``."""
     import moderngl
-    import PyOpenColorIO as ocio
 
     resources.append(texture)
     filtering = moderngl.NEAREST if interpolation == ocio.INTERP_NEAREST else moderngl.LINEAR
@@ -68,7 +68,6 @@ def _texture(texture, interpolation, resources: list, unit: int, program, sample
 def gpu_apply(ctx, proc, values: np.ndarray) -> np.ndarray:
     """``values`` (n, 3) through ``proc``'s GPU processor (OCIO's default flags), drawn on ``ctx``."""
     import moderngl
-    import PyOpenColorIO as ocio
 
     if not len(values):
         return np.zeros((0, 3))
@@ -141,6 +140,7 @@ class GpuEngine:
     kinds: tuple = KINDS
 
     def missing(self, config: Path) -> str:
+        """Why the GPU engine cannot run here (no moderngl, no OpenGL device), or ""."""
         try:
             import moderngl  # noqa: F401
         except ImportError as error:
@@ -152,8 +152,7 @@ class GpuEngine:
         return ""
 
     def version(self) -> str:
-        import PyOpenColorIO as ocio
-
+        """PyOpenColorIO, GLSL and the OpenGL renderer the shaders run on."""
         ctx = open_device()
         try:
             return (
@@ -164,6 +163,7 @@ class GpuEngine:
             ctx.release()
 
     def run(self, config_path: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
+        """Each check's probes through OCIO's GPU shader for its processor, read back as float32."""
         cfg = load_config(config_path)
         ctx = open_device()
         out = []
@@ -190,10 +190,6 @@ def culprit(config_path: Path, check: Check, error_of) -> str:
     (``error_of(values)``, the check's worst error for an output; :func:`~generator.verify.
     engines.isolate`), or, when no operator alone does, that OCIO's GPU processor of the whole
     chain departs (its optimiser merges or drops operators there)."""
-    import PyOpenColorIO as ocio
-
-    from generator.verify.engines import apply, cpu_with, isolate, uncached_config
-
     cfg = uncached_config(config_path)
     proc = processor(cfg, check, config_path.parent)
     cpu = error_of(apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS), check.probes.values))

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from generator.verify import images
-from generator.verify.checks import KINDS, LUT, VIEW, Check
+from generator.verify.check import KINDS, LUT, VIEW, Check
 from generator.verify.judge import Output
 
 #: What OCIO prints when a library is older than the config it is asked to read.
@@ -58,6 +58,7 @@ def _message(result: subprocess.CompletedProcess) -> str:
 
 
 def write_inputs(checks: list[Check], workdir: Path, prefix: str) -> list[Path]:
+    """Each check's probes written as a float EXR in ``workdir``, named by ``prefix`` and position."""
     paths = []
     for index, check in enumerate(checks):
         path = workdir / f"{prefix}-{index:04d}-in.exr"
@@ -67,6 +68,7 @@ def write_inputs(checks: list[Check], workdir: Path, prefix: str) -> list[Path]:
 
 
 def read_output(path: Path, check: Check, variant: str, failure: str) -> Output:
+    """A host's output file read back for ``check``, or the error (``failure``, the host's message) if it wrote none."""
     if not path.is_file():
         return Output(None, variant, error=failure or f"no output written ({path.name})")
     try:
@@ -78,13 +80,17 @@ def read_output(path: Path, check: Check, variant: str, failure: str) -> Output:
 
 @dataclass(frozen=True)
 class OiiotoolEngine:
+    """OpenImageIO's oiiotool (``--colorconvert``, ``--ociodisplay``, ``--ociofiletransform``), to float EXR and integer files."""
+
     name: str = "oiiotool"
     kinds: tuple = KINDS
 
     def executable(self) -> str | None:
+        """The oiiotool beside this Python (pip's openimageio) or on PATH, or None."""
         return _beside_python("oiiotool")
 
     def missing(self, config: Path) -> str:
+        """Why oiiotool cannot run here, or ""."""
         return (
             ""
             if self.executable()
@@ -92,6 +98,7 @@ class OiiotoolEngine:
         )
 
     def version(self) -> str:
+        """oiiotool's version and the OpenColorIO it was built with."""
         result = run_host([self.executable(), "--colorconfiginfo"])
         ocio_version = next((line for line in result.stdout.splitlines() if "OpenColorIO" in line), "")
         return f"{run_host([self.executable(), '--version']).stdout.strip()} {ocio_version.strip()}".strip()
@@ -119,6 +126,7 @@ class OiiotoolEngine:
         return [self.executable(), "--wildcardoff", "--colorconfig", str(config)]
 
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
+        """Every check through one oiiotool command, read back from each file variant."""
         loaded = run_host([*self._command(config), "--echo", "ok"])
         if TOO_NEW in loaded.stdout + loaded.stderr:
             raise NotRunnable(_message(loaded))
@@ -146,16 +154,21 @@ class OiiotoolEngine:
 
 @dataclass(frozen=True)
 class OcioconvertEngine:
+    """The system's ocioconvert, one process per check, to a float EXR."""
+
     name: str = "ocioconvert"
     kinds: tuple = KINDS
 
     def executable(self) -> str | None:
+        """The system's ocioconvert (not this Python environment's), or None."""
         return _outside_python("ocioconvert")
 
     def missing(self, config: Path) -> str:
+        """Why ocioconvert cannot run here, or ""."""
         return "" if self.executable() else "ocioconvert is not installed (Debian's opencolorio-tools)"
 
     def version(self) -> str:
+        """Where the ocioconvert run is (it prints no version)."""
         return f"{self.executable()} (the system's, outside this Python environment)"
 
     def _command(self, check: Check, source: Path, target: Path, config: Path) -> list[str]:
@@ -167,6 +180,7 @@ class OcioconvertEngine:
         return [exe, str(source), check.src, str(target), check.dst]
 
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
+        """Each check through its own ocioconvert process, read back from a float EXR."""
         inputs = write_inputs(checks, workdir, "ocioconvert")
         targets = [workdir / f"ocioconvert-{i:04d}-out.exr" for i in range(len(checks))]
         env = {**os.environ, "OCIO": str(config)}  # OCIO's overrides set aside by verify()

@@ -14,7 +14,7 @@ WIDTH = 128
 
 def write(path: str | Path, values: np.ndarray) -> None:
     """Write (n, 3) values as an uncompressed float32 OpenEXR image."""
-    import OpenImageIO as oiio
+    import OpenImageIO as oiio  # optional: only the host engines read and write images
 
     values = np.asarray(values, dtype=np.float32).reshape(-1, 3)
     rows = max(1, -(-len(values) // WIDTH))

@@ -28,7 +28,7 @@ import numpy as np
 from generator import tolerances
 from generator.metrics import colour_relative_error, delta_e_itp, dequantised, percentile_99, relative_error
 from generator.verify import paths
-from generator.verify.checks import CODES, COLOUR, ITP, Check, display_code_limit
+from generator.verify.check import CODES, COLOUR, ITP, Check, display_code_limit
 
 PASS, FAIL, APPROX, NOT_RUN = "pass", "FAIL", "approx", "not run"
 

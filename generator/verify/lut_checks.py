@@ -11,11 +11,18 @@ import numpy as np
 
 from generator import reference, tolerances
 from generator.colorimetry.matrices import apply_matrix
+from generator.luts import aces_lattice, hsv, hsv_axes
+from generator.luts.axes import LogAxis
+from generator.luts.evaluate import cell_inputs, shaper_inputs
+from generator.luts.hsv_axes import ocio_hsv_to_rgb
+from generator.luts.lattice import grid, node_values, preimages
+from generator.luts.view import HSV_METHOD, LATTICE_DEFINED, ends_in_light, view_filename, view_lattice
 from generator.ocio.curves import curve_label
+from generator.ocio.emit import LUT_FOLDER, baked_aces_views
 from generator.spec.schema import Display, Spec
 from generator.verify import paths, probes
 from generator.verify.allowance import hsv_file_allowance, lattice_file_allowance
-from generator.verify.checks import LUT, Check, _band, _evaluate, _judging, baked_lut
+from generator.verify.check import LUT, Check, baked_lut, discontinuity_band, evaluate, judging
 from generator.verify.probes import Family, Probes, Sizes
 
 
@@ -23,8 +30,6 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
     """Every baked LUT file (a colour space's curve, a display's EOTF) against the curve it
     stands for, on its nodes, between them (a quarter, a half, three quarters of the way)
     and on a ramp."""
-    from generator.ocio.emit import LUT_FOLDER
-
     curves = {
         curve_label(spec, s.name, s.curve_name): s.curve for s in spec.colour_spaces if paths.space_is_baked(spec, s)
     }
@@ -39,7 +44,7 @@ def lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
         lo, hi = baked.domain
         codes = lo + (hi - lo) * u**baked.shaper
         inputs = Probes((Family("LUT nodes and between", np.repeat(u[:, None], 3, axis=1)),))
-        keep = _band(None, np.repeat(codes[:, None], 3, axis=1), curve)
+        keep = discontinuity_band(None, np.repeat(codes[:, None], 3, axis=1), curve)
         out.append(
             Check(
                 LUT,
@@ -61,9 +66,6 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
     the display's codes, or to display light that the verifier then encodes in float64,
     applied tetrahedrally) against its view's mapping (:func:`_lattice_probes` for a view
     defined by its lattice)."""
-    from generator.luts.view import HSV_METHOD, LATTICE_DEFINED, ends_in_light, view_filename
-    from generator.ocio.emit import LUT_FOLDER
-
     out = []
     for display in spec.displays:
         to_display = reference.normalised_display_matrix(spec, display)
@@ -89,7 +91,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
             else:
                 fn = paths.view_function(spec, display, view)
                 checked = Probes((*families, *_output_table_greys(spec, display, method)))
-                expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), checked.values)  # noqa: B023
+                expected = evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), checked.values)  # noqa: B023
             out.append(
                 Check(
                     LUT,
@@ -102,7 +104,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
                     output=paths.DISPLAY,
                     encode=encode,
                     allowance=allowance,
-                    **_judging(None, display, None, view),
+                    **judging(None, display, None, view),
                 )
             )
     return out
@@ -112,9 +114,6 @@ def aces_lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
     """Every baked ACES 2.0 file (AP1, clamped, to limiting RGB over the peak) against its
     float64 evaluation: on the axis's nodes and between them on greys and on each channel
     alone, and on random AP1 colours along the axis."""
-    from generator.luts import aces_lattice
-    from generator.ocio.emit import LUT_FOLDER, baked_aces_views
-
     out = []
     for view in baked_aces_views(spec):
         lat = aces_lattice.bake(view)
@@ -153,11 +152,8 @@ def _output_table_greys(spec: Spec, display: Display, method: str) -> tuple[Fami
     """Greys reading every entry of a view file's output table (a :class:`~generator.luts.axes.
     LogAxis` lattice's 1D table from the mapped grey's coordinate to its code) and the middle
     between neighbours, up to the peak's coordinate, beyond which the mapping sends nothing:
-    random colours read the table only where they land (one entry changed by 0.1 ten-bit codes
-    passed --quick). None for a file without one (it ends in light)."""
-    from generator.luts.axes import LogAxis
-    from generator.luts.view import view_lattice
-
+    random colours read the table only where they land. None for a file without one (it ends
+    in light)."""
     lat = view_lattice(spec, display, method)
     if lat.post is None or not isinstance(lat.pre, LogAxis):
         return ()
@@ -172,10 +168,6 @@ def _lattice_probes(spec: Spec, display: Display, method: str, families: list[Fa
     the shaper table against the lattice rebuilt from the spec (so no part of the file goes
     unread), and every node against the *mapping itself* at the node's input, rounded as the
     file holds it (a lattice assembled wrongly fails here, whatever the rebuilt lattice says)."""
-    from generator.luts.evaluate import cell_inputs, shaper_inputs
-    from generator.luts.lattice import grid, node_values, preimages
-    from generator.luts.view import view_lattice
-
     lat, peak = view_lattice(spec, display, method), display.clip_high
     through = paths.lattice_codes(spec, display, method)
     lattice_families = (
@@ -198,10 +190,6 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
     display's file from those coordinates (in float32) to the HSV of the mapped colour,
     judged as the view is, in display codes (the verifier turns the output back into RGB
     with OCIO's HSV_TO_RGB, in float64, and encodes it)."""
-    from generator.luts import hsv, hsv_axes
-    from generator.luts.view import HSV_METHOD, view_filename
-    from generator.ocio.emit import LUT_FOLDER
-
     to_display = reference.normalised_display_matrix(spec, display)
     finite = [f for f in families if f.name != probes.NON_FINITE]
     values = [Family(f.name, _float32(hsv_axes.ocio_rgb_to_hsv(f.values)), f.notes) for f in finite]
@@ -213,7 +201,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
     fn = paths.view_function(spec, display, view)
 
     light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
-    expected = _evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
+    expected = evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)
     name = f"{LUT_FOLDER}/{view_filename(spec, display, HSV_METHOD)}"
     return [
         Check(
@@ -235,7 +223,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
             output=paths.DISPLAY,
             encode=partial(_encode_hsv, display),
             allowance=hsv_file_allowance(display, view, light * display.clip_high, expected),
-            **_judging(None, display, None, view),
+            **judging(None, display, None, view),
         ),
     ]
 
@@ -246,8 +234,6 @@ def _float32(values: np.ndarray) -> np.ndarray:
 
 def _encode_hsv(display: Display, values: np.ndarray) -> np.ndarray:
     """An HSV view file's output (OCIO HSV of normalised display light) to the display's codes."""
-    from generator.luts.hsv_axes import ocio_hsv_to_rgb
-
     return _encode_light(display, ocio_hsv_to_rgb(values))
 
 

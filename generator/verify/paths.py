@@ -30,10 +30,20 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import reference
+from generator.colorimetry import adx
+from generator.colorimetry.curves import HALF_MAX
 from generator.colorimetry.matrices import apply_matrix
 from generator.colorimetry.transfer import Linear
-from generator.ocio.capabilities import builtin_code_domain
+from generator.luts import aces_lattice
+from generator.luts.axes import LOG_METHODS
+from generator.luts.evaluate import display_file
+from generator.luts.lattice import DISPLAY_RANGE, log_axis_high
+from generator.luts.view import HSV_METHOD, LATTICE_DEFINED, ends_in_light, view_lattice
+from generator.ocio.capabilities import aces_analytic, builtin_code_domain
 from generator.ocio.curves import curve_label, is_baked
+from generator.ocio.emit import INVERTED_AS_COLORIMETRIC
+from generator.rendering import views
+from generator.spec.allowed import COLORIMETRIC_ALIASES, VIEW_METHODS
 from generator.spec.namespace import DISPLAY_REFERENCE, display_view_space
 from generator.spec.schema import ColourSpace, Display, Spec
 
@@ -93,8 +103,6 @@ def code_range(spec: Spec, space: ColourSpace) -> tuple[float, float]:
     """The code values ``space`` represents: a baked curve's domain, ADX16 up to the code
     that decodes to half-float max (where OCIO's builtin clamps), otherwise [0, 1]."""
     if space.special == "adx16":
-        from generator.colorimetry.curves import HALF_MAX
-
         top = float(np.min(reference.from_reference(spec, space, np.full(3, HALF_MAX))))
         return (0.0, min(1.0, top))
     if space_is_baked(spec, space):
@@ -163,9 +171,6 @@ def _adx_endpoint(spec: Spec, space: ColourSpace) -> Endpoint:
     up in a half-domain LUT whose entries are clamped at half-float max, so an
     input one half-float step below the clamp already interpolates toward it.
     """
-    from generator.colorimetry import adx
-    from generator.colorimetry.curves import HALF_MAX
-
     bits = int(space.special[3:])
 
     def density(codes):
@@ -231,10 +236,7 @@ ANALYTIC_METHODS = ("clip", "rgc")
 
 def view_method(view: str) -> str | None:
     """The gamut-mapping method of a view: the spec's VIEW_METHODS (Colorimetric is clip)."""
-    from generator.spec import load
-
-    methods = getattr(load, "VIEW_METHODS", {COLORIMETRIC: "clip"})
-    return "clip" if view in load.COLORIMETRIC_ALIASES else methods.get(view)
+    return "clip" if view in COLORIMETRIC_ALIASES else VIEW_METHODS.get(view)
 
 
 def lut_range(display: Display, method: str | None = None) -> tuple[float, float] | None:
@@ -242,10 +244,6 @@ def lut_range(display: Display, method: str | None = None) -> tuple[float, float
     beyond (clip and scale treat every negative channel as 0, as their lattice does). None for
     an HSV view, whose lattice clamps OCIO's HSV value instead (from -256 to 65504 times the
     peak, :mod:`generator.luts.hsv`)."""
-    from generator.luts.axes import LOG_METHODS
-    from generator.luts.lattice import DISPLAY_RANGE, log_axis_high
-    from generator.luts.view import HSV_METHOD, ends_in_light
-
     if method == HSV_METHOD:
         return None
     high = log_axis_high(display, ends_in_light(display)) if method in LOG_METHODS else DISPLAY_RANGE[1]
@@ -286,37 +284,40 @@ def view_function(spec: Spec, display: Display, view: str) -> Evaluate | None:
 
 def is_aces13(view: str) -> bool:
     """Whether ``view`` names an ACES 1.3 studio view (OCIO's builtins run them from 2.1)."""
-    from generator.rendering.views import catalogue
-
-    found = catalogue().get(view)
+    found = views.catalogue().get(view)
     return found is not None and found.version == "1.3"
 
 
 def aces_baked(spec: Spec, display: Display, view: str) -> bool:
     """Whether the config of ``spec`` runs ACES view ``view`` as its baked lattice."""
-    from generator.ocio.capabilities import aces_analytic
-
     return not aces_analytic(reference.aces_view_of(display, view).version, spec.ocio_version)
 
 
-def aces_view_function(spec: Spec, display: Display, view: str) -> Evaluate:
-    """Scene reference to ``display``'s codes through an ACES view as the config runs it:
-    the float64 output transform where OCIO runs it analytically, else its baked lattice
-    evaluated in float64 (the file is then what is held to; bench/aces_views.py measures
-    how far it departs from the output transform)."""
+def aces_stage(spec: Spec, display: Display, view: str) -> tuple[tuple, Evaluate] | None:
+    """For an ACES view of ``display``: scene reference to CIE XYZ of the display's light
+    (1.0 = 100 cd/m²) as the config runs it, and a key naming that evaluation, the same on
+    every display showing the view (only their encodings differ); None for any other view."""
+    found = None if view_method(view) == "clip" else reference.aces_view_of(display, view)
+    if found is None:
+        return None
     aces = reference.to_aces_matrix(spec)
     if not aces_baked(spec, display, view):
-        return lambda ref: reference.aces_view(spec, display, view, ref)
-    from generator.luts import aces_lattice
+        return (found, "analytic"), lambda ref: views.evaluate(found, apply_matrix(aces, ref))
+    lat = aces_lattice.bake(found)
+    return (found, "baked"), lambda ref: aces_lattice.evaluate(lat, apply_matrix(aces, ref))
 
-    lat = aces_lattice.bake(reference.aces_view_of(display, view))
-    return lambda ref: reference.display_xyz_encode(spec, display, aces_lattice.evaluate(lat, apply_matrix(aces, ref)))
+
+def aces_view_function(spec: Spec, display: Display, view: str) -> Evaluate:
+    """Scene reference to ``display``'s codes through an ACES view as the config runs it
+    (:func:`aces_stage`): the float64 output transform where OCIO runs it analytically, else
+    its baked lattice evaluated in float64 (the file is then what is held to), then the
+    display's encoding."""
+    _, to_xyz = aces_stage(spec, display, view)
+    return lambda ref: reference.display_xyz_encode(spec, display, to_xyz(ref))
 
 
 def lattice_defined() -> tuple[str, ...]:
     """The methods whose view is defined by its lattice (:data:`generator.luts.view.LATTICE_DEFINED`)."""
-    from generator.luts.view import LATTICE_DEFINED
-
     return LATTICE_DEFINED
 
 
@@ -326,8 +327,6 @@ def lattice_codes(spec: Spec, display: Display, method: str) -> Evaluate:
     evaluated in float64 from the lattice rebuilt from the spec (a file that differs from it,
     or an engine that reads it otherwise, fails); a file ending in display light is then
     encoded as the display space does."""
-    from generator.luts.evaluate import display_file
-    from generator.luts.view import view_lattice
 
     lat = view_lattice(spec, display, method)
 
@@ -359,8 +358,6 @@ def display_view_spaces(spec: Spec) -> list[Endpoint]:
 
 def display_view_endpoint(spec: Spec, display: Display, view: str) -> Endpoint:
     """The "<view> - <display>" space of :func:`display_view_spaces`."""
-    from generator.ocio.emit import INVERTED_AS_COLORIMETRIC
-
     shown = _display_endpoint(spec, display)
     colorimetric = view_method(view) in ("clip", *INVERTED_AS_COLORIMETRIC)
     return Endpoint(
@@ -415,4 +412,5 @@ class LazyEndpoints(dict):
         return name in self.makers
 
     def get(self, name, default=None):
+        """The endpoint called ``name`` (built now if not yet), or ``default``."""
         return self[name] if name in self.makers else default

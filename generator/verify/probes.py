@@ -72,6 +72,7 @@ class Probes:
 
     @cached_property
     def values(self) -> np.ndarray:
+        """Every family's values, concatenated: (n, 3)."""
         return np.concatenate([f.values for f in self.families]) if self.families else np.zeros((0, 3))
 
     @cached_property
@@ -87,7 +88,7 @@ class Probes:
 
     def describe(self, index: int) -> str:
         """The sample at ``index``: its family, position, note and value, to the 9 digits that give
-        back its float32 exactly (6 had put a probe on N-Log's steep toe 0.005 off in the error)."""
+        back its float32 exactly (fewer can land a probe on a steep toe far from the one judged)."""
         family = self.families[int(self.family_index[index])]
         start = sum(len(f.values) for f in self.families[: int(self.family_index[index])])
         note = f" {family.notes[index - start]}" if family.notes else ""
@@ -120,9 +121,7 @@ def code_families(lo: float, hi: float, sizes: Sizes, lut: tuple[int, float] | N
 def colorchecker(spec: Spec, illuminant: str) -> Family:
     """The ColorChecker's 24 patches lit by ``illuminant`` ("D65" or "A"), XYZ relative to the
     illuminant (Y = 1 for a perfect white), taken as XYZ-D65 into the scene reference."""
-    import colour
-
-    from generator import reference
+    import colour  # seconds to import: only when scene families are made, not when convert starts
 
     cmfs = colour.MSDS_CMFS[OBSERVER]
     light = colour.SDS_ILLUMINANTS[illuminant]
@@ -135,8 +134,6 @@ def colorchecker(spec: Spec, illuminant: str) -> Family:
 def monochromatic(spec: Spec, step: float) -> Family:
     """Monochromatic light of unit radiance every ``step`` nm from 380 to 780 nm (Y = ȳ(λ))."""
     import colour
-
-    from generator import reference
 
     wavelengths = np.arange(380.0, 780.0 + step / 2, step)
     xyz = colour.MSDS_CMFS[OBSERVER][wavelengths]
@@ -174,6 +171,7 @@ def display_faces(spec: Spec, count: int) -> Family:
 
 
 def negatives(count: int) -> Family:
+    """Negative scene colours: a quarter all negative, the rest mixed (seeded)."""
     rng = np.random.default_rng(SEED + 1)
     all_negative = rng.uniform(-0.5, 0.0, (count // 4, 3))
     mixed = rng.uniform(-0.5, 1.0, (count - count // 4, 3))

@@ -54,9 +54,9 @@ def table(verification: Verification, everything: bool = True) -> str:
 def groups(verification: Verification) -> dict:
     """(engine, kind, metric) -> counts by verdict, the largest p99, and the worst error with its
     own tolerance: those of the row whose error is the largest part of its tolerance (a group
-    mixes tolerances: an analytic HDR view's 0.01 ΔE ITP and a baked one's 0.035; the largest
-    error beside the largest tolerance had read as within it while rows failed). A row run but
-    not computed (a file OCIO could not load) makes the worst NaN: "-", not a number."""
+    mixes tolerances, so the largest error beside the largest tolerance could read as within it
+    while rows failed). A row run but not computed (a file OCIO could not load) makes the worst
+    NaN: "-", not a number."""
     out = defaultdict(
         lambda: {"checks": 0, PASS: 0, FAIL: 0, APPROX: 0, NOT_RUN: 0, "max": 0.0, "p99": 0.0, "tolerance": 0.0}
     )

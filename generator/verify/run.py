@@ -15,14 +15,29 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
+import PyOpenColorIO as ocio
 
+from generator.files import not_readable
 from generator.ocio.environment import set_aside
 from generator.spec import resolved
 from generator.spec.schema import Spec, SpecError
-from generator.verify import checks as checks_module
-from generator.verify.checks import Check
-from generator.verify.engines import IN_PROCESS, apply, explain_default_flags, load_config, processor
+from generator.verify.blender import BlenderEngine
+from generator.verify.check import KINDS, Check
+from generator.verify.checks import build_checks
+from generator.verify.declarations import differences
+from generator.verify.engines import (
+    IN_PROCESS,
+    apply,
+    clear_caches,
+    explain_default_flags,
+    load_config,
+    processor,
+    run_config,
+)
+from generator.verify.gpu import GpuEngine
+from generator.verify.hosts import NotRunnable, OcioconvertEngine, OiiotoolEngine
 from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, Outcome, judge, judged_output, sample_errors
+from generator.verify.paths import LazyEndpoints
 
 #: Whether this runs on CI: ``CI`` set as CI services set it (true, 1 or yes, in any case).
 ON_CI = os.environ.get("CI", "").strip().lower() in ("true", "1", "yes")
@@ -40,6 +55,8 @@ class EngineRun:
 
 @dataclass(frozen=True, eq=False)
 class Verification:
+    """A verify run's result: the config, its spec, the checks, every engine's outcomes and timings."""
+
     config: Path
     spec: Spec = field(repr=False)
     checks: tuple[Check, ...] = field(repr=False)
@@ -51,6 +68,7 @@ class Verification:
 
     @property
     def failures(self) -> list[Outcome]:
+        """The outcomes that failed."""
         return [o for o in self.outcomes if o.verdict == FAIL]
 
     @property
@@ -61,6 +79,7 @@ class Verification:
 
     @property
     def passed(self) -> bool:
+        """Whether something was compared, nothing failed, and (on CI or strict) every engine ran."""
         return self.compared and not self.failures and not ((ON_CI or self.strict) and self.missing)
 
     @property
@@ -71,10 +90,6 @@ class Verification:
 
 def engine_registry() -> dict:
     """Engine family name -> engines, in table order."""
-    from generator.verify.blender import BlenderEngine
-    from generator.verify.gpu import GpuEngine
-    from generator.verify.hosts import OcioconvertEngine, OiiotoolEngine
-
     return {
         "ocio": IN_PROCESS,
         "oiiotool": (OiiotoolEngine(),),
@@ -86,8 +101,6 @@ def engine_registry() -> dict:
 
 def load(config_path: str | Path) -> tuple[Path, Spec]:
     """The config path and the spec it was built from; SpecError when either is missing or unreadable."""
-    from generator.files import not_readable
-
     if str(config_path).startswith("ocio://"):  # Path() would fold the URI's slashes
         raise SpecError(
             str(config_path),
@@ -112,8 +125,6 @@ def load(config_path: str | Path) -> tuple[Path, Spec]:
 def _same_declarations(path: Path, cfg, spec: Spec) -> None:
     """The config declares the roles, file rules, inactive spaces, views and aliases its stored
     spec builds (:mod:`generator.verify.declarations`): no check's numbers would show an edit."""
-    from generator.verify.declarations import differences
-
     found = differences(cfg, spec)
     if found:
         more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
@@ -129,10 +140,6 @@ def _same_inventory(path: Path, cfg, spec: Spec) -> None:
     """The config holds exactly the colour spaces, displays and views its stored spec builds:
     verify checks what the spec defines, so anything added or removed since the build (a space
     pasted in, a display dropped from the stored spec) would go unchecked."""
-    import PyOpenColorIO as ocio
-
-    from generator.verify.paths import endpoints
-
     held = {
         "colour spaces": set(cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)),
         # every display and view it defines, whatever OCIO_ACTIVE_DISPLAYS / _VIEWS narrow them to
@@ -141,7 +148,7 @@ def _same_inventory(path: Path, cfg, spec: Spec) -> None:
         },
     }
     built = {
-        "colour spaces": set(endpoints(spec)),
+        "colour spaces": set(LazyEndpoints(spec).makers),  # names only: no endpoint is evaluated
         "displays/views": {f"{d.name} / {v}" for d in spec.displays for v in d.views},
     }
     for what in held:
@@ -189,10 +196,8 @@ def _inherit(config: Path, outcome: Outcome, explained: dict) -> Outcome:
     default = explained.get(id(outcome.check))
     if outcome.verdict != FAIL or default is None or outcome.values is None or outcome.violations:
         return outcome
-    cfg = load_config(config)
+    cfg = run_config(config)
     proc = processor(cfg, outcome.check, config.parent)
-    import PyOpenColorIO as ocio
-
     ours = judged_output(
         outcome.check, apply(proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_DEFAULT), outcome.check.probes.values)
     )
@@ -217,8 +222,6 @@ def _engine_explained(config: Path, outcome: Outcome, explainers: dict) -> Outco
 
 def run_engine(engine, config: Path, spec: Spec, checks: list[Check], workdir: Path) -> tuple[EngineRun, list[Outcome]]:
     """Run ``engine`` on the checks it supports and judge every output."""
-    from generator.verify.hosts import NotRunnable
-
     supports = getattr(engine, "supports", lambda check, spec: True)
     supported = [c for c in checks if c.kind in engine.kinds and supports(c, spec)]
     started = time.perf_counter()
@@ -280,7 +283,7 @@ def verify(
     config_path: str | Path,
     engines=("ocio",),
     density: str = "full",
-    kinds=checks_module.KINDS,
+    kinds=KINDS,
     workdir: str | Path | None = None,
     only: str = "",
     strict: bool = False,
@@ -294,16 +297,22 @@ def verify(
 
 
 def _verify(config_path, engines, density, kinds, workdir, only, strict) -> Verification:
-    import PyOpenColorIO as ocio
-
     started = time.perf_counter()
-    ocio.ClearAllCaches()  # OCIO caches LUT files by path: read them as they are now
+    clear_caches()
+    try:
+        return _verify_files(config_path, engines, density, kinds, workdir, only, strict, started)
+    finally:
+        clear_caches()  # the configs it loaded go with it
+
+
+def _verify_files(config_path, engines, density, kinds, workdir, only, strict, started: float) -> Verification:
+    """:func:`verify` once OCIO's caches are cleared: the checks, each engine, the explanations."""
     config, spec = load(config_path)
     registry = engine_registry()
     unknown = [e for e in engines if e not in registry]
     if unknown:
         raise SpecError("--engines", ",".join(unknown), f"unknown engine; allowed: {', '.join(registry)}")
-    checks = [c for c in checks_module.build_checks(spec, density, kinds) if only in c.title]
+    checks = [c for c in build_checks(spec, density, kinds) if only in c.title]
     if only and not checks:
         raise SpecError(
             "--only",
