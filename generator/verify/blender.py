@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from generator.verify.check import VIEW, Check
-from generator.verify.hosts import TOO_NEW, NotRunnable, read_output, run_host, write_inputs
+from generator.verify.hosts import TOO_NEW, NotRunnable, linked_ocio, read_output, run_host, write_inputs
 from generator.verify.judge import Output
 from generator.verify.paths import RAW
 
@@ -62,7 +62,8 @@ class BlenderEngine:
     def version(self) -> str:
         """The first line of ``blender --version``."""
         result = run_host([self.executable(), "--version"])
-        return (result.stdout.strip().splitlines() or ["blender"])[0]
+        ocio = linked_ocio(self.executable()) or "unknown (linked in)"  # Debian's links the system's OCIO
+        return f"{(result.stdout.strip().splitlines() or ['blender'])[0]}, OCIO {ocio}"
 
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
         """Each check's probes through Blender's view transform, read back from 16-bit PNGs."""

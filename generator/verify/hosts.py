@@ -11,6 +11,7 @@ the one the opencolorio wheel installs beside this Python.
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -41,6 +42,28 @@ def _outside_python(name: str) -> str | None:
     here = Path(sys.executable).parent.resolve()
     dirs = [d for d in os.environ.get("PATH", "").split(os.pathsep) if d and Path(d).resolve() != here]
     return shutil.which(name, path=os.pathsep.join(dirs))
+
+
+def ocio_in(text: str) -> str:
+    """The OpenColorIO version a host's own words name ("OpenColorIO 2.1.2, color config: ..."), or ""."""
+    found = re.search(r"OpenColorIO v?(\d+\.\d+(?:\.\d+)?)", text)
+    return found.group(1) if found else ""
+
+
+def linked_ocio(executable: str) -> str:
+    """The version of the OpenColorIO library ``executable`` loads, from the file the dynamic
+    loader finds (Debian's libOpenColorIO.so.2.1 is libOpenColorIO.so.2.1.2); "" when it loads
+    none (a build holding OCIO statically, a script) or ldd is not there."""
+    ldd = shutil.which("ldd")
+    if ldd is None or executable is None:
+        return ""
+    for line in run_host([ldd, executable]).stdout.splitlines():
+        if "libOpenColorIO" in line and "=>" in line:
+            path = os.path.realpath(line.split("=>")[1].split(" (")[0].strip())
+            found = re.search(r"\.so\.(\d+(?:\.\d+)+)$", path)
+            if found:
+                return found.group(1)
+    return ""
 
 
 def run_host(command: list[str], env: dict | None = None) -> subprocess.CompletedProcess:
@@ -99,9 +122,9 @@ class OiiotoolEngine:
 
     def version(self) -> str:
         """oiiotool's version and the OpenColorIO it was built with."""
-        result = run_host([self.executable(), "--colorconfiginfo"])
-        ocio_version = next((line for line in result.stdout.splitlines() if "OpenColorIO" in line), "")
-        return f"{run_host([self.executable(), '--version']).stdout.strip()} {ocio_version.strip()}".strip()
+        exe = self.executable()
+        oiio = run_host([exe, "--version"]).stdout.strip()  # --help names the OCIO it runs, in 2.4 and 3.x
+        return f"OpenImageIO {oiio}, OCIO {ocio_in(run_host([exe, '--help']).stdout) or 'unknown'} ({exe})"
 
     def _ops(self, check: Check, stem: Path) -> list[str]:
         if check.kind == VIEW:
@@ -153,6 +176,29 @@ class OiiotoolEngine:
 
 
 @dataclass(frozen=True)
+class SystemOiiotoolEngine(OiiotoolEngine):
+    """The system's oiiotool (Debian's), outside this Python environment, with the OCIO it links."""
+
+    name: str = "oiiotool system"
+    #: Beside pip's oiiotool: where its OCIO 2.1 cannot load a newer config, the run does not fail.
+    extra = True
+
+    def executable(self) -> str | None:
+        """The oiiotool on PATH outside this Python environment, or None."""
+        return _outside_python("oiiotool")
+
+
+def oiiotool_engines() -> tuple:
+    """The oiiotool beside this Python (or on PATH) and, when another one is installed outside
+    this Python environment (Debian's, running its own OCIO), that one too, as its own engine."""
+    ours, system = OiiotoolEngine(), SystemOiiotoolEngine()
+    found = [ours.executable(), system.executable()]
+    if all(found) and os.path.realpath(found[0]) != os.path.realpath(found[1]):
+        return (ours, system)
+    return (ours,)
+
+
+@dataclass(frozen=True)
 class OcioconvertEngine:
     """The system's ocioconvert, one process per check, to a float EXR."""
 
@@ -169,7 +215,8 @@ class OcioconvertEngine:
 
     def version(self) -> str:
         """Where the ocioconvert run is (it prints no version)."""
-        return f"{self.executable()} (the system's, outside this Python environment)"
+        exe = self.executable()
+        return f"OCIO {linked_ocio(exe) or 'unknown'} ({exe}, the system's, outside this Python environment)"
 
     def _command(self, check: Check, source: Path, target: Path, config: Path) -> list[str]:
         exe = self.executable()

@@ -94,18 +94,21 @@ def summary(verification: Verification, explained: bool = True) -> str:
         f"{len(verification.outcomes)} results in {verification.seconds:.1f} s"
     ]
     for run in verification.engines:
-        state = f"not run: {run.skipped}" if run.skipped else f"{run.seconds:.1f} s, {run.version}"
+        runs = f" ({run.version})" if run.version else ""
+        state = f"not run{runs}: {run.skipped}" if run.skipped else f"{run.seconds:.1f} s, {run.version}"
         lines.append(f"  engine {run.name}: {state}")
+    found = groups(verification)
+    width = max([24, *(len(engine) for engine, _, _ in found)])  # "oiiotool system (TIFF uint16)"
     lines.append(
-        f"  {'engine':<24} {'check':<15} {'metric':<16} {'n':>4} {'pass':>5} {'approx':>6} {'FAIL':>5} "
+        f"  {'engine':<{width}} {'check':<15} {'metric':<16} {'n':>4} {'pass':>5} {'approx':>6} {'FAIL':>5} "
         f"{'max':>9} {'p99':>9} {'tolerance':>9}"
     )
-    for (engine, kind, metric), g in groups(verification).items():
+    for (engine, kind, metric), g in found.items():
         if g[NOT_RUN] == g["checks"]:  # an engine that did not run compared nothing: no figures of 0
-            lines.append(f"  {engine:<24} {kind:<15} {metric:<16} {g['checks']:>4}  not run")
+            lines.append(f"  {engine:<{width}} {kind:<15} {metric:<16} {g['checks']:>4}  not run")
             continue
         lines.append(
-            f"  {engine:<24} {kind:<15} {metric:<16} {g['checks']:>4} {g[PASS]:>5} {g[APPROX]:>6} "
+            f"  {engine:<{width}} {kind:<15} {metric:<16} {g['checks']:>4} {g[PASS]:>5} {g[APPROX]:>6} "
             f"{g[FAIL]:>5} {_figure(g['max']):>9} {g['p99']:>9.3g} {g['tolerance']:>9.3g}"
         )
     for o in verification.outcomes:

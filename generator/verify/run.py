@@ -35,7 +35,7 @@ from generator.verify.engines import (
     run_config,
 )
 from generator.verify.gpu import GpuEngine
-from generator.verify.hosts import NotRunnable, OcioconvertEngine, OiiotoolEngine
+from generator.verify.hosts import NotRunnable, OcioconvertEngine, oiiotool_engines
 from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, Outcome, judge, judged_output, sample_errors
 from generator.verify.paths import LazyEndpoints
 
@@ -51,6 +51,8 @@ class EngineRun:
     version: str = ""
     seconds: float = 0.0
     skipped: str = ""
+    #: Run beside its family's own engine (Debian's oiiotool beside pip's): not running fails nothing.
+    extra: bool = False
 
 
 @dataclass(frozen=True, eq=False)
@@ -84,15 +86,15 @@ class Verification:
 
     @property
     def missing(self) -> list[str]:
-        """The engines that did not run."""
-        return [e.name for e in self.engines if e.skipped]
+        """The engines that did not run (an extra one, which fails nothing, aside)."""
+        return [e.name for e in self.engines if e.skipped and not e.extra]
 
 
 def engine_registry() -> dict:
     """Engine family name -> engines, in table order."""
     return {
         "ocio": IN_PROCESS,
-        "oiiotool": (OiiotoolEngine(),),
+        "oiiotool": oiiotool_engines(),  # Debian's too, beside pip's: each runs its own OCIO
         "ocioconvert": (OcioconvertEngine(),),
         "blender": (BlenderEngine(),),
         "gpu": (GpuEngine(),),
@@ -226,13 +228,15 @@ def run_engine(engine, config: Path, spec: Spec, checks: list[Check], workdir: P
     supported = [c for c in checks if c.kind in engine.kinds and supports(c, spec)]
     started = time.perf_counter()
     reason = engine.missing(config)
+    installed = not reason
     if not reason:
         try:
             outputs = engine.run(config, supported, workdir)
         except NotRunnable as error:
             reason = str(error)
-    if reason:
-        return EngineRun(engine.name, skipped=reason), [
+    if reason:  # an installed host that cannot load the config says which OCIO it runs
+        version = engine.version() if installed else ""
+        return EngineRun(engine.name, version, skipped=reason, extra=getattr(engine, "extra", False)), [
             Outcome(c, engine.name, NOT_RUN, note=reason) for c in supported
         ]
     outcomes = [judge(check, engine.name, out) for check, outs in zip(supported, outputs) for out in outs]
