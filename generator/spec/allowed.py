@@ -37,3 +37,6 @@ def newest_ocio_version() -> tuple[int, int]:
 #: The peak luminance (cd/m²) of an HLG display: OCIO's one HLG display builtin,
 #: DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit, holds BT.2100's OOTF for 1000 cd/m².
 HLG_DISPLAY_PEAK = 1000.0
+
+#: LUT formats a bake writes (generator.luts.bake.FORMATS), which a ``[[lut_pack]]`` may name.
+LUT_FORMATS = ("resolve_cube", "iridas_cube", "spi3d", "clf")

@@ -19,7 +19,7 @@ from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.colorimetry.transfer import Linear
 from generator.rendering import views as aces_views
-from generator.spec import fields, labels, namespace, resolved
+from generator.spec import fields, labels, lut_pack, namespace, resolved
 from generator.spec.allowed import (
     COLORIMETRIC_ALIASES,
     HLG_DISPLAY_PEAK,
@@ -44,6 +44,7 @@ TOP_KEYS = (
     "display",
     "roles",
     "file_rule",
+    "lut_pack",
 )
 CUSTOM_SPACE_KEYS = (
     "name",
@@ -264,6 +265,9 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         source=recorded(source),
         rgc=fields.rgc_params(raw.get("rgc"), source),
         left_out=left_out,
+        lut_packs=lut_pack.tables(
+            raw.get("lut_pack"), source, every, {n.lower() for d in displays for n in (d.name, *d.aliases)}
+        ),
     )
 
 

@@ -92,6 +92,28 @@ class FileRule:
 
 
 @dataclass(frozen=True)
+class LutPack:
+    """A ``[[lut_pack]]`` table: each source to each display, through each gamut mapping (or
+    each ACES view), in each format, as ``ocioforge bake`` bakes one file."""
+
+    sources: tuple[str, ...]
+    displays: tuple[str, ...]
+    formats: tuple[str, ...]
+    gamut_maps: tuple[str, ...] = ()
+    views: tuple[str, ...] = ()
+    #: Lattice nodes a side per format (None: the bake's default).
+    sizes: tuple[int | None, ...] = ()
+    shaper: str = "auto"
+    #: File name pattern without suffix; "" takes the default.
+    file_name: str = ""
+    #: The formats baked from a linear source (None: all of ``formats``).
+    linear_source_formats: tuple[str, ...] | None = None
+    #: An ACES view's lattice values' decimals and .cube shaper entries (None: the bake's).
+    decimals: int | None = None
+    shaper_entries: int | None = None
+
+
+@dataclass(frozen=True)
 class Spec:
     """A whole config description."""
 
@@ -112,6 +134,8 @@ class Spec:
     #: Names of the spec's colour spaces a load for one command left out (see
     #: :func:`generator.spec.load.load`'s ``keep``): offered when a name is mistyped, never built.
     left_out: tuple[str, ...] = field(default=(), compare=False, metadata={"resolved": False})
+    #: The show's standalone LUTs (``[[lut_pack]]``), baked by ``ocioforge pack``; not part of a build.
+    lut_packs: tuple[LutPack, ...] = field(default=(), compare=False, metadata={"resolved": False})
 
     @property
     def space_names(self) -> list[str]:
