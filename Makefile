@@ -15,7 +15,7 @@ $(STAMP): pyproject.toml
 
 run: $(STAMP)
 	$(BIN)/ocioforge build -o $(CONFIG) --force
-	$(BIN)/python -m generator.luts.pack luts
+	$(BIN)/ocioforge pack -o luts
 	$(BIN)/ocioforge verify $(CONFIG)/config.ocio --summary --report build/verify --force
 
 test: $(STAMP)
@@ -30,6 +30,7 @@ bench: $(STAMP)
 	$(BIN)/python bench/lut_bake.py
 	$(BIN)/python bench/aces_views.py
 	$(BIN)/python bench/convert.py
+	$(BIN)/python bench/pack.py
 
 clean:
 	rm -rf $(VENV) .pytest_cache

@@ -8,6 +8,8 @@ import click
 from click.testing import CliRunner
 
 from generator.cli import main
+from generator.luts import aces_probes, pack, probes
+from generator.spec import load
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -35,3 +37,20 @@ def test_show_builds_and_verifies(tmp_path):
     verified = run("verify", folder, "--engines", "ocio", "--summary")
     assert verified.exit_code == 0, verified.output
     assert "verify passed" in verified.output
+
+
+def test_show_pack_bakes(tmp_path, monkeypatch):
+    """The show's [[lut_pack]] tables plan as written, and bake (at small sizes, fewer probes)."""
+    spec = EXAMPLES / "show" / "spec.toml"
+    names = [item.name for item in pack.plan(load.load(spec))]
+    assert "arri_logc4_led_wall.cube" in names and "acescg_to_led_wall.clf" in names and len(names) == 14
+    monkeypatch.setattr(probes, "COUNT", 128)
+    monkeypatch.setattr(aces_probes, "PROBE_COUNT", 128)
+    small = tmp_path / "spec.toml"
+    small.write_text(spec.read_text().replace("size = 33", "size = 5").replace("size = 17", "size = 5"))
+    packed = run("pack", small, "-o", tmp_path / "luts")
+    assert packed.exit_code == 0, packed.output
+    written = {p.name for p in (tmp_path / "luts").iterdir()}
+    assert written == {*names, "README.md", ".ocioforge-pack.json"}
+    readme = (tmp_path / "luts" / "README.md").read_text()
+    assert "| arri_logc4_led_wall.cube | ARRI LogC4 | ACES 2.0 - HDR 1500 nits (LED Wall) | LED Wall | 5³ |" in readme

@@ -19,6 +19,7 @@ COMMANDS = {
     "init": "Write the embedded default spec, commented, to a file.",
     "matrix": "Print the 3x3 matrix from one colour space's linear RGB to another's.",
     "bake": "Bake a transform from a colour space to a display into a LUT file (.cube, .spi3d, .clf).",
+    "pack": "Bake a show's LUT pack (its spec's [[lut_pack]] tables) into a folder, errors measured.",
     "verify": "Verify a built config: images through OCIO engines against the spec's own evaluation.",
     "plot": "Draw the CIE 1931 chromaticity diagram of a built config's colour spaces.",
     "info": "Describe a colour space or display, the library's or a spec's: gamut, white, curve, matrix.",

@@ -1,184 +1,203 @@
-"""The standalone LUT pack (top-level luts/): common sources to common displays.
+"""A show's LUT pack: the files its spec's ``[[lut_pack]]`` tables declare, baked and measured.
 
-Every pair is baked as a Resolve .cube (1D shaper + 3D, source axes, 33³) and a
-CLF (exact decoding and matrix, lattice in display axes, 17³), with
-:data:`~generator.luts.bake.DEFAULT_METHOD`; and every source through the ACES 2.0
-SDR and HDR views (:data:`ACES_VIEWS`, :mod:`generator.luts.aces_bake`) as a CLF and,
-from an encoded source, a Resolve .cube (:data:`ACES_SIZE`); each file is read back through
-OpenColorIO and measured on :mod:`generator.luts.probes`, and README.md lists
-the figures, labelled as what they are: maxima over those random probe sets, not
-bounds over the gamut. The folder is built in a temporary sibling and renamed
-into place, and the same inputs give the same bytes.
+Each table is expanded (:func:`plan`) into files, each a request ``ocioforge bake`` would take:
+for every source, display, gamut mapping (or ACES view the display can show) and format. Every
+file is read back through OpenColorIO and measured on :mod:`generator.luts.probes` (ACES views:
+:mod:`generator.luts.aces_probes`), and README.md lists the figures, labelled as what they are:
+maxima over those random probe sets, not bounds over the gamut. Files are baked in forked
+workers (:mod:`generator.luts.pool`); the same spec gives the same bytes. The default spec's
+tables are the repository's luts/ folder. Writing the folder is :mod:`generator.luts.pack_folder`'s.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
-from generator.files import staged_folder
-from generator.luts import bake, probes
+import numpy as np
+import PyOpenColorIO as ocio
+
+from generator.colorimetry.transfer import Linear
+from generator.luts import aces_bake, aces_probes, bake, pack_folder, pack_readme, probes
+from generator.luts.aces_bake import ACES_SHAPER_SIZES
+from generator.luts.lattice import CUBE_DECIMALS
 from generator.luts.names import slug
+from generator.luts.pool import Pool
 from generator.luts.source_axes import SOURCE_SHAPER_SIZES
-from generator.luts.view import LOG_VIEW_SIZE
-from generator.spec.schema import Spec
+from generator.spec import load
+from generator.spec.schema import LutPack, Spec, SpecError
 
-SOURCES = ("ACEScg", "ACEScct", "Linear Rec.709 (sRGB)", "Linear Rec.2020", "ARRI LogC4", "S-Log3 S-Gamut3.Cine")
-DISPLAYS = ("sRGB - Display", "Rec.1886 Rec.709 - Display", "Gamma 2.6 P3-D65 - Display", "Rec.2100-PQ - Display")
-FORMATS = ("resolve_cube", "clf")
+#: The spec option each of bake's options is declared by in a ``[[lut_pack]]`` table.
+KEY_OF_OPTION = {
+    "--from": "sources",
+    "--to": "displays",
+    "--gamut-map": "gamut_maps",
+    "--view": "views",
+    "--size": "size",
+    "--format": "formats",
+    "--shaper": "shaper",
+}
 
-#: Lattice size per format. The CLF's lattice is the config's scale view lattice (uniform in
-#: the logarithm of display light, the mapping linear inside every tetrahedron), at the
-#: same size: it measures as 33³ does (0.011 ten-bit codes at most, ACEScg to sRGB and to
-#: Rec.2100-PQ) in a seventh of the bytes, which keeps the pack under 30 MB.
-SIZES = {"resolve_cube": 33, "clf": LOG_VIEW_SIZE}
-
-#: ACES views in the pack, each baked from every source for the display it is named on.
-ACES_VIEWS = (
-    ("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
-    ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"),
-)
-
-#: The ACES views' lattices: nodes a side, decimals of their values (a tenth of a ten-bit code),
-#: entries of an encoded source's .cube shaper table. The pack's other files leave 6.75 MB of
-#: LUT_PACK_BYTES for the 18 files; at 25³ a CLF takes 335 KB and a .cube 270 to 350 KB (65³:
-#: 5 MB). Its p99 is 3 to 7 times the 65³ bake's (SDR Rec.709 from ACEScct, CLF, ten-bit codes:
-#: AP0 0..1 14.6 and 3.1, bright 55 and 14, greys 3.2 and 0.45; HDR, ΔE ITP: in gamut 1.05 and
-#: 0.38, bright 4.8 and 1.45).
-ACES_SIZE, ACES_DECIMALS, ACES_SHAPER_ENTRIES = 25, 4, 1024
+GAMUT_NAME, VIEW_NAME = "{source}_to_{display}", "{source}_{view}_{display}"
 
 
-def aces_formats(source) -> tuple[str, ...]:
-    """The pack's formats for an ACES view from ``source``: a CLF, and a Resolve .cube from an encoded
-    source. A linear source's .cube needs a 1D table uniform in light up to the view's clamp (1024,
-    4096 in HDR), whose steps the pack cannot afford to make fine: at 8192 entries (410 KB) greys
-    came out 12 ten-bit codes and 28 ΔE ITP off (``ocioforge bake --view`` writes 65536)."""
-    from generator.colorimetry.transfer import Linear
+@dataclass(frozen=True)
+class Item:
+    """One file of the pack (with its .spi1d, a .spi3d that needs one)."""
 
-    return ("clf",) if isinstance(source.curve, Linear) else ("clf", "resolve_cube")
+    name: str
+    req: bake.Request
+    table: int
+    decimals: int | None = None
+    shaper_entries: int | None = None
 
-
-README_HEAD = """# ocioforge standalone LUTs
-
-Generated by `ocioforge` (`generator.luts.pack.build_pack`); do not edit, rebuild.
-Each file takes a source colour space's values to a display's code values
-(full range, 0 to 1): decode, matrix, gamut mapping, display encoding, as the
-reference evaluation of `generator/reference.py`. The matrix adapts
-the source's white to the display's with Bradford, but for a camera gamut whose
-vendor publishes its matrix to ACES (ARRI LogC4, S-Log3 S-Gamut3.Cine): that
-goes to ACES2065-1 with the vendor's adaptation (CAT02), then to the display
-with Bradford, as OCIO's ACES studio config does; the two adaptations do not
-cancel, and the matrix differs from a direct D65-to-D65 conversion by up to 6e-3.
-
-Gamut mapping: **{method}** (clip negative display components to 0, then
-divide by the largest component when it exceeds the peak, so over-range colours
-keep their chromaticity). Inside the display's gamut it is the identity, as clip.
-
-* `.cube`: DaVinci Resolve format, a 1D shaper (uniform in the source values,
-  range in `LUT_1D_INPUT_RANGE`) then a {cube_size}³ lattice whose nodes are spaced by
-  the display's code values up to the peak and by a root of the light above it, up
-  to 16 times the peak (the Rec.2100-PQ files: times the 1000 cd/m² peak) or the
-  source's top code, whichever is lower (S-Log3's 1.0 holds 3.8 times that peak); linear
-  sources from -1 times the peak. Node values are fitted to colours of the source
-  gamut by least squares, reweighted toward the colours that set the 99th
-  percentile of the error (the nodes of greys and of colours with a zero channel
-  keep their sampled values), for tetrahedral interpolation; fitted nodes may lie
-  outside the output range (each file's header gives the range). Set the host's 3D
-  interpolation to tetrahedral: the figures below are measured so, and the last
-  column with trilinear interpolation (the default of some hosts), which a `.cube`
-  cannot ask for. A Resolve `.cube` holds a shaper and a lattice; a reader of
-  Adobe's Cube specification 1.0 alone takes neither `LUT_1D_INPUT_RANGE` nor the
-  two tables (`ocioforge bake --format iridas_cube` writes that variant).
-* `.clf`: Academy/ASC Common LUT Format v3, 32-bit float: the source curve and
-  the matrix as exact operators, then a Log operator, a {clf_size}³ lattice uniform in
-  the logarithm of display light (0 and the peak on nodes) and a 1D table to code
-  values, on which clipping and the division by the largest channel are exact: a
-  larger lattice measures the same. The file names its interpolation (tetrahedral).
-
-Prefer the `.clf` wherever the host reads CLF: a `.cube` holds no matrix, so its
-lattice, in the source's own axes, interpolates across the display's clipping
-planes, and its errors (below) are three orders of magnitude larger. A linear
-source's `.cube` is also coarse near black: its shaper table, uniform in linear
-values, steps by 1/{shaper_steps} of its range (1e-3 of the peak), and a grey
-darker than that is interpolated between black and that step, linearly in light:
-on a pure-power or PQ display, tens of codes or ΔE ITP (the dark set below).
-
-Errors: read back through OpenColorIO {ocio} (CPU, float32, lossless: each
-operator evaluated as written) against the reference, on {count} random probes
-per set (`generator.luts.probes`, fixed seed):
-in-gamut colours (uniform in display-linear RGB between 0 and the peak, so few are
-dark), dark colours (in gamut, largest channel 1e-4 to 1e-2 of the 100 cd/m²
-white, log-uniform), out-of-gamut colours of the source gamut, and
-over-range colours up to 16 times the peak, those the source's codes hold (a capped
-code range leaves the brightest out). SDR displays: ten-bit code values, the
-largest channel's difference times 1023; Rec.2100-PQ: ΔE ITP (ITU-R BT.2124).
-"In-gamut probes max" is the largest error on the in-gamut and dark probes; "Worst
-set p99" is the largest of the four sets' 99th percentiles (above the p99 of all
-probes pooled), "All probes max" the largest error of all four sets, and "All
-probes max, default flags" the same read with OCIO's default optimisation, as most
-hosts run it: its fast approximations of pow, log and exp (measured: pow within
-a relative 7e-6, log2 within 1.5e-5) move a CLF's decoding curve and its Log
-operator, most where they meet a pure-power display's steep toe (the ARRI LogC4
-rows below); a `.cube` holds only tables and reads the same either way.
-
-These are the largest errors on the probes, not bounds over the gamut: random
-colours seldom have a display channel at or near 0, and colours on those faces
-and edges of the display's RGB cube err more. On an SDR `.cube` between
-different gamuts that is tens of ten-bit codes more than its in-gamut figure
-below; on a CLF for a pure-power display (Rec.1886, Gamma 2.6), up to a few codes
-where a display channel is exactly 0, and with OCIO's default flags black itself
-from a log source, whose black their fast exp decodes to a little above 0 (ARRI
-LogC4: 1.9 codes on Gamma 2.6; exactly 0 read as written).
-
-| File | Source | Destination | Method | Size | In-gamut probes max | Worst set p99 | All probes max | All probes max, default flags | Unit | Worst set p99, trilinear |
-| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |
-"""
-
-ACES_HEAD = """
-## ACES 2.0 views
-
-Each file takes a source colour space's values through an ACES 2.0 Output Transform to the
-display's code values: `ocioforge bake --view` (see docs/aces-views.md, "Standalone LUTs"), at
-{size}³ with values of {decimals} decimals to fit the pack. The command's default, 65³, has a p99 3
-to 7 times lower; docs/aces-views.md gives its figures. The lattice's nodes are spaced
-in log2 of AP1, the view's own input (clamped as the view clamps it), and its values fitted by
-least squares to colours of six kinds; greys keep the sampled values.
-
-* `.clf`: the source's curve and the matrix to AP1 exact, then the view's clamp and a log2
-  shaper (exact Log and Range operators), a 1D table and the lattice; where the display's
-  primaries are the view's limiting primaries (the SDR view on sRGB), the lattice holds the
-  codes before the view's final clamp, which a 1D table after it applies exactly.
-* `.cube` (encoded sources only): DaVinci Resolve format, a {entries}-entry 1D shaper uniform in
-  the source's code values, then the lattice. A linear source has none here: its shaper would
-  be uniform in light up to the view's clamp (1024 scene-linear in SDR, 4096 in HDR), too coarse
-  near black at a size the pack holds; `ocioforge bake --view ... --format resolve_cube` writes
-  one with 65536 entries.
-
-Errors: read through OpenColorIO {ocio} (default flags, tetrahedral) against the reference on
-{count} colours of each kind (`generator.luts.aces_probes`, fixed seed): the display's gamut,
-ACES2065-1 0 to 1, dark (1e-4 to 0.1) and bright (1 to 64) hues, greys from 1e-4 to 100, and
-ARRI Wide Gamut 4 colours with a zero channel (0.01 to 10), those the source's codes hold;
-p99 / max in ten-bit codes (SDR) or ΔE ITP (HDR). Colours outside AP1 are clamped to its faces
-by the view itself, where the rendering bends sharply: the bright and camera kinds err most.
-
-| File | Source | View | Destination | Size | {labels} | Unit |
-| --- | --- | --- | --- | --- |{rule} --- |
-"""
+    @property
+    def names(self) -> tuple[str, ...]:
+        """Every file it may write: a .spi3d's shaper too."""
+        extra = (Path(self.name).with_suffix(bake.SHAPER_SUFFIX).name,) if self.req.fmt == "spi3d" else ()
+        return (self.name, *extra)
 
 
-def pack_name(source: str, display: str, fmt: str) -> str:
-    return f"{slug(source)}_to_{slug(display)}{bake.FORMATS[fmt].suffix}"
+def _request(spec: Spec, where: str, index: int, *args) -> bake.Request:
+    """:func:`bake.request`, its errors naming the table's key instead of bake's option."""
+    try:
+        return bake.request(spec, *args)
+    except SpecError as error:
+        key = KEY_OF_OPTION.get(error.field, error.field)
+        raise SpecError(where, f"lut_pack[{index}].{key}", error.message) from None
 
 
-def _measure(
-    req: bake.Request, path: Path, interpolation: str = "tetrahedral", optimization: str = "OPTIMIZATION_LOSSLESS"
-) -> dict:
-    import PyOpenColorIO as ocio
+def _pairs(spec: Spec, where: str, index: int, table: LutPack) -> list[tuple[str, str]]:
+    """(display, view) of a views table: each view on each display, by its full name ("ACES 2.0"
+    is each display's own); a view a display cannot show is refused."""
+    field = f"lut_pack[{index}]"
+    pairs = []
+    for i, name in enumerate(table.displays):
+        display = bake.find_display(spec, name, f"{field}.displays[{i}]")
+        for k, view in enumerate(table.views):
+            try:
+                pairs.append((name, bake.find_view(display, view).name))
+            except SpecError as error:
+                raise SpecError(where, f"{field}.views[{k}]", error.message) from None
+    return pairs
 
-    mode = {"tetrahedral": ocio.INTERP_TETRAHEDRAL, "trilinear": ocio.INTERP_LINEAR}[interpolation]
-    transform = ocio.FileTransform(str(path), interpolation=mode)
-    return probes.measure(
-        req.spec, req.source, req.display, req.method, probes.ocio_apply(transform, optimization=optimization)
+
+def _formats(spec: Spec, table: LutPack, source: str) -> list[tuple[str, int | None]]:
+    """(format, size) the table bakes ``source`` in: a linear source's from ``linear_source_formats``."""
+    linear = table.linear_source_formats is not None and isinstance(spec.space(source).curve, Linear)
+    return [(f, s) for f, s in zip(table.formats, table.sizes) if not linear or f in table.linear_source_formats]
+
+
+def _table_items(spec: Spec, where: str, index: int, table: LutPack) -> list[Item]:
+    aces = bool(table.views)
+    pattern = table.file_name or (VIEW_NAME if aces else GAMUT_NAME)
+    absent = "gamut_map" if aces else "view"
+    if "{" + absent + "}" in pattern:
+        raise SpecError(
+            where,
+            f"lut_pack[{index}].file_name",
+            f"{{{absent}}} in a table of {'views' if aces else 'gamut_maps'}; allowed: the fields it has",
+        )
+    choices = (
+        _pairs(spec, where, index, table)
+        if aces
+        else [(d, m) for d in table.displays for m in table.gamut_maps or (bake.DEFAULT_METHOD,)]
     )
+    items = []
+    for source in table.sources:
+        try:
+            bake.find_source(spec, source, "--from")  # a source bake refuses: named before its displays
+        except SpecError as error:
+            raise SpecError(where, f"lut_pack[{index}].sources", error.message) from None
+        for display, choice in choices:
+            for fmt, size in _formats(spec, table, source):
+                default = bake.ACES_SIZE if aces else bake.DEFAULT_SIZE
+                view, method = (choice, "") if aces else (None, choice)
+                req = _request(spec, where, index, source, display, method, fmt, size or default, table.shaper, view)
+                fields = {
+                    "source": req.source.name,
+                    "display": req.display.name,
+                    "gamut_map": method,
+                    "view": choice if aces else "",
+                    "format": fmt,
+                    "size": str(req.size),
+                }
+                stem = pattern.format(**{k: slug(v) for k, v in fields.items()})
+                if not stem:
+                    raise SpecError(
+                        where,
+                        f"lut_pack[{index}].file_name",
+                        f"{pattern!r} names {fmt} files by nothing; allowed: a pattern with {{source}} or text",
+                    )
+                items.append(Item(stem + bake.FORMATS[fmt].suffix, req, index, table.decimals, table.shaper_entries))
+    return items
+
+
+def plan(spec: Spec, where: str | None = None) -> list[Item]:
+    """Every file of ``spec``'s pack, in its tables' order; SpecError naming ``lut_pack[i].key``
+    (of ``where``, the spec's path as given: default its recorded name) for a file bake would
+    refuse or a name two files would share."""
+    where = where or spec.source
+    if not spec.lut_packs:
+        raise SpecError(where, "lut_pack", "the spec declares no LUT pack; allowed: one [[lut_pack]] table or more")
+    items = [item for i, table in enumerate(spec.lut_packs) for item in _table_items(spec, where, i, table)]
+    seen: dict[str, Item] = {}
+    for item in items:
+        for name in item.names:
+            other = seen.setdefault(name.lower(), item)
+            if other is not item:
+                raise SpecError(
+                    where,
+                    f"lut_pack[{item.table}].file_name",
+                    f"{name!r} would be written twice (also by lut_pack[{other.table}]); allowed: a pattern "
+                    "whose fields tell the files apart ({source}, {display}, {gamut_map}, {view}, {size})",
+                )
+    return items
+
+
+def _lattice(item: Item):
+    """The lattice ``item`` holds: the bake's, an ACES view's with the table's decimals and entries."""
+    req = item.req
+    if req.view is None:
+        return bake.build_lattice(req)
+    decimals = CUBE_DECIMALS if item.decimals is None else item.decimals
+    if req.fmt == "clf" and req.shaper == "auto":
+        return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size, decimals)
+    shaper = "none" if not bake.FORMATS[req.fmt].shaper else req.shaper
+    return aces_bake.source_lattice(
+        req.spec, req.source, req.display, req.view, req.size, shaper, decimals, item.shaper_entries
+    )
+
+
+def _transform(paths: list[Path], interpolation: str):
+    """The OCIO transform reading the written files (a .spi1d shaper first, then the lattice)."""
+    mode = {"tetrahedral": ocio.INTERP_TETRAHEDRAL, "trilinear": ocio.INTERP_LINEAR}[interpolation]
+    main = ocio.FileTransform(str(paths[0]), interpolation=mode)
+    if len(paths) == 1:
+        return main
+    shaper = ocio.FileTransform(str(paths[1]), interpolation=ocio.INTERP_LINEAR)
+    return ocio.GroupTransform([shaper, main])
+
+
+def _apply(transform, optimization: str):
+    """:func:`probes.ocio_apply`, OCIO's file cache kept: a pack reads each file it wrote (each
+    at a path of its own, in a new staging folder) up to three times, and parsing a .cube took
+    a quarter of a second each time."""
+    config = ocio.Config.CreateRaw()
+    processor = config.getProcessor(transform).getOptimizedCPUProcessor(getattr(ocio, optimization))
+
+    def apply(code):
+        pixels = np.ascontiguousarray(np.asarray(code, dtype=np.float32))
+        processor.applyRGB(pixels)
+        return pixels.astype(np.float64)
+
+    return apply
+
+
+def _measure(req: bake.Request, paths: list[Path], interpolation="tetrahedral", optimization="OPTIMIZATION_LOSSLESS"):
+    apply = _apply(_transform(paths, interpolation), optimization)
+    return probes.measure(req.spec, req.source, req.display, req.method, apply)
 
 
 def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: dict | None) -> str:
@@ -197,40 +216,10 @@ def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: 
     )
 
 
-def aces_name(source: str, view: str, display: str, fmt: str) -> str:
-    return f"{slug(source)}_{slug(view)}_{slug(display)}{bake.FORMATS[fmt].suffix}"
-
-
-def write_aces(spec: Spec, folder: Path) -> list[str]:
-    """Bake, write and measure the ACES views of every source into ``folder``; returns the README rows."""
-    from generator.luts import aces_bake
-
-    rows = []
-    for source in SOURCES:
-        for view, display in ACES_VIEWS:
-            for fmt in aces_formats(spec.space(source)):
-                req = bake.request(spec, source, display, "", fmt, ACES_SIZE, "auto", view)
-                if fmt == "clf":
-                    lat = aces_bake.display_lattice(spec, req.source, req.display, req.view, ACES_SIZE, ACES_DECIMALS)
-                else:
-                    lat = aces_bake.source_lattice(
-                        spec, req.source, req.display, req.view, ACES_SIZE, "auto", ACES_DECIMALS, ACES_SHAPER_ENTRIES
-                    )
-                name = aces_name(source, view, display, fmt)
-                (folder / name).write_bytes(bake.lattice_files(req, lat)[""])
-                rows.append(_aces_row(name, req, _aces_measure(req, folder / name)))
-    return rows
-
-
-def _aces_measure(req: bake.Request, path: Path) -> dict:
+def _aces_figures(req: bake.Request, paths: list[Path]) -> dict:
     """Set name to (p99, max) of the file read through OCIO (default flags, tetrahedral) on
     :mod:`generator.luts.aces_probes`' sets, against the reference."""
-    import numpy as np
-    import PyOpenColorIO as ocio
-
-    from generator.luts import aces_probes
-
-    apply = probes.ocio_apply(ocio.FileTransform(str(path), interpolation=ocio.INTERP_TETRAHEDRAL))
+    apply = _apply(_transform(paths, "tetrahedral"), "OPTIMIZATION_DEFAULT")
     out = {}
     for name, aces in aces_probes.sets(req.display, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT).items():
         code, expected = aces_probes.in_source(req.spec, req.source, req.display, req.view.name, aces)
@@ -240,64 +229,101 @@ def _aces_measure(req: bake.Request, path: Path) -> dict:
 
 
 def _aces_row(name: str, req: bake.Request, figures: dict) -> str:
-    from generator.luts import aces_probes
-
     unit = "ΔE ITP" if req.display.is_hdr else "10-bit codes"
     cells = " | ".join(f"{figures[kind][0]:.2f} / {figures[kind][1]:.1f}" for kind in aces_probes.SETS)
     return f"| {name} | {req.source.name} | {req.view.name} | {req.display.name} | {req.size}³ | {cells} | {unit} |\n"
 
 
-def write_pack(spec: Spec, folder: Path, method: str = bake.DEFAULT_METHOD) -> list[str]:
-    """Bake, write and measure every file of the pack into ``folder``; returns the README rows."""
-    rows = []
-    for source in SOURCES:
-        for display in DISPLAYS:
-            for fmt in FORMATS:
-                req = bake.request(spec, source, display, method, fmt, SIZES[fmt])
-                name = pack_name(source, display, fmt)
-                (folder / name).write_bytes(bake.bake(req)[""])
-                trilinear = _measure(req, folder / name, "trilinear") if fmt != "clf" else None
-                default = _measure(req, folder / name, optimization="OPTIMIZATION_DEFAULT")
-                rows.append(_row(name, req, _measure(req, folder / name), default, trilinear))
-    return rows
+def bake_item(item: Item, folder: Path) -> tuple[tuple[str, ...], str]:
+    """Bake ``item`` into ``folder`` and measure the file written; returns the names written and
+    its README row."""
+    req = item.req
+    files = bake.lattice_files(req, _lattice(item))
+    paths = [folder / (item.name if not suffix else Path(item.name).with_suffix(suffix).name) for suffix in files]
+    for path, data in zip(paths, files.values()):
+        path.write_bytes(data)
+    if req.view is not None:
+        return tuple(p.name for p in paths), _aces_row(item.name, req, _aces_figures(req, paths))
+    trilinear = _measure(req, paths, "trilinear") if req.fmt != "clf" else None
+    default = _measure(req, paths, optimization="OPTIMIZATION_DEFAULT")
+    return tuple(p.name for p in paths), _row(item.name, req, _measure(req, paths), default, trilinear)
 
 
-def build_pack(folder: str | Path, spec: Spec | None = None) -> Path:
-    """Rebuild the standalone pack in ``folder`` (replaced as a whole), bit-identically."""
-    import PyOpenColorIO as ocio
+#: The items a pack's forked workers bake (a spec holds functions, which do not pickle: the
+#: workers find them here, as they were when forked).
+_PACKING: list[list[Item]] = []
 
-    from generator.spec import load
 
+def _worker(index: int, folder: str) -> tuple[tuple[str, ...], str]:
+    return bake_item(_PACKING[-1][index], Path(folder))
+
+
+def bake_all(
+    items: list[Item], folder: Path, progress: Callable[[int, int], None] | None = None, workers: int | None = None
+) -> list[tuple[tuple[str, ...], str]]:
+    """Bake every item into ``folder`` in forked workers, the ACES views (heaviest) first;
+    returns each one's names and row in ``items``' order, calling ``progress(done, total)`` as they are."""
+    _PACKING.append(items)
+    try:
+        with Pool(workers) as pool:
+            for index in sorted(range(len(items)), key=lambda i: items[i].req.view is None):
+                pool.submit(index, _worker, index, str(folder))
+            if progress is not None:
+                progress(0, len(items))
+            out = []
+            for index in range(len(items)):
+                out.append(pool.result(index, _worker, index, str(folder)))
+                if progress is not None:
+                    progress(index + 1, len(items))
+            return out
+    finally:
+        _PACKING.remove(items)
+
+
+def readme(items: list[Item], rows: list[str]) -> str:
+    """README.md of a pack of ``items`` whose measured rows are ``rows``."""
+    gamut = [(i, r) for i, r in zip(items, rows) if i.req.view is None]
+    aces = [(i, r) for i, r in zip(items, rows) if i.req.view is not None]
+    sizes = {f: [i.req.size for i, _ in gamut if i.req.fmt == f] for f in bake.FORMATS}
+    head = pack_readme.gamut_head(
+        list(dict.fromkeys(i.req.method for i, _ in gamut)),
+        list(dict.fromkeys(i.req.fmt for i, _ in gamut)),
+        sizes["resolve_cube"],
+        sizes["clf"],
+        ocio=ocio.__version__,
+        count=probes.COUNT,
+        shaper_steps=SOURCE_SHAPER_SIZES[1] - 1,
+    )
+    aces_head = pack_readme.ACES_HEAD.format(
+        size=pack_readme.joined_sizes(i.req.size for i, _ in aces),
+        decimals=" or ".join(
+            str(d) for d in sorted({CUBE_DECIMALS if i.decimals is None else i.decimals for i, _ in aces})
+        ),
+        entries=" or ".join(str(e) for e in sorted({i.shaper_entries or ACES_SHAPER_SIZES[0] for i, _ in aces})),
+        count=aces_probes.PROBE_COUNT,
+        ocio=ocio.__version__,
+        labels=" | ".join(f"{aces_probes.LABELS[k]} p99 / max" for k in aces_probes.SETS),
+        rule=" --- |" * len(aces_probes.SETS),
+    )
+    return pack_readme.readme(head, [r for _, r in gamut], aces_head, [r for _, r in aces])
+
+
+def build_pack(
+    folder: str | Path,
+    spec: Spec | None = None,
+    force: bool = False,
+    progress: Callable[[int, int], None] | None = None,
+    workers: int | None = None,
+    where: str | None = None,
+) -> Path:
+    """Bake ``spec``'s pack (default: the embedded spec's, the repository's luts/) into ``folder``,
+    bit-identically: its earlier files replaced all or none, nothing else there touched, a
+    file of another's name refused without ``force`` (:mod:`generator.luts.pack_folder`)."""
     spec = spec or load.load()
-    folder = Path(folder).absolute()
-    from generator.luts import aces_probes
-
-    with staged_folder(folder) as staging:
-        rows = write_pack(spec, staging)
-        aces = write_aces(spec, staging)
-        head = README_HEAD.format(
-            method=bake.DEFAULT_METHOD,
-            cube_size=SIZES["resolve_cube"],
-            clf_size=SIZES["clf"],
-            ocio=ocio.__version__,
-            count=probes.COUNT,
-            shaper_steps=SOURCE_SHAPER_SIZES[1] - 1,
-        )
-        aces_head = ACES_HEAD.format(
-            size=ACES_SIZE,
-            decimals=ACES_DECIMALS,
-            entries=ACES_SHAPER_ENTRIES,
-            count=aces_probes.PROBE_COUNT,
-            ocio=ocio.__version__,
-            labels=" | ".join(f"{aces_probes.LABELS[k]} p99 / max" for k in aces_probes.SETS),
-            rule=" --- |" * len(aces_probes.SETS),
-        )
-        text = head + "".join(rows) + (aces_head + "".join(aces) if aces else "")
-        (staging / "README.md").write_text(text, encoding="utf-8")
-    return folder
-
-
-if __name__ == "__main__":
-    import sys
-
-    print(build_pack(sys.argv[1] if len(sys.argv) > 1 else "luts"))
+    items = plan(spec, where)
+    names = [name for item in items for name in item.names]
+    with pack_folder.staged(Path(folder), names, force) as staging:
+        baked = bake_all(items, staging, progress, workers)
+        text = readme(items, [row for _, row in baked])
+        (staging / pack_folder.README).write_text(text, encoding="utf-8")
+    return Path(folder)

@@ -1,4 +1,4 @@
-"""The config's view LUTs and the standalone pack."""
+"""The config's view LUTs (the standalone pack: test_pack.py)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from generator import tolerances
-from generator.luts import aces_probes, pack, probes
+from generator.luts import probes
 from generator.luts.view import bake_view_lut, view_filename
 from generator.metrics import delta_e_itp
 from generator.ocio.view_luts import view_figures, view_transform
@@ -96,64 +96,3 @@ def test_a_display_with_a_tabulated_eotf_has_its_views_measured_through_its_bake
         assert view.light and figures["in_gamut"].unit == "10-bit codes"
         assert figures["in_gamut"].maximum <= tolerances.LUT_CLF_IN_GAMUT_CODES, method
         assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_SCALE_CODES, method
-
-
-def test_pack_is_reproducible(default_spec, tmp_path, monkeypatch):
-    monkeypatch.setattr(pack, "SOURCES", ("ACEScct",))
-    monkeypatch.setattr(pack, "DISPLAYS", ("sRGB - Display",))
-    monkeypatch.setattr(probes, "COUNT", 256)
-    monkeypatch.setattr(pack, "ACES_SIZE", 7)
-    monkeypatch.setattr(aces_probes, "PROBE_COUNT", 256)
-    first = pack.build_pack(tmp_path / "a", default_spec)
-    second = pack.build_pack(tmp_path / "b", default_spec)
-    names = sorted(p.name for p in first.iterdir())
-    aces = [
-        f"acescct_aces_2_0_{view}{suffix}"
-        for view in ("hdr_1000_nits_p3_d65_rec_2100_pq_display", "sdr_100_nits_rec_709_srgb_display")
-        for suffix in (".clf", ".cube")
-    ]
-    assert names == ["README.md", *aces, "acescct_to_srgb_display.clf", "acescct_to_srgb_display.cube"]
-    for name in names:
-        assert (first / name).read_bytes() == (second / name).read_bytes()
-    readme = (first / "README.md").read_text()
-    # the ACES views' table: p99 / max of each kind of colour, finite
-    views = [line.split("|") for line in readme.splitlines() if line.startswith("| acescct_aces")]
-    assert len(views) == 4 and "| in gamut p99 / max | AP0 0..1 p99 / max |" in readme
-    assert np.isfinite([float(part) for row in views for cell in row[6:12] for part in cell.split("/")]).all()
-    rows = [line for line in readme.splitlines() if line.startswith("| acescct_to")]
-    assert len(rows) == 2 and all("scale" in row for row in rows)
-    # the figures are maxima over the random probes, and say so
-    assert "| In-gamut probes max | Worst set p99 | All probes max |" in readme and "not bounds" in readme
-    assert np.isfinite([float(cell) for row in rows for cell in row.split("|")[6:10]]).all()
-    # a .cube cannot name its interpolation: its figures with trilinear are given too, and differ
-    cube, clf = (row.split("|") for row in sorted(rows, key=lambda row: ".clf" in row))
-    assert "| Worst set p99, trilinear |" in readme and clf[11].strip() == "(named in the file)"
-    assert float(cube[11]) != float(cube[7])
-    # read as written and with OCIO's default flags: their fast pow and log move the CLF's
-    # decoding and Log operator, while a .cube holds only tables and reads the same
-    assert "| All probes max | All probes max, default flags |" in readme
-    assert float(clf[9]) > float(clf[8]) and float(cube[9]) == float(cube[8])
-
-
-def test_committed_pack_is_what_the_build_gives_and_fits(default_spec, tmp_path):
-    """luts/ is rebuilt bit-identically from the default spec, and stays under the size limit."""
-    from pathlib import Path
-
-    committed = Path(__file__).resolve().parents[2] / "luts"
-    built = pack.build_pack(tmp_path / "luts", default_spec)
-    files = {p.name: p.read_bytes() for p in sorted(built.iterdir())}
-    assert files == {p.name: p.read_bytes() for p in sorted(committed.iterdir())}, "luts/ is stale: run make run"
-    aces = sum(len(pack.aces_formats(default_spec.space(source))) for source in pack.SOURCES) * len(pack.ACES_VIEWS)
-    assert len(files) == 1 + len(pack.SOURCES) * len(pack.DISPLAYS) * len(pack.FORMATS) + aces
-    assert sum(len(data) for data in files.values()) <= tolerances.LUT_PACK_BYTES
-    rows = [
-        line
-        for line in files["README.md"].decode().splitlines()
-        if line.startswith("| ") and "_to_" in line and ".clf" in line
-    ]
-    sdr = [line.split("|") for line in rows if "codes" in line.split("|")[10]]
-    assert len(sdr) == 3 * len(pack.SOURCES)
-    # read as written, every CLF meets the issue's in-gamut target on every probe set; with
-    # OCIO's default flags (fast pow, log and exp), its every-set target
-    assert max(float(cells[8]) for cells in sdr) <= tolerances.LUT_CLF_IN_GAMUT_CODES
-    assert max(float(cells[9]) for cells in sdr) <= tolerances.LUT_CLF_SCALE_CODES

@@ -1,0 +1,121 @@
+"""Pack speed: `ocioforge pack` (the default pack, every file of luts/) against `ociobakelut`
+baking the same files in a loop, whole wall time.
+
+ociobakelut (Debian's opencolorio-tools, OCIO 2.1) reads a 2.1 config that `ocioforge build`
+makes (untimed) for the pack's sources and displays, with their Scale and ACES 2.0 views as
+"<view> - <display>" colour spaces; it is called once per file of the pack, with the file's
+--format and --cubesize. Formats it lacks are skipped and counted. ocioforge bakes the same
+files as one process, in parallel over the cores, and measures each through OCIO for its
+README (ociobakelut measures nothing). Printed: both wall times and the ratio ours / theirs, and
+their CPU times (children's user + system), which other work on the machine does not inflate.
+
+Run: .venv/bin/python bench/pack.py
+"""
+
+from __future__ import annotations
+
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+#: `ocioforge` as a fresh process of this Python (the environment's entry point, without PATH).
+OCIOFORGE = "import sys, generator.cli as c; c.main(sys.argv[1:])"
+
+#: ociobakelut's name of each format the pack writes; None: it cannot bake it (OCIO 2.1 lists
+#: CLF among its formats, but "File format clf does not support baking").
+THEIR_FORMATS = {"resolve_cube": "resolve_cube", "iridas_cube": "iridas_cube", "clf": None, "spi3d": None}
+
+
+def bench_spec(items) -> str:
+    """A 2.1 spec with the pack's sources and displays, each display offering the views the
+    pack bakes for it (Scale for the gamut mapping)."""
+    from generator.spec.load import DEFAULT_ROLES
+
+    sources = list(dict.fromkeys(item.req.source.name for item in items))
+    roles = [n for n in DEFAULT_ROLES.values() if n not in ("CIE XYZ-D65 - Display-referred",)]
+    spaces = list(dict.fromkeys([*sources, "ACES2065-1", *roles]))
+    views: dict[str, list[str]] = {}
+    for item in items:
+        view = item.req.view.name if item.req.view is not None else "Scale"
+        views.setdefault(item.req.display.name, [])
+        if view not in views[item.req.display.name]:
+            views[item.req.display.name].append(view)
+    text = 'name = "pack-bench"\nocio_version = "2.1"\ncolour_spaces = [' + ", ".join(f'"{s}"' for s in spaces)
+    text += "]\n"
+    for display, names in views.items():
+        text += f'\n[[display]]\nname = "{display}"\nviews = [' + ", ".join(f'"{v}"' for v in names) + "]\n"
+    return text
+
+
+def their_commands(items, config: Path, out: Path) -> tuple[list[list[str]], int]:
+    """An ociobakelut command per file it can write, and how many it cannot."""
+    commands, skipped = [], 0
+    for item in items:
+        fmt = THEIR_FORMATS[item.req.fmt]
+        if fmt is None:
+            skipped += 1
+            continue
+        view = item.req.view.name if item.req.view is not None else "Scale"
+        commands.append(
+            [
+                "ociobakelut",
+                "--iconfig",
+                str(config / "config.ocio"),
+                "--inputspace",
+                item.req.source.name,
+                "--outputspace",
+                f"{view} - {item.req.display.name}",
+                "--format",
+                fmt,
+                "--cubesize",
+                str(item.req.size),
+                str(out / item.name),
+            ]
+        )
+    return commands, skipped
+
+
+def _children_cpu() -> float:
+    """User and system CPU seconds of the finished child processes (a pack's workers included)."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def main() -> None:
+    from generator.luts import pack
+    from generator.spec import load
+
+    if shutil.which("ociobakelut") is None:
+        sys.exit("ociobakelut is not installed")
+    items = pack.plan(load.load())
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        (folder / "spec.toml").write_text(bench_spec(items), encoding="utf-8")
+        ocioforge = [sys.executable, "-c", OCIOFORGE]
+        subprocess.run([*ocioforge, "build", str(folder / "spec.toml"), "-o", str(folder / "pack-bench")], check=True)
+        commands, skipped = their_commands(items, folder / "pack-bench", folder / "theirs")
+        (folder / "theirs").mkdir()
+        started, cpu = time.perf_counter(), _children_cpu()
+        for command in commands:
+            subprocess.run(command, check=True, capture_output=True)
+        theirs, their_cpu = time.perf_counter() - started, _children_cpu() - cpu
+        started, cpu = time.perf_counter(), _children_cpu()
+        subprocess.run([*ocioforge, "pack", "-o", str(folder / "ours")], check=True, capture_output=True)
+        ours, our_cpu = time.perf_counter() - started, _children_cpu() - cpu
+    print(f"default pack: {len(items)} files on {os.cpu_count()} cores, each measured for its README")
+    print(f"  ocioforge pack       {ours:8.2f} s wall  {our_cpu:8.2f} s CPU")
+    print(
+        f"  ociobakelut loop     {theirs:8.2f} s wall  {their_cpu:8.2f} s CPU  "
+        f"({len(commands)} files; {skipped} in formats it lacks skipped)"
+    )
+    print(f"  ratio ours/theirs    {ours / theirs:8.2f} wall  {our_cpu / their_cpu:8.2f} CPU  (target <= 1.0, wall)")
+    print(f"  load average at the end: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (others' work slows both)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,233 @@
+"""The LUT pack: [[lut_pack]] tables planned, baked, measured and written beside other files."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from generator import tolerances
+from generator.luts import aces_probes, pack, pack_folder, probes
+from generator.spec import load
+from generator.spec.schema import SpecError
+
+COMMITTED = Path(__file__).resolve().parents[2] / "luts"
+
+SMALL = """
+colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]
+[[display]]
+name = "sRGB - Display"
+[[lut_pack]]
+sources = ["ACEScct"]
+displays = ["sRGB - Display"]
+formats = ["resolve_cube", "clf"]
+size = { resolve_cube = 9, clf = 5 }
+[[lut_pack]]
+sources = ["ACEScct"]
+displays = ["sRGB - Display"]
+views = ["ACES 2.0"]
+formats = ["clf", "resolve_cube"]
+size = 7
+decimals = 4
+shaper_entries = 256
+"""
+
+
+def small_spec(text: str = SMALL):
+    return load.parse(text, "small.toml", Path("."))
+
+
+@pytest.fixture
+def few_probes(monkeypatch):
+    monkeypatch.setattr(probes, "COUNT", 256)
+    monkeypatch.setattr(aces_probes, "PROBE_COUNT", 256)
+
+
+def test_default_plan_is_the_committed_pack(default_spec):
+    """The default spec's tables name every LUT of luts/, and nothing else."""
+    names = [name for item in pack.plan(default_spec) for name in item.names]
+    committed = {p.name for p in COMMITTED.iterdir()} - {pack_folder.README, pack_folder.MANIFEST}
+    assert len(names) == len(set(names)) == len(committed) and set(names) == committed
+
+
+def test_committed_pack_is_what_the_build_gives_and_fits(default_spec, tmp_path):
+    """luts/ is rebuilt bit-identically from the default spec (its manifest too), and stays
+    under the size limit: the proof that baking through [[lut_pack]] changed nothing."""
+    built = pack.build_pack(tmp_path / "luts", default_spec)
+    files = {p.name: p.read_bytes() for p in sorted(built.iterdir())}
+    assert files == {p.name: p.read_bytes() for p in sorted(COMMITTED.iterdir())}, "luts/ is stale: run make run"
+    assert sum(len(data) for data in files.values()) <= tolerances.LUT_PACK_BYTES
+    rows = [line.split("|") for line in files["README.md"].decode().splitlines() if "_to_" in line and ".clf |" in line]
+    sdr = [cells for cells in rows if "codes" in cells[10]]
+    assert len(sdr) == 18
+    # read as written, every CLF meets the issue's in-gamut target on every probe set; with
+    # OCIO's default flags (fast pow, log and exp), its every-set target
+    assert max(float(cells[8]) for cells in sdr) <= tolerances.LUT_CLF_IN_GAMUT_CODES
+    assert max(float(cells[9]) for cells in sdr) <= tolerances.LUT_CLF_SCALE_CODES
+
+
+def test_pack_is_reproducible_and_measured(tmp_path, few_probes):
+    spec = small_spec()
+    first = pack.build_pack(tmp_path / "a", spec, workers=2)
+    second = pack.build_pack(tmp_path / "b", spec, workers=1)
+    names = sorted(p.name for p in first.iterdir())
+    view = "acescct_aces_2_0_sdr_100_nits_rec_709_srgb_display"
+    assert names == [
+        pack_folder.MANIFEST,
+        "README.md",
+        f"{view}.clf",
+        f"{view}.cube",
+        "acescct_to_srgb_display.clf",
+        "acescct_to_srgb_display.cube",
+    ]
+    for name in names:
+        assert (first / name).read_bytes() == (second / name).read_bytes()
+    readme = (first / "README.md").read_text()
+    views = [line.split("|") for line in readme.splitlines() if line.startswith(f"| {view}")]
+    assert len(views) == 2 and "| in gamut p99 / max | AP0 0..1 p99 / max |" in readme
+    assert np.isfinite([float(part) for row in views for cell in row[6:12] for part in cell.split("/")]).all()
+    rows = [line for line in readme.splitlines() if line.startswith("| acescct_to")]
+    assert len(rows) == 2 and all("| scale | " in row for row in rows)
+    assert "| In-gamut probes max | Worst set p99 | All probes max |" in readme and "not bounds" in readme
+    cube, clf = (row.split("|") for row in sorted(rows, key=lambda row: ".clf" in row))
+    assert clf[11].strip() == "(named in the file)" and float(cube[11]) != float(cube[7])
+    assert "9³ lattice" in readme and "5³ lattice" in readme and "256-entry 1D shaper" in readme
+
+
+def bad(text: str) -> SpecError:
+    with pytest.raises(SpecError) as caught:
+        pack.plan(small_spec(SMALL + text))
+    return caught.value
+
+
+@pytest.mark.parametrize(
+    "table, field, words",
+    [
+        ('colour = 1\nsources = ["ACEScg"]', "lut_pack[2].colour", "allowed: sources"),
+        ('sources = ["ACEScg"]\nformats = ["clf"]', "lut_pack[2].displays", "required"),
+        ('sources = ["Nope"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]', "lut_pack[2].sources[0]", "not in"),
+        ('sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["tiff"]', "lut_pack[2].formats[0]", "clf"),
+        (
+            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nsize = 500',
+            "lut_pack[2].size",
+            "2 to 129",
+        ),
+        (
+            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\ngamut_maps = ["squash"]',
+            "lut_pack[2].gamut_maps[0]",
+            "allowed: clip",
+        ),
+        (
+            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nviews = ["ACES 2.0"]\n'
+            'gamut_maps = ["clip"]',
+            "lut_pack[2].views",
+            "exclude each other",
+        ),
+        (
+            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nfile_name = "{camera}"',
+            "lut_pack[2].file_name",
+            "{source}",
+        ),
+        (
+            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\ndecimals = 3',
+            "lut_pack[2].decimals",
+            "with views",
+        ),
+    ],
+)
+def test_bad_keys_are_named_when_loaded(table, field, words):
+    error = bad(f"[[lut_pack]]\n{table}\n")
+    assert error.field == field and words in error.message
+
+
+@pytest.mark.parametrize(
+    "table, field, words",
+    [
+        # bake refuses it: the key that declared it is named
+        (
+            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["iridas_cube"]',
+            "lut_pack[2].formats",
+            "linear",
+        ),
+        (
+            'sources = ["ACEScct"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nsize = 2',
+            "lut_pack[2].size",
+            "2 is outside",
+        ),
+        ('sources = ["Raw"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]', "lut_pack[2].sources", "data"),
+        (
+            'sources = ["ACEScct"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nviews = ["ACES 2.0 - HDR 1000 nits (P3 D65)"]',
+            "lut_pack[2].views[0]",
+            "cannot show",
+        ),
+        # a name the first table writes already
+        (
+            'sources = ["ACEScct"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\ngamut_maps = ["clip"]',
+            "lut_pack[2].file_name",
+            "twice",
+        ),
+    ],
+)
+def test_what_bake_refuses_is_named_when_planned(table, field, words):
+    error = bad(f"[[lut_pack]]\n{table}\n")
+    assert error.field == field and words in error.message and error.source == "small.toml"
+
+
+def test_a_spec_without_a_pack_is_refused(default_spec):
+    spec = small_spec(SMALL.split("[[lut_pack]]")[0])
+    with pytest.raises(SpecError, match="no LUT pack"):
+        pack.plan(spec)
+
+
+def fake(folder: Path, names: list[str], force: bool = False, text: str = "new") -> None:
+    """A pack of ``names`` written through the pack's staging, without baking."""
+    with pack_folder.staged(folder, names, force) as staging:
+        for name in [*names, pack_folder.README]:
+            (staging / name).write_text(f"{text} {name}")
+
+
+def test_foreign_files_are_left_alone_and_a_clash_refused(tmp_path):
+    folder = tmp_path / "pack"
+    folder.mkdir()
+    (folder / "plate.exr").write_text("a plate")
+    fake(folder, ["a.cube", "b.clf"])
+    assert (folder / "plate.exr").read_text() == "a plate" and (folder / "a.cube").read_text() == "new a.cube"
+    (folder / "c.clf").write_text("theirs")
+    with pytest.raises(pack_folder.Refused, match="c.clf: exists and is not a file ocioforge pack wrote"):
+        fake(folder, ["a.cube", "c.clf"], text="second")
+    assert (folder / "a.cube").read_text() == "new a.cube" and (folder / "c.clf").read_text() == "theirs"
+    assert sorted(p.name for p in folder.iterdir()) == [
+        pack_folder.MANIFEST,
+        "README.md",
+        "a.cube",
+        "b.clf",
+        "c.clf",
+        "plate.exr",
+    ]
+    fake(folder, ["a.cube", "c.clf"], force=True, text="second")
+    assert (folder / "c.clf").read_text() == "second c.clf" and (folder / "plate.exr").read_text() == "a plate"
+
+
+def test_rerun_replaces_its_own_files_and_deletes_only_what_it_wrote(tmp_path):
+    folder = tmp_path / "deep" / "pack"
+    fake(folder, ["a.cube", "b.clf", "c.clf"])
+    (folder / "c.clf").write_text("edited by hand")  # no longer what the pack wrote: kept
+    fake(folder, ["a.cube", "d.clf"], text="second")
+    assert sorted(p.name for p in folder.iterdir()) == [pack_folder.MANIFEST, "README.md", "a.cube", "c.clf", "d.clf"]
+    assert (folder / "a.cube").read_text() == "second a.cube" and (folder / "c.clf").read_text() == "edited by hand"
+    with pytest.raises(pack_folder.Refused):  # and now foreign to it
+        fake(folder, ["c.clf"])
+
+
+def test_a_failed_pack_changes_nothing(tmp_path):
+    folder = tmp_path / "pack"
+    fake(folder, ["a.cube"])
+    before = {p.name: p.read_bytes() for p in folder.iterdir()}
+    with pytest.raises(RuntimeError), pack_folder.staged(folder, ["a.cube"], False) as staging:
+        (staging / "a.cube").write_text("half")
+        raise RuntimeError("a bake failed")
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == before
+    with pytest.raises(RuntimeError), pack_folder.staged(tmp_path / "new" / "pack", ["a.cube"], False):
+        raise RuntimeError("a bake failed")
+    assert not (tmp_path / "new").exists()
