@@ -8,6 +8,7 @@ from pathlib import Path
 import click
 
 from generator.cli import NAME, Command, GivenPath, printable, say
+from generator.ocio.host_versions import not_loading
 from generator.ocio.write import build, for_folder, target
 from generator.spec import labels, load
 
@@ -33,3 +34,10 @@ def command(spec, output, ocio_version, force):
         f"{counted(result.colour_spaces, 'colour space')}, {counted(result.displays, 'display')}, "
         f"{counted(result.views, 'view')}, {counted(result.files, 'file')} ({time.perf_counter() - started:.2f} s)"
     )
+    refusing = not_loading(version or parsed.ocio_version)
+    if refusing:  # said, not refused: the spec asked for this version
+        written = ".".join(map(str, version or parsed.ocio_version))
+        click.echo(
+            f"note: an OCIO {written} config does not load in {refusing}; --ocio-version 2.1 writes one they load",
+            err=True,
+        )
