@@ -366,3 +366,8 @@ ACES2_ROUND_TRIP_CODES = 0.02
 #: file's output, limiting RGB over the peak, is about 1 at most): float32 and OCIO's fast
 #: power in the file's last operator (measured 6.1e-5 with its default flags, 2.1e-6 lossless).
 ACES_LATTICE_FILE_RELATIVE = 1e-4
+
+#: A view applying looks, in 10-bit codes of an SDR display: a look's CDL power and its process
+#: space's log encoding carry float32 rounding through steep stretches (the sRGB curve near
+#: black) that no per-sample allowance models there; measured at 0.082 codes, lossless, on the farthest over-range probes (ACEScg 1551).
+LOOK_VIEW_CODES = 0.1

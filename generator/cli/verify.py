@@ -57,15 +57,23 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
     help="Print the summary alone: not every row, nor each departure OCIO's default flags explain "
     "(--report's files name them).",
 )
+@click.option(
+    "--context",
+    "context",
+    multiple=True,
+    metavar="NAME=VALUE",
+    help="A context variable's value (repeatable), e.g. SHOT=sh010: the looks read that shot's files. "
+    "Default: the config's environment defaults.",
+)
 @click.pass_context
-def command(ctx, config, engines, report_dir, force, quick, only, summary_only):
+def command(ctx, config, engines, report_dir, force, quick, only, summary_only, context):
     if report_dir:
         _check_report_folder(Path(report_dir), force)
     names = tuple(dict.fromkeys(e.strip().lower() for e in engines.split(",") if e.strip()))  # each engine once
     if not names:
         fail(f"--engines names none; allowed: a comma-separated list of {ENGINES},gpu")
     named = ctx.get_parameter_source("engines") is not click.core.ParameterSource.DEFAULT
-    result = verify(config, names, density="quick" if quick else "full", only=only or "", strict=named)
+    result = verify(config, names, density="quick" if quick else "full", only=only or "", strict=named, context=context)
     written = []
     if report_dir:  # first: a verdict printed to a full device is lost, the report's is not
         written = report.write_report(result, report_dir, report_figures(result), force)

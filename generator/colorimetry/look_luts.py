@@ -57,39 +57,10 @@ def cached_lut3d(path: str | Path) -> Lut3D:
 def apply_lut3d(lut: Lut3D, rgb, interpolation: str = "linear") -> np.ndarray:
     """``rgb`` (..., 3) through ``lut``: clamped to its domain, scaled onto the lattice, then
     trilinear (``linear``) or tetrahedral interpolation, as OpenColorIO's Lut3D op does."""
+    from colour.algebra import table_interpolation_tetrahedral, table_interpolation_trilinear  # start-up time
+
     rgb = np.asarray(rgb, dtype=np.float64)
-    size = np.asarray(lut.table.shape[:3])
     low, high = lut.domain
-    position = (np.clip(np.nan_to_num(rgb, nan=0.0), low, high) - low) / (high - low) * (size - 1)
-    base = np.minimum(np.floor(position).astype(int), size - 2)
-    frac = position - base
-    if interpolation == "tetrahedral":
-        return _tetrahedral(lut.table, base, frac)
-    return _trilinear(lut.table, base, frac)
-
-
-def _node(table: np.ndarray, base: np.ndarray, corner) -> np.ndarray:
-    return table[base[..., 0] + corner[0], base[..., 1] + corner[1], base[..., 2] + corner[2]]
-
-
-def _trilinear(table: np.ndarray, base: np.ndarray, frac: np.ndarray) -> np.ndarray:
-    out = np.zeros(base.shape[:-1] + (table.shape[-1],))
-    for corner in np.ndindex(2, 2, 2):
-        weight = np.prod(np.where(np.asarray(corner) == 1, frac, 1.0 - frac), axis=-1)
-        out += weight[..., None] * _node(table, base, corner)
-    return out
-
-
-def _tetrahedral(table: np.ndarray, base: np.ndarray, frac: np.ndarray) -> np.ndarray:
-    """The tetrahedron of the cell's six holding the sample, by the order of its fractions."""
-    order = np.argsort(-frac, axis=-1, kind="stable")  # largest fraction first
-    f = np.take_along_axis(frac, order, axis=-1)
-    corner = np.zeros(base.shape, dtype=int)
-    out = (1.0 - f[..., 0:1]) * _node(table, base, (0, 0, 0))
-    weights = (f[..., 0] - f[..., 1], f[..., 1] - f[..., 2], f[..., 2])
-    for step in range(3):
-        np.put_along_axis(corner, order[..., step : step + 1], 1, axis=-1)
-        out = out + weights[step][..., None] * table[
-            base[..., 0] + corner[..., 0], base[..., 1] + corner[..., 1], base[..., 2] + corner[..., 2]
-        ]
-    return out
+    unit = (np.clip(np.nan_to_num(rgb, nan=0.0), low, high) - low) / (high - low)
+    interpolate = table_interpolation_tetrahedral if interpolation == "tetrahedral" else table_interpolation_trilinear
+    return interpolate(unit, lut.table)

@@ -19,6 +19,7 @@ from generator.luts.pool import Pool
 from generator.luts.transforms import matrix_transform
 from generator.luts.view import bake_view_lut_cached
 from generator.ocio import curves
+from generator.ocio import looks as ocio_looks
 from generator.ocio.capabilities import HLG_DISPLAY_BUILTIN, SPACE_BUILTINS
 from generator.spec.allowed import COLORIMETRIC_ALIASES, VIEW_METHODS
 from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES, display_view_space
@@ -298,19 +299,20 @@ def _views(spec: Spec, cfg: ocio.Config, bakes: dict, view_luts: dict, pool: Poo
     aces_added: set[str] = set()
     for display in spec.displays:
         for view in display.views:
+            looks = ocio_looks.view_looks(display, view)
             if view == "Raw":
                 cfg.addDisplayView(display.name, view, raw)
             elif view == COLORIMETRIC or view in COLORIMETRIC_ALIASES:
-                cfg.addDisplayView(display.name, view, COLORIMETRIC, display.name, "", "", "")
+                cfg.addDisplayView(display.name, view, COLORIMETRIC, display.name, looks, "", "")
             elif reference.aces_view_of(display, view) is not None:
                 if view not in aces_added:
                     cfg.addViewTransform(aces_view_transform(spec, reference.aces_view_of(display, view)))
                     aces_added.add(view)
-                cfg.addDisplayView(display.name, view, view, display.name, "", "", "")
+                cfg.addDisplayView(display.name, view, view, display.name, looks, "", "")
             else:
                 mapped = _mapped_view_transform(spec, display, view, bakes, view_luts, pool)
                 cfg.addViewTransform(mapped)
-                cfg.addDisplayView(display.name, view, mapped.getName(), display.name, "", "", "")
+                cfg.addDisplayView(display.name, view, mapped.getName(), display.name, looks, "", "")
     cfg.setActiveDisplays(", ".join(d.name for d in spec.displays))
     # No active views: OCIO would order every display's views by that one list, and a display
     # listing Raw first would default to another display's first view.
@@ -331,7 +333,10 @@ def _display_view_spaces(spec: Spec) -> list[ocio.ColorSpace]:
                 categories=["file-io"],
                 description=f"The {view} view of {display.name}, for writing display-ready files",
             )
-            dvt = ocio.DisplayViewTransform(src=spec.scene_reference, display=display.name, view=view)
+            # The view alone, its looks bypassed: a look (a LUT file's, a shot's) has no inverse.
+            dvt = ocio.DisplayViewTransform(
+                src=spec.scene_reference, display=display.name, view=view, looksBypass=bool(display.view_looks(view))
+            )
             cs.setTransform(dvt, ocio.COLORSPACE_DIR_FROM_REFERENCE)
             out.append(cs)
     return out
@@ -446,6 +451,7 @@ def _emit(spec: Spec, pool: Pool) -> Emitted:
     cfg.setFileRules(_file_rules(spec))
     if spec.inactive:
         cfg.setInactiveColorSpaces(", ".join(spec.inactive))
+    ocio_looks.add_looks(spec, cfg, LUT_FOLDER)
     cfg.validate()
     for view in baked_aces_views(spec):
         add_file(view_luts, aces_lattice.file_name(view), _baked(pool, ("aces", view), aces_lattice.baked_file, view))

@@ -18,6 +18,7 @@ from generator.ocio.curves import curve_label
 from generator.ocio.emit import LUT_FOLDER, emit
 from generator.ocio.environment import set_aside
 from generator.spec import resolved
+from generator.spec.looks import LOOK_FOLDER
 from generator.spec.schema import Spec, SpecError
 
 CONFIG_FILENAME = "config.ocio"
@@ -78,11 +79,12 @@ def write_files(spec: Spec, folder: Path) -> BuildResult:
         (folder / LUT_FOLDER / name).write_bytes(curve_file(lut))
     for name, data in emitted.view_luts.items():
         (folder / LUT_FOLDER / name).write_bytes(data)
+    copied = copy_look_files(spec, folder)
     (folder / resolved.FILENAME).write_text(resolved.dumps(spec), encoding="utf-8")
     cfg = emitted.config
     views = sum(len(cfg.getViews(d)) for d in cfg.getDisplays())
     worst = max((lut.max_relative_error for lut in emitted.luts.values()), default=0.0)
-    files = len(emitted.luts) + len(emitted.view_luts) + 2
+    files = len(emitted.luts) + len(emitted.view_luts) + copied + 2
     import PyOpenColorIO as ocio
 
     spaces = cfg.getColorSpaceNames(ocio.SEARCH_REFERENCE_SPACE_ALL, ocio.COLORSPACE_ALL)  # inactive ones too
@@ -91,7 +93,7 @@ def write_files(spec: Spec, folder: Path) -> BuildResult:
 
 #: What a build writes into its folder: only a folder holding these alone, the resolved spec
 #: among them, is a previous build that ``--force`` may replace.
-BUILD_ENTRIES = (CONFIG_FILENAME, LUT_FOLDER, resolved.FILENAME)
+BUILD_ENTRIES = (CONFIG_FILENAME, LUT_FOLDER, resolved.FILENAME, LOOK_FOLDER)
 
 #: What a build writes into its LUT folder: files of these suffixes alone.
 LUT_SUFFIXES = (".clf", ".spi1d")
@@ -111,6 +113,12 @@ def _replace_problem(out_dir: Path) -> str:
     for written in (resolved.FILENAME, CONFIG_FILENAME):
         if written not in names:
             return f"has no {written}, so it is not a previous build; --force replaces only those"
+    stray_look = _foreign_look_file(out_dir)
+    if stray_look:
+        return (
+            f"holds {stray_look}, which no look of its {resolved.FILENAME} reads; --force replaces only a previous "
+            "build (move the file out first)"
+        )
     luts = out_dir / LUT_FOLDER
     if luts.exists():
         if not luts.is_dir():
@@ -150,13 +158,46 @@ def files_read(config: Path) -> set[str] | None:
         cfg = ocio.Config.CreateFromFile(str(config))
     except Exception:  # ocio.Exception, and ExceptionMissingFile, which does not derive from it
         return None
-    if cfg.getSearchPath() != LUT_FOLDER:
+    if cfg.getSearchPath().split(":")[0] != LUT_FOLDER:
         return set()
     return {
         t.getSrc()
         for _, t in leaf_transforms(cfg)
         if isinstance(t, ocio.FileTransform) and Path(t.getSrc()).name == t.getSrc()
     }
+
+
+def copy_look_files(spec: Spec, folder: Path) -> int:
+    """Copy the files ``spec``'s looks read (each shot's, for a path naming context variables) from
+    the spec's folder into ``folder``'s looks folder, keeping their paths; how many were copied."""
+    names = sorted({name for look in spec.looks for name, _ in look.files})
+    for name in names:
+        target_file = folder / LOOK_FOLDER / name
+        target_file.parent.mkdir(parents=True, exist_ok=True)
+        target_file.write_bytes((Path(spec.look_folder) / name).read_bytes())
+    return len(names)
+
+
+def _foreign_look_file(out_dir: Path) -> str:
+    """A file (or anything else) in a previous build's looks folder that no look of its stored
+    spec reads, as a path inside the build; "" when there is none."""
+    looks = out_dir / LOOK_FOLDER
+    if not looks.exists():
+        return ""
+    if not looks.is_dir():
+        return LOOK_FOLDER
+    try:
+        spec = resolved.read(out_dir / resolved.FILENAME)
+    except SpecError:
+        return LOOK_FOLDER
+    own = {name for look in spec.looks for name, _ in look.files}
+    for entry in sorted(looks.rglob("*")):
+        name = entry.relative_to(looks).as_posix()
+        if (entry.is_file() and name not in own) or not (entry.is_file() or entry.is_dir()):
+            return f"{LOOK_FOLDER}/{name}"
+        if entry.is_dir() and not any(n.startswith(name + "/") for n in own):
+            return f"{LOOK_FOLDER}/{name}"
+    return ""
 
 
 def leaf_transforms(cfg) -> list[tuple[str, object]]:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 import tomllib
+from dataclasses import replace
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -19,7 +20,7 @@ from generator.colorimetry import library
 from generator.colorimetry.matrices import CATS, Gamut
 from generator.colorimetry.transfer import Linear
 from generator.rendering import views as aces_views
-from generator.spec import fields, labels, lut_pack, namespace, resolved
+from generator.spec import fields, labels, looks, lut_pack, namespace, resolved
 from generator.spec.allowed import (
     COLORIMETRIC_ALIASES,
     HLG_DISPLAY_PEAK,
@@ -45,6 +46,8 @@ TOP_KEYS = (
     "roles",
     "file_rule",
     "lut_pack",
+    "look",
+    "environment",
 )
 CUSTOM_SPACE_KEYS = (
     "name",
@@ -203,7 +206,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     owners = list(labels.owners(listed, customs, "colour_spaces" in raw and raw["colour_spaces"] != ["*"]))
     labels.distinct(owners, source)
     all_names = [name for name, _, _ in owners]
-    displays = tuple(_display(d, source, f"display[{i}]", base) for i, d in enumerate(_tables(raw, "display", source)))
+    displays, view_looks = _displays(raw, source, base)
     if not displays:
         raise SpecError(
             source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's"
@@ -248,6 +251,10 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     _check_data(spaces, displays, chosen_roles, source)
     rules = _file_rules(raw, source, every | set(taken))
     names = namespace.colour_spaces((*listed, *customs), taken)
+    environment = looks.environment(raw.get("environment"), source)
+    by_name = {n.lower(): s for s in (*listed, *customs) for n in (s.name, *s.aliases)}
+    spec_looks = looks.tables(raw.get("look"), source, base, by_name, environment)
+    looks.check_view_looks(displays, spec_looks, source, view_looks)
     return Spec(
         name=labels.string(raw.get("name", "ocioforge"), source, "name"),
         description=labels.string(raw.get("description", ""), source, "description", text=True),
@@ -268,7 +275,28 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         lut_packs=lut_pack.tables(
             raw.get("lut_pack"), source, every, {n.lower() for d in displays for n in (d.name, *d.aliases)}
         ),
+        looks=spec_looks,
+        environment=environment,
+        look_folder=str(base.absolute()),
     )
+
+
+def _displays(raw: dict, source: str, base: Path) -> tuple[tuple[Display, ...], dict]:
+    """The displays, each view that applies looks recorded on its display (views may be given as
+    tables, :func:`generator.spec.looks.split_views`); and display index -> entry -> looks as given."""
+    out, given = [], {}
+    for i, table in enumerate(_tables(raw, "display", source)):
+        field = f"display[{i}]"
+        entries = {}
+        if isinstance(table, dict) and "views" in table:
+            names, entries = looks.split_views(table["views"], source, f"{field}.views")
+            table = {**table, "views": names}
+        display = _display(table, source, field, base)
+        if entries:
+            given[i] = entries
+            display = replace(display, looks=tuple((display.views[j], text) for j, text in entries.items()))
+        out.append(display)
+    return tuple(out), given
 
 
 def recorded(source: str) -> str:

@@ -22,7 +22,7 @@ from generator.colorimetry.matrices import CATS, Gamut
 from generator.files import not_readable
 from generator.gamut.rgc import RGCParams
 from generator.rendering.views import is_aces_name
-from generator.spec import fields
+from generator.spec import fields, looks
 from generator.spec.allowed import COLORIMETRIC_ALIASES, OCIO_MIN_VERSION, VIEWS, newest_ocio_version
 from generator.spec.namespace import DISPLAY_REFERENCE, colour_spaces, generated
 from generator.spec.schema import ColourSpace, Display, FileRule, Spec, SpecError
@@ -45,6 +45,8 @@ def _record(obj) -> dict:
     out = {}
     for f in dataclasses.fields(obj):
         value = getattr(obj, f.name)
+        if f.name == "looks" and not value:  # a display's views' looks, recorded when there are any
+            continue
         if f.name in ("curve", "eotf"):
             out[f.name] = _curve_to_json(value)
         elif isinstance(value, Gamut):
@@ -66,6 +68,7 @@ def dumps(spec: Spec) -> str:
     data["displays"] = [_record(d) for d in spec.displays]
     data["file_rules"] = [_rule_record(r) for r in spec.file_rules]
     data["rgc"] = dataclasses.asdict(spec.rgc)
+    data.update(looks.records(spec))
     return json.dumps(data, indent=1, sort_keys=True) + "\n"
 
 
@@ -206,7 +209,8 @@ class _Reader:
         )
 
     def display(self, data, field: str) -> Display:
-        d = self.table(data, [f.name for f in dataclasses.fields(Display)], field)
+        keys = [f.name for f in dataclasses.fields(Display) if f.name != "looks" or "looks" in data]
+        d = self.table(data, keys, field)
         views = self.items(d["views"], f"{field}.views", lambda v, f: self.typed(v, str, f), 1)
         unknown = next(
             (
@@ -232,6 +236,7 @@ class _Reader:
             self.typed(d["encoding"], str, f"{field}.encoding"),
             self.typed(d["description"], str, f"{field}.description"),
             self.typed(d["absolute"], bool, f"{field}.absolute"),
+            tuple(self.items(d.get("looks", []), f"{field}.looks", self.pair)),
         )
 
     def pair(self, value, field: str) -> tuple[str, str]:
@@ -274,6 +279,7 @@ class _Reader:
         # Builds before the spec held RGC parameters recorded none: they used ACES 1.3's.
         data = dict(data) if isinstance(data, dict) else data
         rgc = self.rgc(data.pop("rgc", None) if isinstance(data, dict) else None)
+        spec_looks, environment = looks.read_records(self, data) if isinstance(data, dict) else ((), ())
         d = self.table(data, keys, "")
         if self.typed(d["chromatic_adaptation"], str, "chromatic_adaptation") not in CATS:
             raise self.fail("chromatic_adaptation", f"unknown chromatic adaptation {d['chromatic_adaptation']!r}")
@@ -291,6 +297,8 @@ class _Reader:
             inactive=self.strings(d["inactive"], "inactive"),
             source=self.typed(d["source"], str, "source"),
             rgc=rgc,
+            looks=spec_looks,
+            environment=environment,
         )
         self.check_names(spec)
         return spec
@@ -348,4 +356,7 @@ def read(path: Path) -> Spec:
         ) from None
     except UnicodeDecodeError:
         raise SpecError(str(path), "-", "not UTF-8 text; allowed: the file a build writes (build again)") from None
-    return loads(text, str(path))
+    spec = loads(text, str(path))
+    return (
+        dataclasses.replace(spec, look_folder=str(path.parent.absolute() / looks.LOOK_FOLDER)) if spec.looks else spec
+    )

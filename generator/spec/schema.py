@@ -6,8 +6,10 @@ the colorimetry, the emitter, the baker and the verifier all read.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 
+from generator.colorimetry.cdl import Correction
 from generator.colorimetry.matrices import Gamut
 from generator.colorimetry.transfer import TransferFunction
 from generator.gamut.rgc import RGCParams
@@ -61,6 +63,13 @@ class Display:
     #: An SDR display driven in absolute luminance: its code 1 emits ``peak`` (an LED wall at
     #: 1500 cd/m² with a 2.4 power), rather than the 100 cd/m² of display-referred 1.0.
     absolute: bool = False
+    #: (view, looks) for each view that applies looks (OCIO's view ``looks``: "+Show Look, +Grade").
+    looks: tuple[tuple[str, str], ...] = ()
+
+    def view_looks(self, view: str) -> tuple[str, ...]:
+        """The names of the looks ``view`` applies, in order (none for most views)."""
+        given = dict(self.looks).get(view, "")
+        return tuple(n.strip().lstrip("+").strip() for n in given.split(",") if n.strip())
 
     @property
     def is_hdr(self) -> bool:
@@ -89,6 +98,47 @@ class FileRule:
     pattern: str = "*"
     extension: str = "*"
     regex: str = ""
+
+
+#: A context variable as OpenColorIO reads one in a file name or CCC id: $NAME, ${NAME}, %NAME%.
+CONTEXT_VARIABLE = re.compile(r"\$\{([A-Za-z_][A-Za-z0-9_]*)\}|\$([A-Za-z_][A-Za-z0-9_]*)|%([A-Za-z_][A-Za-z0-9_]*)%")
+
+
+def context_variables(text: str) -> tuple[str, ...]:
+    """The context variables ``text`` names, each once, in order."""
+    return tuple(dict.fromkeys(next(g for g in m.groups() if g) for m in CONTEXT_VARIABLE.finditer(text)))
+
+
+def with_context(text: str, context: dict[str, str]) -> str:
+    """``text`` with each context variable it names replaced by its value in ``context``."""
+    return CONTEXT_VARIABLE.sub(lambda m: context[next(g for g in m.groups() if g)], text)
+
+
+@dataclass(frozen=True)
+class Look:
+    """A look (``[[look]]``) applied in ``process_space``: an ASC CDL given inline (``cdl``),
+    or a file the show provides (``file``: a CDL file, read by ``cccid`` where it holds several,
+    or a LUT file), by its path inside the build's looks folder, which may name context
+    variables ($SHOT) the config's environment gives defaults for."""
+
+    name: str
+    process_space: str
+    description: str = ""
+    cdl: Correction | None = None
+    #: The CDL's style: "asc" (OCIO's CDL_ASC) or "no_clamp" (CDL_NO_CLAMP).
+    style: str = "asc"
+    file: str = ""
+    cccid: str = ""
+    #: A LUT file's interpolation as OCIO runs it: "linear" (trilinear) or "tetrahedral".
+    interpolation: str = "linear"
+    #: (path, SHA-256) of each file the build copies for the look (every shot's): verify reads a
+    #: build's copy only while it is the file the build copied.
+    files: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def variables(self) -> tuple[str, ...]:
+        """The context variables the look's file or CCC id names, in order."""
+        return context_variables(self.file + " " + self.cccid)
 
 
 @dataclass(frozen=True)
@@ -136,6 +186,12 @@ class Spec:
     left_out: tuple[str, ...] = field(default=(), compare=False, metadata={"resolved": False})
     #: The show's standalone LUTs (``[[lut_pack]]``), baked by ``ocioforge pack``; not part of a build.
     lut_packs: tuple[LutPack, ...] = field(default=(), compare=False, metadata={"resolved": False})
+    #: The looks (``[[look]]``) and the context variables' defaults (``[environment]``), in
+    #: order; the resolved spec records them only when there are any (:mod:`generator.spec.looks`).
+    looks: tuple[Look, ...] = field(default=(), metadata={"resolved": False})
+    environment: tuple[tuple[str, str], ...] = field(default=(), metadata={"resolved": False})
+    #: The folder the looks' files are read from: the spec's, or a build's looks folder.
+    look_folder: str = field(default="", compare=False, metadata={"resolved": False})
 
     @property
     def space_names(self) -> list[str]:

@@ -17,6 +17,7 @@ import PyOpenColorIO as ocio
 from generator.ocio.emit import LUT_FOLDER, generated_spaces, space_categories
 from generator.ocio.write import leaf_transforms
 from generator.spec.schema import Display, Spec
+from generator.verify.looks import look_differences
 
 
 def _canonical(cfg, name: str) -> str:
@@ -82,11 +83,7 @@ def differences(cfg, spec: Spec) -> list[str]:
         if shared:
             out.append(f"{display.name} also lists the shared views {shared}, which the build does not write")
     out += _additions(cfg, spec)
-    if cfg.getSearchPath() != LUT_FOLDER:
-        out.append(
-            f"the search path is {cfg.getSearchPath()!r}, the build's {LUT_FOLDER!r} (the folder beside the "
-            "config, wherever it is copied)"
-        )
+    out += look_differences(cfg, spec, LUT_FOLDER)  # looks, environment, search path
     for space in (*spec.colour_spaces, *spec.displays):
         held = cfg.getColorSpace(space.name)
         menu = _menu(space)
@@ -135,7 +132,7 @@ def _additions(cfg, spec: Spec) -> list[str]:
     if named:
         out.append(f"named transforms {named}, which the build does not write, appear in hosts' menus")
     names = list(cfg.getEnvironmentVarNames())
-    if names:
+    if names and not spec.environment:  # a spec's own are compared by look_differences
         out.append(
             f"environment variables {names}, which the build does not write, make what a view reads depend on the shell"
         )

@@ -18,6 +18,7 @@ import PyOpenColorIO as ocio
 
 from generator.verify.check import KINDS, LUT, VIEW, Check
 from generator.verify.judge import Output
+from generator.verify.looks import LOOK
 
 ENGINE_NAMES = ("ocio", "oiiotool", "ocioconvert", "blender", "gpu")
 
@@ -61,6 +62,10 @@ def processor(cfg, check: Check, config_dir: Path):
     """The OCIO processor ``check`` exercises."""
     if check.kind == VIEW:
         return cfg.getProcessor(check.src, check.display, check.view, ocio.TRANSFORM_DIR_FORWARD)
+    if check.kind == LOOK:  # the look alone, in its process space
+        return cfg.getProcessor(
+            ocio.LookTransform(src=check.src, dst=check.dst, looks=check.item.removeprefix("look "))
+        )
     if check.kind == LUT:
         path = config_dir / check.lut
         if not path.is_file():
@@ -172,4 +177,7 @@ def explain_default_flags(config_path: Path, check: Check, error_of) -> str:
     return ""
 
 
-IN_PROCESS = (OcioEngine("ocio default", "OPTIMIZATION_DEFAULT"), OcioEngine("ocio lossless", "OPTIMIZATION_LOSSLESS"))
+IN_PROCESS = (
+    OcioEngine("ocio default", "OPTIMIZATION_DEFAULT", (*KINDS, LOOK)),
+    OcioEngine("ocio lossless", "OPTIMIZATION_LOSSLESS", (*KINDS, LOOK)),
+)

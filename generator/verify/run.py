@@ -21,6 +21,7 @@ from generator.files import not_readable
 from generator.ocio.environment import set_aside
 from generator.spec import resolved
 from generator.spec.schema import Spec, SpecError
+from generator.verify import looks
 from generator.verify.blender import BlenderEngine
 from generator.verify.check import KINDS, Check
 from generator.verify.checks import build_checks
@@ -291,32 +292,47 @@ def verify(
     workdir: str | Path | None = None,
     only: str = "",
     strict: bool = False,
+    context: tuple[str, ...] = (),
 ) -> Verification:
     """Verify the config at ``config_path`` through the named engine families: the checks
     of the given ``kinds`` whose title contains ``only`` (every one when empty; SpecError when
     it matches none). ``strict``: an engine that cannot run fails the verification (one the user
-    named), as every one does on CI; otherwise it is reported as not run."""
+    named), as every one does on CI; otherwise it is reported as not run. ``context``: NAME=value
+    assignments of the config's context variables (its environment's defaults for the rest)."""
     with set_aside():  # the shell's OCIO overrides: verify checks the config as written
-        return _verify(config_path, engines, density, kinds, workdir, only, strict)
+        return _verify(config_path, engines, density, kinds, workdir, only, strict, context)
 
 
-def _verify(config_path, engines, density, kinds, workdir, only, strict) -> Verification:
+def _verify(config_path, engines, density, kinds, workdir, only, strict, context=()) -> Verification:
     started = time.perf_counter()
     clear_caches()
     try:
-        return _verify_files(config_path, engines, density, kinds, workdir, only, strict, started)
+        return _verify_files(config_path, engines, density, kinds, workdir, only, strict, started, context)
     finally:
         clear_caches()  # the configs it loaded go with it
 
 
-def _verify_files(config_path, engines, density, kinds, workdir, only, strict, started: float) -> Verification:
-    """:func:`verify` once OCIO's caches are cleared: the checks, each engine, the explanations."""
+def _verify_files(
+    config_path, engines, density, kinds, workdir, only, strict, started: float, context=()
+) -> Verification:
+    """:func:`verify` once OCIO's caches are cleared: the checks, each engine, the explanations,
+    with the context variables set in the environment OCIO and the hosts read."""
     config, spec = load(config_path)
+    values = looks.parse_context(spec, tuple(context))
+    with looks.in_environment(values):
+        return _verify_in_context(config, spec, engines, density, kinds, workdir, only, strict, started, values)
+
+
+def _verify_in_context(
+    config, spec, engines, density, kinds, workdir, only, strict, started: float, values
+) -> Verification:
     registry = engine_registry()
     unknown = [e for e in engines if e not in registry]
     if unknown:
         raise SpecError("--engines", ",".join(unknown), f"unknown engine; allowed: {', '.join(registry)}")
-    checks = [c for c in build_checks(spec, density, kinds) if only in c.title]
+    checks = [
+        c for c in looks.with_looks(spec, build_checks(spec, density, kinds), values, density, kinds) if only in c.title
+    ]
     if only and not checks:
         raise SpecError(
             "--only",
