@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import click
@@ -46,7 +47,8 @@ def test_show_pack_bakes(tmp_path, monkeypatch):
     assert "arri_logc4_led_wall.cube" in names and "acescg_to_led_wall.clf" in names and len(names) == 14
     monkeypatch.setattr(probes, "COUNT", 128)
     monkeypatch.setattr(aces_probes, "PROBE_COUNT", 128)
-    small = tmp_path / "spec.toml"
+    shutil.copytree(spec.parent, tmp_path / "show")  # with the files the spec names (looks)
+    small = tmp_path / "show" / "spec.toml"
     small.write_text(spec.read_text().replace("size = 33", "size = 5").replace("size = 17", "size = 5"))
     packed = run("pack", small, "-o", tmp_path / "luts")
     assert packed.exit_code == 0, packed.output

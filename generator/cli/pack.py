@@ -38,6 +38,13 @@ def command(spec_path, output, force, jobs):
     started = time.perf_counter()
     if not output:
         raise SpecError("ocioforge pack", "-o", "give the folder to write")
+    if output.startswith("-"):  # `-o --help` had made a folder called --help
+        raise SpecError(
+            "ocioforge pack",
+            "-o",
+            f"{printable(output)!r} looks like an option, not a folder; allowed: a folder's path "
+            "(./-name for a name starting with '-')",
+        )
     spec = load.load(spec_path)
     bar = _Progress()
     try:

@@ -46,6 +46,8 @@ def test_help_prints_help_and_writes_nothing(capsys, tmp_path, monkeypatch):
     code, out, _ = run(capsys, "pack", "--help")
     assert code == 0 and "[[lut_pack]]" in out and "--force" in out
     assert list(tmp_path.iterdir()) == []
+    code, out, err = run(capsys, "pack", "-o", "--help")  # taken for -o's value: refused, not a folder
+    assert code == 2 and "'--help' looks like an option" in err and list(tmp_path.iterdir()) == []
 
 
 def test_pack_writes_its_files_beside_the_folders_own_and_reruns(capsys, spec, tmp_path):
