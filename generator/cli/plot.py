@@ -1,4 +1,5 @@
-"""ocioforge plot: the CIE 1931 chromaticity diagram of a built config's colour spaces."""
+"""ocioforge plot: the CIE 1931 chromaticity diagram of a built config's displays and the spaces
+asked for, or where each gamut mapping moves the probe colours on a display."""
 
 from __future__ import annotations
 
@@ -8,8 +9,9 @@ import click
 
 from generator.cli import NAME, Command, ConfigPath, GivenPath, printable, say
 from generator.files import check_file_output, target, write_atomic
+from generator.spec.fields import suggest
 from generator.spec.schema import SpecError
-from generator.verify.figures import chromaticity, png
+from generator.verify import figures
 from generator.verify.run import load
 
 FORMATS = ("png", "svg", "pdf")
@@ -17,14 +19,22 @@ FORMATS = ("png", "svg", "pdf")
 
 @click.command(
     cls=Command,
-    help="Draw the CIE 1931 xy diagram of CONFIG's colour spaces and displays (from the spec "
-    "stored beside it): the spectral locus and every gamut triangle. With --mapping, the "
-    "verifier's probe colours and where each gamut-mapping method sends them on a display "
-    "(--display, by default the first).",
+    help="Draw the CIE 1931 xy diagram of CONFIG's displays (from the spec stored beside it): "
+    "the spectral locus and each display's gamut triangle, and those of the colour spaces "
+    "--spaces names. With --mapping, one panel per gamut-mapping method (and ACES view) of a "
+    "display (--display, by default the first): a line from each of the verifier's probe "
+    "colours to where the method puts it.",
 )
 @click.argument("config", type=ConfigPath(dir_okay=False))
 @click.option("-o", "--output", required=True, type=GivenPath(), help="Image to write: .png, .svg or .pdf.")
-@click.option("--mapping", is_flag=True, help="Add the probe colours and each gamut mapping's result.")
+@click.option(
+    "--spaces",
+    "space_names",
+    type=NAME,
+    multiple=True,
+    help="Colour spaces whose gamuts to draw too (names or aliases; repeat it or separate them with commas).",
+)
+@click.option("--mapping", is_flag=True, help="Draw each gamut mapping's moves, a panel per method.")
 @click.option(
     "--display",
     "display_name",
@@ -33,7 +43,7 @@ FORMATS = ("png", "svg", "pdf")
     help="With --mapping: the display (name or alias; default: the spec's first).",
 )
 @click.option("--force", is_flag=True, help="Replace an existing image (through a link, the file it points to).")
-def command(config, output, mapping, display_name, force):
+def command(config, output, space_names, mapping, display_name, force):
     if display_name is not None and not mapping:
         raise SpecError("ocioforge plot", "--display", "chooses the display --mapping draws; allowed: with --mapping")
     check_file_output(output)
@@ -42,9 +52,37 @@ def command(config, output, mapping, display_name, force):
     if fmt not in FORMATS:
         raise SpecError(output, "-o", f"unknown image format {fmt!r}; allowed: {', '.join(FORMATS)}")
     _, spec = load(config)
-    display = _display(spec, display_name) if mapping else None
-    write_atomic(Path(output), png(chromaticity(spec, display, spaces=True), fmt), force)
+    spaces = _spaces(spec, space_names)
+    if mapping:
+        figure = figures.mapping(spec, _display(spec, display_name), spaces)
+    else:
+        figure = figures.chromaticity(spec, spaces)
+    write_atomic(Path(output), figures.png(figure, fmt), force)
     say(f"wrote {printable(output)}")
+
+
+def _spaces(spec, given: tuple[str, ...]) -> list:
+    """The colour spaces ``given`` names (each value one name or several, comma separated;
+    names or aliases, case-insensitive), in order, each once; SpecError for one the config lacks
+    or one without a gamut (Raw, ADX)."""
+    names = [n.strip() for value in given for n in value.split(",")]
+    if any(not n for n in names):
+        raise SpecError("ocioforge plot", "--spaces", f"{','.join(given)!r} holds an empty name; allowed: names")
+    found = {}
+    for name in names:
+        space = next((s for s in spec.colour_spaces if name.lower() in (n.lower() for n in s.all_names)), None)
+        if space is None:
+            known = [n for s in spec.colour_spaces if s.gamut is not None for n in s.all_names]
+            raise SpecError(
+                "ocioforge plot",
+                "--spaces",
+                f"unknown colour space {name!r}{suggest(name, known)}; allowed: a colour space of the config "
+                "with a gamut (ocioforge list --spec CONFIG lists them)",
+            )
+        if space.gamut is None:
+            raise SpecError("ocioforge plot", "--spaces", f"{space.name!r} has no gamut to draw; allowed: RGB spaces")
+        found.setdefault(space.name, space)
+    return list(found.values())
 
 
 def _display(spec, name: str | None):

@@ -1,10 +1,11 @@
 """Figures for the verify report and ``ocioforge plot``: matplotlib, colour-science's diagram.
 
 * the CIE 1931 xy chromaticity diagram with the spectral locus, the gamut
-  triangle of every display (or every colour space), the probe colours and
-  where each gamut-mapping method of :data:`generator.gamut.METHODS` sends
-  them on one display (the lecture's picture: desaturation moves a colour
-  toward white, scaling keeps its chromaticity);
+  triangle of every display and of the colour spaces asked for;
+* per gamut-mapping method of :data:`generator.gamut.METHODS` (and ACES view)
+  of one display, each probe colour's move from where it was to where the
+  method put it (the lecture's picture: desaturation moves a colour toward
+  white, scaling keeps its chromaticity and lowers its luminance);
 * ramps from grey to spectral colours before and after each mapping;
 * heatmaps of each engine's worst error over each probe family, per check kind.
 """
@@ -64,12 +65,18 @@ def _triangle(axes, primaries, label: str, colour=None, style="-") -> None:
     axes.plot(closed[:, 0], closed[:, 1], style, color=colour, linewidth=1.2, label=label)
 
 
+def _display_linear(spec: Spec, display: Display, scene: np.ndarray) -> np.ndarray:
+    """Display-linear RGB of ``scene`` colours before any mapping, in units of peak."""
+    matrix = reference.display_matrix(spec, display) @ reference.scene_to_display_reference(spec)
+    return apply_matrix(matrix, scene) / display.clip_high
+
+
 def _mapped(spec: Spec, display: Display, scene: np.ndarray) -> dict[str, np.ndarray]:
     """Display-linear RGB of ``scene`` colours after each mapping method and each ACES view
     the display offers, in [0, 1] of peak."""
     gamut = DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
-    linear = apply_matrix(reference.display_matrix(spec, display) @ reference.scene_to_display_reference(spec), scene)
-    out = {name: method(linear / display.clip_high, gamut) for name, method in METHODS.items()}
+    linear = _display_linear(spec, display, scene)
+    out = {name: method(linear, gamut) for name, method in METHODS.items()}
     aces = apply_matrix(reference.to_aces_matrix(spec), scene)
     for name in display.views:
         view = reference.aces_view_of(display, name)
@@ -79,36 +86,110 @@ def _mapped(spec: Spec, display: Display, scene: np.ndarray) -> dict[str, np.nda
     return out
 
 
-def chromaticity(spec: Spec, display: Display | None = None, spaces: bool = False):
-    """The xy diagram: locus, display triangles (and every space's with ``spaces``),
-    probe colours and, for ``display``, where each mapping method sends them."""
+def _probe_scene(spec: Spec) -> np.ndarray:
+    """The colours the mapping figures move: spectral colours, camera primaries, a ColorChecker."""
+    sizes = probes.SIZES["quick"]
+    return np.concatenate(
+        [
+            probes.monochromatic(spec, sizes.wavelength_step).values,
+            probes.camera_gamut(spec).values,
+            probes.colorchecker(spec, "D65").values,
+        ]
+    )
+
+
+def _label(space) -> str:
+    """A colour space's name, with its gamut's where they differ (ACEScg (AP1))."""
+    return space.name if space.gamut.name == space.name else f"{space.name} ({space.gamut.name})"
+
+
+def _diagram(axes, title: str, colours: bool = True) -> None:
+    """colour-science's CIE 1931 diagram (the locus, filled with colour or not) on ``axes``."""
     from generator.colour_science import plotting  # colour-science's plotting: slow to import, figures only
 
-    plt = _pyplot()
-    figure, axes = plt.subplots(figsize=(9, 9))
-    plotting().plot_chromaticity_diagram_CIE1931(axes=axes, show=False, title=f"{spec.name}: CIE 1931 chromaticity")
-    gamuts = {s.gamut.name: s.gamut for s in spec.colour_spaces if s.gamut is not None} if spaces else {}
-    for gamut in gamuts.values():
-        _triangle(axes, gamut.primaries, gamut.name, style=":")
-    for d in spec.displays:
-        _triangle(axes, d.gamut.primaries, d.name)
-    if display is not None:
-        sizes = probes.SIZES["quick"]
-        scene = np.concatenate(
-            [
-                probes.monochromatic(spec, sizes.wavelength_step).values,
-                probes.camera_gamut(spec).values,
-                probes.colorchecker(spec, "D65").values,
-            ]
-        )
-        source = _xy(apply_matrix(reference.scene_to_display_reference(spec), scene))
-        axes.scatter(source[:, 0], source[:, 1], s=8, c="black", label="probe colours")
-        for index, (name, rgb) in enumerate(_mapped(spec, display, scene).items()):
-            xy = _xy(apply_matrix(display.gamut.rgb_to_xyz, rgb))
-            axes.scatter(xy[:, 0], xy[:, 1], s=10, marker="osD^vP*Xph"[index % 10], label=f"{name} on {display.name}")
+    plotting().plot_chromaticity_diagram_CIE1931(axes=axes, show=False, show_diagram_colours=colours, title=title)
     axes.set_xlim(-0.1, 0.9)
     axes.set_ylim(-0.1, 0.95)
-    axes.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7)
+
+
+def chromaticity(spec: Spec, spaces=()):
+    """The xy diagram: the spectral locus, every display's triangle (solid) and those of the
+    colour spaces ``spaces`` (:class:`ColourSpace` records with a gamut; dotted)."""
+    plt = _pyplot()
+    figure, axes = plt.subplots(figsize=(9, 9))
+    _diagram(axes, f"{spec.name}: CIE 1931 chromaticity")
+    for space in spaces:
+        _triangle(axes, space.gamut.primaries, _label(space), style=":")
+    for d in spec.displays:
+        _triangle(axes, d.gamut.primaries, d.name)
+    axes.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8)
+    return figure
+
+
+def _pairs(before: np.ndarray, after: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The chromaticities (n, 2) of colours (XYZ) before and after a mapping, where both have one."""
+    keep = (np.sum(before, axis=-1) != 0.0) & (np.sum(after, axis=-1) != 0.0)
+    return _xy(before[keep]), _xy(after[keep])
+
+
+#: What each method's panel shows, under its name.
+MOVES = {
+    "clip": "each channel clamped to [0, 1]",
+    "desaturate": "toward white at equal luminance",
+    "scale": "negatives clamped, then toward black (xy kept)",
+    "rgc": "ACES reference gamut compression",
+    "perceptual": "chroma compressed softly in Oklab",
+}
+
+
+def _moved(before: np.ndarray, after: np.ndarray) -> str:
+    """How many of the colours (XYZ) a mapping moved."""
+    moved = np.any(np.abs(after - before) > 1e-9, axis=-1)
+    return f"{int(moved.sum())} of {len(moved)} probes moved"
+
+
+def mapping(spec: Spec, display: Display, spaces=()):
+    """One panel per gamut-mapping method and ACES view of ``display``: each probe colour's move
+    in xy, a line from where it was to where the method put it, the display's triangle and
+    white point (desaturate moves toward white; scale keeps the chromaticity of a colour inside
+    the triangle and lowers its luminance, a move xy cannot show), and the gamuts of
+    ``spaces`` dotted."""
+    from matplotlib.collections import LineCollection
+
+    plt = _pyplot()
+    scene = _probe_scene(spec)
+    to_xyz = display.gamut.rgb_to_xyz
+    before = apply_matrix(to_xyz, _display_linear(spec, display, scene))
+    mapped = _mapped(spec, display, scene)
+    columns = min(3, len(mapped))
+    rows = -(-len(mapped) // columns)
+    figure, panels = plt.subplots(rows, columns, figsize=(4.2 * columns, 4.4 * rows), squeeze=False)
+    white = display.gamut.whitepoint
+    for index, (axes, (name, rgb)) in enumerate(zip(panels.flat, mapped.items())):
+        after = apply_matrix(to_xyz, rgb)
+        what = MOVES.get(name, "ACES output transform")
+        _diagram(axes, f"{name}: {what}\n{_moved(before, after)}", colours=False)
+        axes.title.set_fontsize(9)
+        for space in spaces:
+            _triangle(axes, space.gamut.primaries, _label(space), colour="0.55", style=":")
+        _triangle(axes, display.gamut.primaries, display.name, colour="black")
+        source, target = _pairs(before, after)
+        axes.add_collection(
+            LineCollection(np.stack([source, target], axis=1), colors="0.45", linewidths=0.6, label="moves")
+        )
+        axes.scatter(source[:, 0], source[:, 1], s=9, facecolors="none", edgecolors="black", linewidths=0.6)
+        axes.scatter(target[:, 0], target[:, 1], s=9, color=f"C{index % 10}", zorder=3)
+        axes.plot(*white, "+", color="black", markersize=9)
+        axes.set_xlabel("")
+        axes.set_ylabel("")
+    for axes in panels.flat[len(mapped) :]:
+        axes.set_axis_off()
+    figure.suptitle(
+        f"{spec.name}: where each method moves the probe colours on {display.name} "
+        "(hollow: before, filled: after, +: white)",
+        fontsize=10,
+    )
+    figure.tight_layout()
     return figure
 
 
@@ -181,8 +262,9 @@ def report_figures(verification) -> dict[str, bytes]:
     """The report's figures as PNG bytes, by title."""
     spec = verification.spec
     display = next((d for d in spec.displays if not d.is_hdr), spec.displays[0] if spec.displays else None)
-    out = {"Chromaticity diagram and gamut mapping": png(chromaticity(spec, display))}
+    out = {"Chromaticity diagram: every display's gamut": png(chromaticity(spec))}
     if display is not None:
+        out[f"Where each gamut mapping moves the probe colours ({display.name})"] = png(mapping(spec, display))
         out[f"Ramps before and after gamut mapping ({display.name})"] = png(mapping_ramps(spec, display))
     out["Error heatmaps"] = png(error_heatmaps(verification))
     return out

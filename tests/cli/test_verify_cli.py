@@ -42,7 +42,7 @@ def test_verify_prints_a_row_per_check_and_a_summary(config, tmp_path):
     summary = json.loads((tmp_path / "report" / "summary.json").read_text())
     assert summary["passed"] and {e["name"] for e in summary["engines"]} == {"ocio default", "ocio lossless"}
     page = (tmp_path / "report" / "report.html").read_text()
-    assert page.count("data:image/png;base64,") == 3 and "<script" not in page
+    assert page.count("data:image/png;base64,") == 4 and "<script src" not in page  # inline only
     assert not [p for p in (tmp_path / "report").iterdir() if p.name.startswith(".")]
 
 

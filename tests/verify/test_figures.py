@@ -28,3 +28,40 @@ def test_a_name_the_font_lacks_draws_without_warnings():
         warnings.simplefilter("always")
         assert png(figure).startswith(b"\x89PNG")
     assert not [w for w in caught if "Glyph" in str(w.message)]
+
+
+def _panels(figure) -> dict:
+    """The drawn panels of a figure by title."""
+    return {axes.get_title(): axes for axes in figure.axes if axes.axison}
+
+
+def test_the_mapping_figure_has_a_panel_per_method_and_desaturate_moves_toward_white(default_spec):
+    """The lecture's picture: each probe's move is a line from where it was to where the method
+    put it; desaturation's lines run toward the display's white."""
+    from generator.gamut import METHODS
+    from generator.verify.figures import _pyplot, mapping
+
+    display = next(d for d in default_spec.displays if not d.is_hdr)
+    figure = mapping(default_spec, display)
+    panels = _panels(figure)
+    names = [title.split(":")[0] for title in panels]
+    assert names[: len(METHODS)] == list(METHODS)
+    desaturate = next(axes for title, axes in panels.items() if title.startswith("desaturate:"))
+    (moves,) = [c for c in desaturate.collections if c.get_label() == "moves"]
+    segments = np.array([s for s in moves.get_segments() if np.hypot(*(s[1] - s[0])) > 1e-6])
+    assert len(segments) > 10
+    start, end = segments[:, 0], segments[:, 1]
+    white = np.asarray(display.gamut.whitepoint)
+    across = np.cross(end - start, white - start) / np.hypot(*(white - start).T)
+    np.testing.assert_allclose(across, 0.0, atol=1e-6)  # the final clamp leaves 3e-8
+    _pyplot().close(figure)
+
+
+def test_the_diagram_draws_the_displays_and_the_spaces_asked_for(default_spec):
+    from generator.verify.figures import _pyplot, chromaticity
+
+    acescg = next(s for s in default_spec.colour_spaces if s.name == "ACEScg")
+    figure = chromaticity(default_spec, [acescg])
+    labels = [line.get_label() for line in figure.axes[0].get_lines() if not line.get_label().startswith("_")]
+    assert [d.name for d in default_spec.displays] == labels[1:] and labels[0] == "ACEScg (AP1)", labels
+    _pyplot().close(figure)
