@@ -13,6 +13,8 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
+from generator.leftovers import mark, remove_stale, unmark
+
 
 class CannotWrite(Exception):
     """An output the user named could not be written: the path and the operating system's
@@ -185,8 +187,10 @@ def _no_check(folder: Path) -> None:
 
 @contextmanager
 def staged_folder(folder: Path, check: Callable[[Path], None] = _no_check) -> Iterator[Path]:
-    """Yield an empty temporary sibling of ``folder``; when the block succeeds, it replaces
-    ``folder`` (renamed into place); when it fails, it is removed and ``folder`` is untouched.
+    """Yield a temporary sibling of ``folder``, empty but for the marker that tells a build
+    killed outright left it (:mod:`generator.leftovers`: the next one here removes it); when the
+    block succeeds, it replaces ``folder`` (renamed into place, the marker removed first); when
+    it fails, it is removed and ``folder`` is untouched.
     ``check(path)`` raises when what is at ``path`` may not be replaced: it is run again on
     what is there right before the rename (another process may have written there meanwhile).
     Failing to create, fill (an OSError on a path inside it) or rename it raises
@@ -197,8 +201,10 @@ def staged_folder(folder: Path, check: Callable[[Path], None] = _no_check) -> It
     try:
         with _writing(folder):
             _make_folder(folder.parent)
+            remove_stale(folder.parent)  # what builds killed outright (SIGKILL) left here
             with _uninterrupted():  # a stop waits until the folder made has its name, to be removed
                 staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
+            mark(staging)
         try:
             yield staging
         except OSError as error:
@@ -206,6 +212,7 @@ def staged_folder(folder: Path, check: Callable[[Path], None] = _no_check) -> It
                 raise CannotWrite(folder, error) from error
             raise
         with _writing(folder):
+            unmark(staging)
             _replace_folder(staging, folder, check)
         done = True
     finally:

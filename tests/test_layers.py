@@ -15,7 +15,14 @@ PACKAGE = Path(__file__).resolve().parents[1] / "generator"
 #: Layers from the bottom: a module imports from its layer and those before it, never after.
 LAYERS = (
     # small top-level modules every layer may use; the package's __init__ fixes numpy's kernels
-    ("generator", "generator.tolerances", "generator.files", "generator.backends", "generator.colour_science"),
+    (
+        "generator",
+        "generator.tolerances",
+        "generator.files",
+        "generator.leftovers",
+        "generator.backends",
+        "generator.colour_science",
+    ),
     ("generator.colorimetry",),  # the colour-space library, matrices, CATs, curves, spectra
     ("generator.gamut", "generator.rendering"),  # gamut mapping; ACES output transforms (float64)
     ("generator.spec",),  # the frozen description, checked against the library
