@@ -11,14 +11,18 @@ import html
 import json
 from collections import defaultdict
 from pathlib import Path
+from urllib.parse import urlencode
 
 import numpy as np
 
 from generator.files import write_files
 from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS
+from generator.verify.report_assets import SCRIPT, STYLE
 from generator.verify.run import Verification
 
 COLUMNS = ("check", "item", "engine", "max", "p99", "tolerance", "verdict")
+#: The verdicts in the order the report counts them.
+VERDICTS = (PASS, APPROX, FAIL, NOT_RUN)
 
 
 def _figure(value: float) -> str:
@@ -182,42 +186,163 @@ def to_json(verification: Verification) -> dict:
     }
 
 
-def _html_table(header, body) -> str:
-    head = "".join(f"<th>{html.escape(h)}</th>" for h in header)
-    cells = "".join(
-        "<tr>" + "".join(f'<td class="{html.escape(str(c))}">{html.escape(str(c))}</td>' for c in r) + "</tr>"
-        for r in body
+#: At most this many failures are told in the verdict, a sentence each; the table has them all.
+TOLD = 20
+
+
+def _cell(value, css: str = "") -> str:
+    return f'<td class="{css}">{html.escape(str(value))}</td>' if css else f"<td>{html.escape(str(value))}</td>"
+
+
+def _verdict_class(verdict: str) -> str:
+    return "v-" + verdict.replace(" ", "-")
+
+
+def _link(**query: str) -> str:
+    """A fragment that filters the table of every result (see report_assets.SCRIPT)."""
+    return "#" + urlencode({k: v for k, v in query.items() if v})
+
+
+def sentence(o) -> str:
+    """What a failing or explained row says, in one sentence: the check, the engine, the worst
+    error against its tolerance, where, and the judge's note."""
+    if not (np.isfinite(o.worst) or np.isinf(o.worst)):
+        figure = "nothing computed"
+    else:
+        over = "over" if o.worst > o.check.tolerance else "within"
+        figure = f"worst error {_figure(o.worst)} {over} the tolerance of {o.check.tolerance:g} {o.check.metric}"
+    where = f" at input {o.worst_input}" if o.worst_input else ""
+    note = f"; {o.note}" if o.note else ""
+    return f"{o.check.kind} {o.check.title} on {o.engine}: {figure}{where}{note}."
+
+
+def headline(verification: Verification) -> tuple[str, str]:
+    """The verdict ("passed" or "FAILED") and one sentence of counts and reasons."""
+    total, failing = len(verification.outcomes), len(verification.failures)
+    approx = sum(o.verdict == APPROX for o in verification.outcomes)
+    ran = sum(not e.skipped for e in verification.engines)
+    parts = [f"{failing} of {total} results failing" if failing else f"{total} results, none failing"]
+    parts.append(f"{ran} of {len(verification.engines)} engines ran")
+    if not verification.compared:
+        parts.append("nothing compared (no engine ran a check)")
+    if verification.missing:
+        parts.append(f"{_not_run(verification)}: {', '.join(verification.missing)}")
+    if approx:
+        parts.append(f"{approx} explained by OCIO's default flags")
+    return ("passed" if verification.passed else "FAILED"), "; ".join(parts) + "."
+
+
+def _engine_table(verification: Verification) -> str:
+    """Counts by verdict per engine, with its version or why it did not run."""
+    counts: dict[str, dict[str, int]] = {}
+    for o in verification.outcomes:
+        counts.setdefault(o.engine, dict.fromkeys(VERDICTS, 0))[o.verdict] += 1
+    runs = {e.name: e for e in verification.engines}
+    body = ""
+    for name in dict.fromkeys([*runs, *counts]):
+        run, found = runs.get(name), counts.get(name, dict.fromkeys(VERDICTS, 0))
+        about = (f"not run: {run.skipped}" if run.skipped else run.version) if run else ""
+        cells = "".join(
+            f'<td class="n{" " + _verdict_class(v) if found[v] and v != PASS else ""}">{found[v]}</td>'
+            for v in VERDICTS
+        )
+        body += f'<tr><td><a href="{_link(engine=name)}">{html.escape(name)}</a></td>{cells}{_cell(about)}</tr>'
+    head = "".join(f"<th>{html.escape(h)}</th>" for h in ("engine", *VERDICTS, "version"))
+    return f'<table id="engines"><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>'
+
+
+def _told(outcomes, limit: int | None) -> str:
+    """A list of sentences, each a link to its rows; past ``limit``, how many more."""
+    shown = outcomes if limit is None else outcomes[:limit]
+    items = "".join(
+        "<li>"
+        + html.escape(sentence(o)).replace(
+            html.escape(o.check.title),
+            f'<a href="{_link(engine=o.engine, item=o.check.title, verdict=o.verdict)}">'
+            f"{html.escape(o.check.title)}</a>",
+            1,
+        )
+        + "</li>"
+        for o in shown
     )
-    return f"<table><tr>{head}</tr>{cells}</table>"
+    more = len(outcomes) - len(shown)
+    rest = f'<p><a href="{_link(verdict=FAIL)}">{more} more in the table below.</a></p>' if more else ""
+    return f"<ul>{items}</ul>{rest}"
 
 
-STYLE = (
-    "body{font-family:sans-serif;margin:2em;max-width:80em}table{border-collapse:collapse;font-size:90%}"
-    "td,th{border:1px solid #ccc;padding:2px 6px;text-align:left}.FAIL{background:#f6c0c0}"
-    ".approx{background:#f6e6b0}.pass{background:#d8f0d8}img{max-width:100%}"
-)
+def _verdict_section(verification: Verification) -> str:
+    """The page's first block: the verdict, counts per engine, each failure and explained row."""
+    verdict, why = headline(verification)
+    failing = verification.failures
+    explained = [o for o in verification.outcomes if o.verdict == APPROX]
+    out = (
+        f'<section id="verdict" class="{"passed" if verification.passed else "failed"}">'
+        f"<h1>verify {verdict}: {html.escape(verification.spec.name)}</h1><p>{html.escape(why)}</p>"
+        f"<p>{html.escape(str(verification.config))}, OCIO "
+        f"{'.'.join(map(str, verification.spec.ocio_version))} config</p>{_engine_table(verification)}"
+    )
+    if failing:
+        out += f"<h2>What failed</h2>{_told(failing, TOLD)}"
+    if explained:
+        out += (
+            f"<details><summary>{len(explained)} departures explained by OCIO's default flags "
+            f"(approx)</summary>{_told(explained, None)}</details>"
+        )
+    return out + "</section>"
+
+
+def _results_section(verification: Verification) -> str:
+    """Every result, with the filters the inline script drives (hidden without it)."""
+    engines = list(dict.fromkeys(o.engine for o in verification.outcomes))
+    families = [f for f in dict.fromkeys(e.split(" ")[0] for e in engines) if f not in engines]
+    families = [f for f in families if sum(e.startswith(f + " ") for e in engines) > 1]
+    options = [("", "every engine")] + [(f, f"{f} (every {f} engine)") for f in families] + [(e, e) for e in engines]
+    verdicts = [("", "every verdict")] + [
+        (v, v) for v in VERDICTS if any(o.verdict == v for o in verification.outcomes)
+    ]
+
+    def select(name, choices):
+        items = "".join(f'<option value="{html.escape(v)}">{html.escape(t)}</option>' for v, t in choices)
+        return f'<label>{name} <select id="f-{name}">{items}</select></label>'
+
+    controls = (
+        f'<div id="filters" hidden>{select("engine", options)}'
+        '<label>item <input id="f-item" type="search" placeholder="part of a check\'s text"></label>'
+        f'{select("verdict", verdicts)}<span id="f-count"></span></div>'
+    )
+    head = "".join(f"<th>{h}</th>" for h in (*COLUMNS, "note"))
+    body = "".join(
+        f'<tr data-engine="{html.escape(o.engine)}" data-verdict="{html.escape(o.verdict)}" '
+        f'data-item="{html.escape(f"{o.check.kind} {o.check.title}")}">'
+        + "".join(_cell(v, "n" if 3 <= i <= 4 else "") for i, v in enumerate(r[:-1]))
+        + _cell(o.verdict, _verdict_class(o.verdict))
+        + _cell("; ".join(p for p in (f"worst input {o.worst_input}" if o.worst_input else "", o.note) if p))
+        + "</tr>"
+        for o, r in zip(verification.outcomes, rows(verification))
+    )
+    return (
+        f'<h2 id="every-result">Every result</h2>{controls}'
+        f'<table id="results"><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>'
+    )
 
 
 def html_page(verification: Verification, figures: dict[str, bytes]) -> str:
-    """The report: summary, engines, explanations, figures (inline PNG) and every result."""
+    """The report: the verdict first (counts per engine, a sentence per failure), then the
+    figures (inline PNG), every result in a table to filter, and the text summary folded."""
     images = "".join(
-        f'<h2>{html.escape(title)}</h2><img alt="{html.escape(title)}" '
-        f'src="data:image/png;base64,{base64.b64encode(png).decode()}">'
+        f'<figure><figcaption>{html.escape(title)}</figcaption><img alt="{html.escape(title)}" '
+        f'src="data:image/png;base64,{base64.b64encode(png).decode()}"></figure>'
         for title, png in figures.items()
     )
-    notes = [
-        (o.verdict, o.check.title, o.engine, o.worst_input, o.note)
-        for o in verification.outcomes
-        if o.verdict in (FAIL, APPROX)
-    ]
     return (
-        f'<!DOCTYPE html><html><head><meta charset="utf-8"><title>ocioforge verify: '
-        f"{html.escape(verification.spec.name)}</title><style>{STYLE}</style></head><body>"
-        f"<h1>ocioforge verify: {html.escape(str(verification.config))}</h1>"
-        f"<pre>{html.escape(summary(verification))}</pre>"
-        f"<h2>Failures and explained departures</h2>"
-        f"{_html_table(('verdict', 'check', 'engine', 'worst input', 'note'), notes)}{images}"
-        f"<h2>Every result</h2>{_html_table(COLUMNS, rows(verification))}</body></html>"
+        '<!DOCTYPE html><html lang="en"><head><meta charset="utf-8">'
+        '<meta name="viewport" content="width=device-width, initial-scale=1">'
+        f"<title>ocioforge verify {headline(verification)[0]}: {html.escape(verification.spec.name)}</title>"
+        f"<style>{STYLE}</style></head><body>{_verdict_section(verification)}"
+        f'<h2 id="figures">Figures</h2>{images}{_results_section(verification)}'
+        "<details><summary>The summary as the terminal prints it</summary>"
+        f"<pre>{html.escape(summary(verification))}</pre></details>"
+        f"<script>{SCRIPT}</script></body></html>\n"
     )
 
 
