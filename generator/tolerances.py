@@ -367,7 +367,11 @@ ACES2_ROUND_TRIP_CODES = 0.02
 #: power in the file's last operator (measured 6.1e-5 with its default flags, 2.1e-6 lossless).
 ACES_LATTICE_FILE_RELATIVE = 1e-4
 
-#: A view applying looks, in 10-bit codes of an SDR display: a look's CDL power and its process
-#: space's log encoding carry float32 rounding through steep stretches (the sRGB curve near
-#: black) that no per-sample allowance models there; measured at 0.082 codes, lossless, on the farthest over-range probes (ACEScg 1551).
-LOOK_VIEW_CODES = 0.1
+#: A view applying looks, in ΔE ITP (BT.2124) on any display: the looks' float32 rounding, which
+#: no per-sample allowance models, reaches near-black channels that a pure-power EOTF (Rec.1886)
+#: magnifies without bound in codes; held as an analytic HDR path is.
+LOOK_VIEW_DELTA_E_ITP = ANALYTIC_DELTA_E_ITP
+
+#: The float32 rounding a look chain may leave on its output, in float32 epsilons of each channel:
+#: a process space's log encoding and back (ACEScct: 12x a code's rounding) around the CDL's power.
+LOOK_ROUNDING_ULPS = 16.0

@@ -38,6 +38,10 @@ def test_show_builds_and_verifies(tmp_path):
     verified = run("verify", folder, "--engines", "ocio", "--summary")
     assert verified.exit_code == 0, verified.output
     assert "verify passed" in verified.output
+    # The monitor's view applies the show look and the shot's grade: each shot's file checked.
+    assert (folder / "looks" / "shots" / "sh020.cc").is_file()
+    other_shot = run("verify", folder, "--engines", "ocio", "--summary", "--context", "SHOT=sh020", "--only", "look")
+    assert other_shot.exit_code == 0, other_shot.output
 
 
 def test_show_pack_bakes(tmp_path, monkeypatch):

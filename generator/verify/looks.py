@@ -22,7 +22,7 @@ from generator.ocio.looks import search_path
 from generator.spec import looks as spec_looks
 from generator.spec.schema import Look, Spec, SpecError, with_context
 from generator.verify import paths, probes
-from generator.verify.check import CODES, RELATIVE, VIEW, Check, evaluate, judging
+from generator.verify.check import ITP, RELATIVE, VIEW, Check, evaluate, judging
 from generator.verify.checks import input_probes, view_sources
 from generator.verify.probes import Family, Probes
 
@@ -144,6 +144,20 @@ def look_checks(spec: Spec, context: dict[str, str], density: str = "full") -> l
     return out
 
 
+def _rounding_allowance(fn, graded: np.ndarray, expected: np.ndarray) -> np.ndarray:
+    """Per sample and channel, how far the view's codes move when the looks' output moves by
+    their float32 rounding (LOOK_ROUNDING_ULPS of each channel, one at a time, summed): what an
+    engine's float32 look chain may put on the view, and no more."""
+    step = tolerances.LOOK_ROUNDING_ULPS * np.finfo(np.float32).eps
+    out = np.zeros_like(expected)
+    with np.errstate(all="ignore"):
+        for channel in range(3):
+            moved = graded.copy()
+            moved[:, channel] *= 1.0 + step
+            out += np.abs(evaluate(fn, moved) - expected)
+    return np.nan_to_num(out, nan=0.0, posinf=0.0)
+
+
 def view_look_checks(spec: Spec, context: dict[str, str], density: str = "full") -> list[Check]:
     """Each display view that applies looks, from each of the view checks' sources, in ``context``."""
     sizes = probes.SIZES[density]
@@ -159,13 +173,14 @@ def view_look_checks(spec: Spec, context: dict[str, str], density: str = "full")
             used = dict.fromkeys(v for k in spec.looks if k.name in names for v in k.variables)
             for src in view_sources(spec, ends):
                 inputs = input_probes(src, scene, sizes)
-                through = (
-                    None if fn is None or applied is None else (lambda v, s=src, f=fn, a=applied: f(a(s.decode(v))))
+                graded = (
+                    None if applied is None else evaluate(lambda v, s=src, a=applied: a(s.decode(v)), inputs.values)
                 )
-                expected = None if through is None else evaluate(through, inputs.values)
+                expected = None if fn is None or graded is None else evaluate(fn, graded)
+                allowance = None if expected is None else _rounding_allowance(fn, graded, expected)
                 rule = judging(None, display, None, view)
-                if rule["metric"] == RELATIVE:  # judged in codes: see LOOK_VIEW_CODES
-                    rule.update(metric=CODES, tolerance=tolerances.LOOK_VIEW_CODES, target=display)
+                if rule["metric"] == RELATIVE:  # judged in ΔE ITP: see LOOK_VIEW_DELTA_E_ITP
+                    rule.update(metric=ITP, tolerance=tolerances.LOOK_VIEW_DELTA_E_ITP, target=display)
                 out.append(
                     LookCheck(
                         VIEW,
@@ -179,6 +194,7 @@ def view_look_checks(spec: Spec, context: dict[str, str], density: str = "full")
                         output=paths.DISPLAY,
                         looks=given,
                         context=describe({v: context[v] for v in used}),
+                        allowance=allowance,
                         **rule,
                     )
                 )
@@ -227,4 +243,4 @@ def look_differences(cfg, spec: Spec, lut_folder: str) -> list[str]:
     return out
 
 
-__all__ = ["CODES", "LOOK", "LookCheck", "look_checks", "look_differences", "parse_context", "with_looks"]
+__all__ = ["LOOK", "LookCheck", "look_checks", "look_differences", "parse_context", "with_looks"]
