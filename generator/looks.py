@@ -38,8 +38,9 @@ def look_file(spec: Spec, look: Look, context: dict[str, str]) -> Path:
 
 def look_function(spec: Spec, look: Look, context: dict[str, str]) -> Evaluate:
     """``look`` on values of its process space: its CDL, or its file's (CDL or 3D LUT) read in ``context``."""
-    if look.cdl is not None:
-        return lambda rgb: asc_cdl(rgb, look.cdl, look.style)
+    cdl = look.cdl
+    if cdl is not None:
+        return lambda rgb: asc_cdl(rgb, cdl, look.style)
     path = look_file(spec, look, context)
     if Path(look.file).suffix.lower() in CDL_SUFFIXES:
         try:

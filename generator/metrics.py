@@ -45,7 +45,7 @@ def delta_e_itp(display, code_a, code_b) -> np.ndarray:
     return np.asarray(colour.delta_E(ictcp[0], ictcp[1], method="ITP"), dtype=np.float64)
 
 
-def dequantised(actual, expected, step: float) -> np.ndarray:
+def dequantised(actual, expected, step: float | np.ndarray) -> np.ndarray:
     """``actual`` moved toward ``expected`` by up to half a quantisation ``step``.
 
     A value read back from an integer image file is the engine's result rounded

@@ -20,6 +20,7 @@ from generator.colorimetry.adx import aces_to_adx, adx_to_aces
 from generator.colorimetry.gamuts import D65, gamuts
 from generator.colorimetry.matrices import Gamut, adaptation_matrix, apply_matrix, rgb_to_rgb, rgb_to_xyz_adapted
 from generator.gamut import METHODS, DisplayGamut, PerceptualParams
+from generator.gamut.display import matrix_tuple
 from generator.rendering import views
 from generator.spec.schema import ColourSpace, Display, Spec
 
@@ -31,23 +32,34 @@ def adaptation_between(gamut: Gamut, reference_gamut: Gamut, chosen: str) -> str
     return gamut.adaptation or reference_gamut.adaptation or chosen
 
 
+def reference_gamut(spec: Spec) -> Gamut:
+    """The gamut of the spec's scene reference (never a data space)."""
+    gamut = spec.reference.gamut
+    if gamut is None:
+        raise ValueError(f"the scene reference {spec.scene_reference!r} has no gamut")
+    return gamut
+
+
 def adaptation_for(spec: Spec, gamut: Gamut) -> str:
     """:func:`adaptation_between` ``gamut`` and the spec's scene reference."""
-    return adaptation_between(gamut, spec.reference.gamut, spec.chromatic_adaptation)
+    return adaptation_between(gamut, reference_gamut(spec), spec.chromatic_adaptation)
 
 
 def gamut_matrix(spec: Spec, gamut: Gamut) -> np.ndarray:
     """Linear RGB of ``gamut`` to the scene reference."""
-    return rgb_to_rgb(gamut, spec.reference.gamut, adaptation_for(spec, gamut))
+    return rgb_to_rgb(gamut, reference_gamut(spec), adaptation_for(spec, gamut))
 
 
 def space_matrix(spec: Spec, space: ColourSpace) -> np.ndarray:
     """Linear RGB of ``space`` to the scene reference."""
+    if space.gamut is None:
+        raise ValueError(f"{space.name!r} is a data space: it has no gamut")
     return gamut_matrix(spec, space.gamut)
 
 
 def adx_reference_matrix(spec: Spec) -> np.ndarray:
-    return rgb_to_rgb(gamuts()["AP0"], spec.reference.gamut, spec.chromatic_adaptation)
+    """ACES2065-1 (AP0, ADX's linear) to the scene reference."""
+    return rgb_to_rgb(gamuts()["AP0"], reference_gamut(spec), spec.chromatic_adaptation)
 
 
 def to_reference(spec: Spec, space: ColourSpace, rgb) -> np.ndarray:
@@ -72,7 +84,7 @@ def from_reference(spec: Spec, space: ColourSpace, ref) -> np.ndarray:
 
 def scene_to_display_reference(spec: Spec) -> np.ndarray:
     """Scene-reference linear RGB to CIE XYZ-D65 (the display reference)."""
-    return rgb_to_xyz_adapted(spec.reference.gamut, D65, spec.chromatic_adaptation)
+    return rgb_to_xyz_adapted(reference_gamut(spec), D65, spec.chromatic_adaptation)
 
 
 def display_matrix(spec: Spec, display: Display) -> np.ndarray:
@@ -117,7 +129,7 @@ def colorimetric_view(spec: Spec, display: Display, ref) -> np.ndarray:
 def display_gamut(display: Display):
     """The :class:`~generator.gamut.DisplayGamut` of ``display``: its linear RGB to XYZ
     matrix (SMPTE RP 177) and white, as the gamut-mapping methods need them."""
-    return DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
+    return DisplayGamut(matrix_tuple(display.gamut.rgb_to_xyz), display.gamut.whitepoint)
 
 
 def scene_to_display_matrix(spec: Spec, display: Display) -> np.ndarray:
@@ -181,7 +193,7 @@ def method_params(
     if method == "rgc":
         return spec.rgc
     if method == "perceptual" and source is not None and display is not None:
-        return PerceptualParams(source_to_display=source_gamut_matrix(spec, source, display))
+        return PerceptualParams(source_to_display=matrix_tuple(source_gamut_matrix(spec, source, display)))
     return None
 
 

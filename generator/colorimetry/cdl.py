@@ -73,7 +73,7 @@ def read_cdl(path: str | Path, cccid: str = "") -> Correction:
     if cccid:
         chosen = [e for e in corrections if e.get("id") == cccid]
         if not chosen:
-            ids = [e.get("id") for e in corrections if e.get("id")]
+            ids = [i for e in corrections if (i := e.get("id"))]
             raise CdlFileError(f"holds no ColorCorrection of id {cccid!r} (its ids: {', '.join(ids) or 'none'})")
         corrections = chosen
     return _correction(corrections[0])
@@ -82,7 +82,7 @@ def read_cdl(path: str | Path, cccid: str = "") -> Correction:
 def correction_ids(path: str | Path) -> tuple[str, ...]:
     """The ids of the ColorCorrections in the CDL file at ``path``, in file order."""
     root = ElementTree.parse(path).getroot()
-    return tuple(e.get("id") for e in root.iter() if _local(e.tag) == "ColorCorrection" and e.get("id"))
+    return tuple(i for e in root.iter() if _local(e.tag) == "ColorCorrection" and (i := e.get("id")))
 
 
 def _local(tag: str) -> str:
@@ -90,23 +90,28 @@ def _local(tag: str) -> str:
     return tag.rsplit("}", 1)[-1]
 
 
-def _numbers(element, name: str, count: int, default) -> tuple[float, ...] | float:
+def _numbers(element, name: str, count: int, default: tuple[float, ...]) -> tuple[float, ...]:
     found = next((e for e in element.iter() if _local(e.tag) == name), None)
-    if found is None or not (found.text or "").strip():
+    if found is None or not (text := found.text or "").strip():
         return default
     try:
-        values = tuple(float(v) for v in found.text.split())
+        values = tuple(float(v) for v in text.split())
     except ValueError:
-        raise CdlFileError(f"its {name} {found.text.strip()!r} is not {count} numbers") from None
+        raise CdlFileError(f"its {name} {text.strip()!r} is not {count} numbers") from None
     if len(values) != count or not np.all(np.isfinite(values)):
-        raise CdlFileError(f"its {name} {found.text.strip()!r} is not {count} finite numbers")
-    return values if count > 1 else values[0]
+        raise CdlFileError(f"its {name} {text.strip()!r} is not {count} finite numbers")
+    return values
+
+
+def _rgb(element, name: str, default: float) -> tuple[float, float, float]:
+    r, g, b = _numbers(element, name, 3, (default,) * 3)
+    return (r, g, b)
 
 
 def _correction(element) -> Correction:
     return Correction(
-        slope=_numbers(element, "Slope", 3, (1.0, 1.0, 1.0)),
-        offset=_numbers(element, "Offset", 3, (0.0, 0.0, 0.0)),
-        power=_numbers(element, "Power", 3, (1.0, 1.0, 1.0)),
-        saturation=_numbers(element, "Saturation", 1, 1.0),
+        slope=_rgb(element, "Slope", 1.0),
+        offset=_rgb(element, "Offset", 0.0),
+        power=_rgb(element, "Power", 1.0),
+        saturation=_numbers(element, "Saturation", 1, (1.0,))[0],
     )

@@ -170,7 +170,7 @@ def _cie_rgb() -> Gamut:
 
 def _vendor() -> dict[str, Gamut]:
     return {
-        name: Gamut(name, _rounded(g.primaries), tuple(g.whitepoint), citation=g.citation)
+        name: Gamut(name, _rounded(g.primaries), (g.whitepoint[0], g.whitepoint[1]), citation=g.citation)
         for name, g in VENDOR_GAMUTS.items()
     }
 

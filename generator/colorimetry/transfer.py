@@ -215,6 +215,8 @@ class LogCamera:
         """Slope of the linear segment, code over linear."""
         if self.linear_slope is not None:
             return self.linear_slope
+        if self.lin_side_break is None:
+            raise ValueError("a LogCamera without a break has no linear segment")
         arg = self.lin_side_slope * self.lin_side_break + self.lin_side_offset
         return self.log_side_slope * self.lin_side_slope / (arg * math.log(self.base))
 
@@ -289,7 +291,8 @@ class Function:
     @property
     def domain(self) -> tuple[float, float]:
         rule = self.domain_rule
-        return tuple(float(v) for v in (rule(self.encode) if callable(rule) else rule))
+        lo, hi = rule(self.encode) if callable(rule) else rule
+        return (float(lo), float(hi))
 
     def decode(self, code):
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):

@@ -102,7 +102,7 @@ def on_disk(pattern: Pattern) -> list[tuple[int, str]]:
         raise FramesError(
             f"{pattern.path(0)!r}: its folder {folder!r} does not exist; allowed: a pattern in an existing folder"
         ) from None
-    found = {}
+    found: dict[int, str] = {}
     for name in names:
         match = regex.match(name)
         if match:
@@ -175,7 +175,8 @@ def sources(inputs: tuple[str, ...], frames: str | None, folder: str, suffix: st
 
 def _paired(paths: list[str], folder: str, suffix: str) -> list[Source]:
     """Each path with its output; FramesError when two write one file, or one would replace its input."""
-    out, taken = [], {}
+    out: list[Source] = []
+    taken: dict[str, str] = {}
     for path in paths:
         target = _output(path, folder, suffix)
         key = os.path.normcase(os.path.abspath(target))

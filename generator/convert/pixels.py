@@ -10,10 +10,14 @@ from __future__ import annotations
 import os
 import time
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from generator.convert import formats
+
+if TYPE_CHECKING:
+    import OpenImageIO as oiio
 
 #: Bytes of float32 working buffers one band may take, by default (a 4K RGBA frame is 133 MB
 #: whole): a frame larger than this is converted in bands of rows.
@@ -38,11 +42,12 @@ class Part:
     R, G, B; () when it has none, so it passes unchanged)."""
 
     index: int
-    spec: object
+    spec: oiio.ImageSpec
     rgb: tuple[int, ...]
 
     @property
     def rows(self) -> range:
+        """The part's data window rows, top to bottom."""
         return range(self.spec.y, self.spec.y + self.spec.height)
 
 

@@ -30,7 +30,7 @@ def _format(
     if verify and formats.is_lossy(chosen, compression or "", (depth or chosen.depths[0]).lower()):
         raise SpecError(
             "--verify",
-            chosen.name if chosen.lossy else compression,
+            chosen.name if chosen.lossy else compression or "",
             "is lossy: what it writes cannot be compared with the reference; allowed: exr (half or float, "
             "a lossless compression), tiff, png or dpx",
         )

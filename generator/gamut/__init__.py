@@ -13,14 +13,20 @@ value, hence 1 after mapping.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from types import MappingProxyType
+
+import numpy as np
 
 from generator.gamut.display import LARGEST, DisplayGamut, sanitize
 from generator.gamut.perceptual import PerceptualParams, perceptual
 from generator.gamut.rgc import RGCParams, rgc, rgc_compress
 from generator.gamut.simple import clip, desaturate, scale
 
-METHODS = MappingProxyType(
+#: ``fn(rgb, display, params=None) -> rgb``; clip and scale also take ``display`` None.
+Method = Callable[..., np.ndarray]
+
+METHODS: Mapping[str, Method] = MappingProxyType(
     {
         "clip": clip,
         "desaturate": desaturate,

@@ -63,7 +63,7 @@ def matrix_tuple(matrix) -> tuple[tuple[float, float, float], ...]:
         raise ValueError(f"expected a finite 3x3 matrix, got shape {m.shape}")
     if abs(np.linalg.det(m)) < 1e-12:
         raise ValueError("the matrix is singular")
-    return tuple(tuple(float(v) for v in row) for row in m)
+    return tuple((float(r), float(g), float(b)) for r, g, b in m)
 
 
 @dataclass(frozen=True)

@@ -404,12 +404,16 @@ def compress_along_lines(
         ``C / C_d`` (+Inf where the boundary chroma is 0 and the chroma is not).
     """
     matrix = adapted_matrix(display)
-    in_display = None if rgb is None else np.all((rgb >= 0.0) & (rgb <= 1.0), axis=-1)
-    slack = 0.0 if rgb is None else np.where(in_display, 0.0, _fold_slack(hue_cos, hue_sin, display))[..., None]
+    in_display: np.ndarray | None = None
+    slack: float | np.ndarray = 0.0
+    if rgb is not None:
+        in_display = np.all((rgb >= 0.0) & (rgb <= 1.0), axis=-1)
+        slack = np.where(in_display, 0.0, _fold_slack(hue_cos, hue_sin, display))[..., None]
     display_chroma = boundary_chroma(
         axis, slope, hue_cos, hue_sin, matrix, *_anchored(chroma, in_display, chroma_bracket(matrix)), slack
     )
     found = display_chroma > 0.0
+    limit: float | np.ndarray
     if params.source_to_display is None:
         limit = params.limit
     else:

@@ -163,6 +163,8 @@ def unclamped_codes(display: Display, light, top_light: float):
 
 def _log_coordinate(lat: Lattice, code) -> np.ndarray:
     """A display layout's Log operator after its decoding and matrix: the 1D table's input."""
+    if not isinstance(lat.pre, LogAxis) or lat.decode is None:
+        raise TypeError("a display layout has a decoding and a LogAxis")
     with np.errstate(all="ignore"):
         return lat.pre.coordinate(
             reference.apply_matrix(lat.matrix, lat.decode.decode(np.asarray(code, dtype=np.float64)))
@@ -192,7 +194,8 @@ def source_lattice(
     :data:`ACES_SHAPER_SIZES`)."""
     low, high = source_range(spec, source, display, view)
     with np.errstate(all="ignore"):
-        domain = tuple(float(v) for v in source.curve.encode(np.array([low, high])))
+        lo, hi = source.curve.encode(np.array([low, high]))
+    domain = (float(lo), float(hi))
     if isinstance(shaper, ColourSpace):
         domain = shaper_domain(source, shaper, display)
     table = None if shaper == "none" else _table(source, shaper, size, domain, (low, high), entries)
@@ -248,6 +251,8 @@ def notes(lat: Lattice, view, shaper) -> list[str]:
     """Comment lines after the title: what the file's input is, what its lattice holds, its output."""
     b = basis(view)
     display, source = lat.display, lat.source
+    if source is None:
+        raise ValueError("an ACES view lattice reads a source colour space")
     top = float(reference.display_encode(display, np.full(3, display.clip_high))[0])
     output = f"Output: {display.name} code values (full range, 0 to {top:.6g}), as the view and the display encode."
     fitted = (

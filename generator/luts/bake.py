@@ -77,7 +77,7 @@ class Request:
     size: int
     shaper: str | ColourSpace
     #: An ACES view (:class:`~generator.rendering.views.ACESView`) baked instead of a gamut mapping.
-    view: object | None = None
+    view: views.ACESView | None = None
 
 
 def find_display(spec: Spec, name: str, field: str) -> Display:

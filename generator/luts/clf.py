@@ -50,22 +50,31 @@ def _retexted(written: str, tables: list) -> bytes:
     for element in root.iter():  # local names, the namespace an attribute (ElementTree's
         element.tag = element.tag.split("}")[1]  # default_namespace refuses plain attributes)
     root.attrib = {"xmlns": namespace, **root.attrib}
-    arrays = [op.find("Array") for op in root if op.tag in ("LUT1D", "LUT3D")]
+    arrays = [_child(op, "Array") for op in root if op.tag in ("LUT1D", "LUT3D")]
     if len(arrays) != len(tables):
         raise ValueError(f"OCIO wrote {len(arrays)} tables of {len(tables)}")
     for array, table in zip(arrays, tables):
-        columns = int(array.get("dim").split()[-1])
+        columns = int(array.attrib["dim"].split()[-1])
         array.text = "\n" + table_text(np.asarray(table.getData()).reshape(-1, 3)[:, :columns])
     for element in root.iter():
         if len(element):
             element.text = "\n"
         elif element.tag == "Array" and element not in arrays:  # a Matrix's: OCIO's numbers, unpadded
-            element.text = "".join(f"\n{' '.join(line.split())}" for line in element.text.strip().splitlines()) + "\n"
+            lines = (element.text or "").strip().splitlines()
+            element.text = "".join(f"\n{' '.join(line.split())}" for line in lines) + "\n"
         elif element.text and element.tag != "Array":
             element.text = element.text.strip()
         element.tail = "\n"
     text = ElementTree.tostring(root, encoding="unicode")
     return ('<?xml version="1.0" encoding="UTF-8"?>\n' + text).encode("utf-8")
+
+
+def _child(element: ElementTree.Element, tag: str) -> ElementTree.Element:
+    """``element``'s first child ``tag``; ValueError when OCIO wrote none."""
+    found = element.find(tag)
+    if found is None:
+        raise ValueError(f"OCIO wrote a {element.tag} without an {tag}")
+    return found
 
 
 def table_text(values: np.ndarray) -> str:

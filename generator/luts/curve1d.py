@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import tolerances
-from generator.colorimetry.transfer import Tabulated
+from generator.colorimetry.transfer import Tabulated, TransferFunction
 from generator.luts.names import slug
 from generator.luts.spi1d import format_spi1d
 from generator.metrics import relative_error
@@ -47,7 +47,7 @@ class BakedCurve:
 
 @dataclass(frozen=True)
 class _Shaped:
-    curve: object
+    curve: TransferFunction
     domain: tuple[float, float]
     shaper: float
 

@@ -16,7 +16,7 @@ import numpy as np
 from generator import tolerances
 from generator.luts import lattice
 from generator.luts.fit import tetrahedra
-from generator.luts.lattice import Lattice, PreShaper, grid, preimages
+from generator.luts.lattice import Lattice, PreShaper, as_pre_shaper, grid, preimages, shaper_table
 from generator.luts.solve import interpolate
 
 
@@ -27,7 +27,7 @@ def coordinates(lat: Lattice, linear) -> np.ndarray:
     NaN reads as 0."""
     flat = np.asarray(linear, dtype=np.float64).reshape(-1, 3)
     with np.errstate(all="ignore"):
-        return lattice.coordinates(lat, lat.pre.forward(np.nan_to_num(flat, nan=0.0)))
+        return lattice.coordinates(lat, as_pre_shaper(lat.pre).forward(np.nan_to_num(flat, nan=0.0)))
 
 
 def index_rounding(lat: Lattice, linear) -> np.ndarray:
@@ -38,7 +38,7 @@ def index_rounding(lat: Lattice, linear) -> np.ndarray:
     if lat.shaper is None:
         return np.zeros_like(flat)
     with np.errstate(all="ignore"):
-        position, entry = lattice.table_position(lat, lat.pre.forward(flat))
+        position, entry = lattice.table_position(lat, as_pre_shaper(lat.pre).forward(flat))
     step = np.abs(lat.shaper[entry + 1] - lat.shaper[entry])
     return tolerances.FLOAT32_TABLE_INDEX_ROUNDINGS * tolerances.FLOAT32_UNIT_ROUNDOFF * position * step
 
@@ -62,14 +62,14 @@ def at_coordinates(lat: Lattice, coordinate: np.ndarray) -> np.ndarray:
     index = np.clip(coordinate, 0.0, 1.0).T * (lat.size - 1)
     nodes, weights = tetrahedra(np.ascontiguousarray(index), lat.size)
     out = interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T
-    return out if lat.light is None else lat.light.inverse(out)
+    return out if lat.light is None else as_pre_shaper(lat.light).inverse(out)
 
 
 def cell_inputs(lat: Lattice) -> np.ndarray:
     """One normalised display-linear input ((n - 1)³, 3) in every cell of ``lat``'s file: the
     middle of its pre-shaped span on each axis."""
     shaped = preimages(lat.size, lat.shaper, lat.domain)
-    return grid(lat.pre.inverse((shaped[1:] + shaped[:-1]) / 2.0)).reshape(-1, 3)
+    return grid(as_pre_shaper(lat.pre).inverse((shaped[1:] + shaped[:-1]) / 2.0)).reshape(-1, 3)
 
 
 def shaper_inputs(lat: Lattice, other: float = 0.5) -> np.ndarray:
@@ -78,8 +78,8 @@ def shaper_inputs(lat: Lattice, other: float = 0.5) -> np.ndarray:
     two at ``other``: every entry of the table (one column, for the three channels) is read
     where the file's output moves with it (a grey far below black or above the peak maps to
     black or white, whatever its coordinate)."""
-    entries = np.linspace(lat.domain[0], lat.domain[1], lat.shaper.size)
-    linear = lat.pre.inverse(np.sort(np.concatenate([entries, (entries[1:] + entries[:-1]) / 2.0])))
+    entries = np.linspace(lat.domain[0], lat.domain[1], shaper_table(lat).size)
+    linear = as_pre_shaper(lat.pre).inverse(np.sort(np.concatenate([entries, (entries[1:] + entries[:-1]) / 2.0])))
     out = np.full((3, linear.size, 3), other)
     for channel in range(3):
         out[channel, :, channel] = linear

@@ -172,7 +172,7 @@ def clf_steps(lattice: Lattice, include_matrix: bool = True) -> list:
     steps = []
     if lattice.pre is not None:
         if include_matrix:
-            if lattice.decode is not None:
+            if lattice.source is not None and lattice.decode is not None:
                 steps += decode_steps(lattice.source.name, lattice.decode)
             steps.append(transforms.matrix_transform(lattice.matrix))
         steps += _axis_shaper(lattice.pre)

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from generator import reference
-from generator.colorimetry.transfer import PiecewisePower, Power
+from generator.colorimetry.transfer import PiecewisePower, Power, TransferFunction
 from generator.gamut import METHODS
 from generator.luts import numbers
 from generator.luts.axes import DEFAULT_SHARES, LOG_METHODS, Axis, LogAxis, grey_code, grey_linear
@@ -151,7 +151,7 @@ class Lattice:
     source: ColourSpace | None
     display: Display
     method: str
-    decode: object | None
+    decode: TransferFunction | None
     matrix: np.ndarray | None
     pre: PreShaper | LogAxis | None
     domain: tuple[float, float]
@@ -163,7 +163,23 @@ class Lattice:
 
     @property
     def size(self) -> int:
+        """Nodes along each axis of the cube."""
         return self.cube.shape[0]
+
+
+def as_pre_shaper(step: PreShaper | LogAxis | None) -> PreShaper:
+    """``step`` (a lattice's ``pre`` or ``light``) where the layout makes it a :class:`PreShaper`;
+    TypeError for a :class:`LogAxis` or None."""
+    if not isinstance(step, PreShaper):
+        raise TypeError(f"a lattice step is a {type(step).__name__}, not a PreShaper")
+    return step
+
+
+def shaper_table(lat: Lattice) -> np.ndarray:
+    """``lat``'s shaper table; ValueError for a lattice without one."""
+    if lat.shaper is None:
+        raise ValueError("the lattice has no shaper table")
+    return lat.shaper
 
 
 def preimages(size: int, shaper: np.ndarray | None, domain: tuple[float, float]) -> np.ndarray:
@@ -190,10 +206,11 @@ def coordinates(lat: Lattice, code) -> np.ndarray:
 def table_position(lat: Lattice, code) -> tuple[np.ndarray, np.ndarray]:
     """The fractional entry of input values ``code`` in ``lat``'s shaper table (clamped to its
     domain) and the entry below it, as a reader finds them."""
+    size = shaper_table(lat).size
     code = np.clip(np.asarray(code, dtype=np.float64), *lat.domain)
-    position = (code - lat.domain[0]) / (lat.domain[1] - lat.domain[0]) * (lat.shaper.size - 1)
+    position = (code - lat.domain[0]) / (lat.domain[1] - lat.domain[0]) * (size - 1)
     with np.errstate(invalid="ignore"):  # a NaN's entry is no index (taken in "clip" mode), its coordinate NaN
-        entry = np.minimum(position.astype(np.int64), lat.shaper.size - 2)  # clipped above: never negative
+        entry = np.minimum(position.astype(np.int64), size - 2)  # clipped above: never negative
     return position, entry
 
 
@@ -211,7 +228,7 @@ def node_values(
     display: Display,
     method: str,
     linear_axis: np.ndarray,
-    matrix: np.ndarray,
+    matrix: np.ndarray | None,
     params,
     light: PreShaper | None = None,
     decimals: int = CUBE_DECIMALS,

@@ -29,7 +29,7 @@ def view_transform(
     through CIE XYZ), whose baked curve files (a tabulated EOTF's, by name, for the search
     path to find) go into ``bakes`` as in the config."""
     steps = lut_steps(matrix, path, hsv_folder)
-    if display is not None:
+    if spec is not None and display is not None:
         steps += [
             matrix_transform(reference.normalised_display_to_xyz(spec, display)),
             *display_steps(spec, display, {} if bakes is None else bakes),
@@ -45,7 +45,8 @@ def view_figures(lut: ViewLut) -> dict:
     transform = view_transform(
         lut.matrix,
         lut.filename,
-        *((lut.spec, lut.display) if lut.light else ()),
+        spec=lut.spec if lut.light else None,
+        display=lut.display if lut.light else None,
         hsv_folder="" if lut.hsv else None,
         bakes=bakes,
     )

@@ -230,7 +230,7 @@ def forward13(aces, preset: str | Preset13) -> np.ndarray:
     14.9999
     """
     p, aces = _preset(preset), finite_or_black(aces)
-    if p.kind == "hdr":
+    if isinstance(p.odt, HdrOdt):
         return hdr_odt_forward(rrt_sweeteners(aces), p.odt, _spline(p.odt))
     return sdr_odt_forward(rrt_tonescale(aces), p.odt)
 
@@ -240,6 +240,6 @@ def inverse13(xyz, preset: str | Preset13) -> np.ndarray:
     through the CTL's inverse ODT and inverse RRT (see those modules for what they do not undo);
     a colour with a non-finite component counts as black."""
     p, xyz = _preset(preset), finite_or_black(xyz)
-    if p.kind == "hdr":
+    if isinstance(p.odt, HdrOdt):
         return rrt_sweeteners_inverse(hdr_odt_inverse(xyz, p.odt, _spline(p.odt)))
     return rrt_tonescale_inverse(sdr_odt_inverse(xyz, p.odt))

@@ -70,7 +70,7 @@ def check_gamut(primaries, white, name: str) -> tuple[tuple[tuple[float, float],
             f"{name}_white must lie inside the triangle of {name}_primaries, at least "
             f"{GAMUT_MIN_XY_AREA} of xy area from each edge, got {tuple(w)}"
         )
-    return tuple(tuple(float(v) for v in row) for row in p), (float(w[0]), float(w[1]))
+    return tuple((float(x), float(y)) for x, y in p), (float(w[0]), float(w[1]))
 
 
 def corner_hues_in_order(params: JMhParams, peak: float) -> bool:
@@ -87,6 +87,11 @@ def _check_number(value, name: str) -> float:
     if not np.isfinite(value):
         raise ValueError(f"{name} must be finite, got {value!r}")
     return float(value)
+
+
+#: An xy chromaticity; three of them, red, green, blue.
+XY = tuple[float, float]
+Triangle = tuple[XY, XY, XY]
 
 
 @dataclass(frozen=True)

@@ -11,12 +11,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import cast
 
 import numpy as np
 
 from generator.colorimetry.curves import HALF_MAX
 from generator.rendering import aces2, aces13
-from generator.rendering.aces2_params import ACES2Params
+from generator.rendering.aces2_params import XY, ACES2Params, Triangle
 from generator.rendering.aces2_presets import D65, P3, PRESETS, REC709, REC2020
 
 #: The studio configs' view with the meaning of our Colorimetric view (scene light to XYZ).
@@ -44,10 +45,13 @@ class ACESView:
     @property
     def render_peak(self) -> float:
         """An ACES 2.0 view's rendering peak (cd/m²), its limiting RGB's largest value times 100."""
+        if self.params is None:
+            raise ValueError(f"{self.name!r} is an ACES {self.version} view, without ACES 2.0 parameters")
         return float(self.params.peak_luminance)
 
     @property
     def is_hdr(self) -> bool:
+        """Whether the view's peak is above 100 cd/m²."""
         return self.peak > 100.0 + 1e-9
 
 
@@ -76,23 +80,23 @@ def catalogue() -> dict[str, ACESView]:
             "2.0",
             preset.style,
             float(p.peak_luminance * p.linear_scale),
-            tuple(p.limiting_primaries),
-            tuple(p.limiting_white),
+            p.limiting_primaries,
+            p.limiting_white,
             p,
         )
-    for name, preset in aces13.PRESETS13.items():
-        limiting, white = _limit13(preset)
-        out[name] = ACESView(name, "1.3", preset.style, float(preset.peak_luminance), limiting, white)
+    for name, preset13 in aces13.PRESETS13.items():
+        limiting, white = _limit13(preset13)
+        out[name] = ACESView(name, "1.3", preset13.style, float(preset13.peak_luminance), limiting, white)
     return out
 
 
 def own_view(display_name: str, peak: float, primaries, white) -> ACESView:
     """A custom display's own ACES 2.0 view: its peak, primaries and white as the parameters
     (ValueError, naming the parameter, where the algorithm cannot take them)."""
-    params = ACES2Params(
+    params = ACES2Params(  # it checks the shapes and stores tuples of floats
         float(peak),
-        tuple(map(tuple, np.asarray(primaries, dtype=float).tolist())),
-        tuple(np.asarray(white, dtype=float).tolist()),
+        cast(Triangle, tuple(map(tuple, np.asarray(primaries, dtype=float).tolist()))),
+        cast(XY, tuple(np.asarray(white, dtype=float).tolist())),
     )
     kind = "HDR" if peak > 100.0 else "SDR"
     return ACESView(
@@ -100,8 +104,8 @@ def own_view(display_name: str, peak: float, primaries, white) -> ACESView:
         "2.0",
         "",
         float(peak),
-        tuple(params.limiting_primaries),
-        tuple(params.limiting_white),
+        params.limiting_primaries,
+        params.limiting_white,
         params,
     )
 

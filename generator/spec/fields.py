@@ -157,7 +157,8 @@ def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float
         cct = number(value, source, field)
         if not 1667.0 <= cct <= 25000.0:
             raise SpecError(source, field, f"CCT {cct:g} K is outside 1667 to 25000 K")
-        return tuple(float(v) for v in spectral.whitepoint_from_cct(cct))
+        x, y = spectral.whitepoint_from_cct(cct)
+        return (float(x), float(y))
     if isinstance(value, str) and value.lower().endswith(".csv"):
         path = resolve_path(value, base, source, field)
         xy = _csv(lambda p: spectral.whitepoint_from_sd(spectral.read_spd_csv(p)), path, source, field)
@@ -167,7 +168,8 @@ def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float
 
         illuminants = colour.CCS_ILLUMINANTS["CIE 1931 2 Degree Standard Observer"]
         if value in illuminants:
-            return tuple(float(v) for v in illuminants[value])
+            x, y = illuminants[value]
+            return (float(x), float(y))
         raise SpecError(
             source,
             field,
@@ -252,17 +254,17 @@ def _build_transfer(family: str, value: dict, base: Path, source: str, field: st
             )
         return label, curve
     _check_log_break(params, source, field)
-    curve = transfer.LogCamera(**params)
-    if curve.lin_side_break is None:
-        _check_black(curve, source, field)
+    log = transfer.LogCamera(**params)
+    if log.lin_side_break is None:
+        _check_black(log, source, field)
     _check_float32(
-        curve,
+        log,
         family,
         source,
         field,
         "a base, slopes, offsets and break of a real camera curve: the library's are within 1.6e-6",
     )
-    return label, curve
+    return label, log
 
 
 def _check_float32(curve, family: str, source: str, field: str, hint: str) -> None:
@@ -356,7 +358,11 @@ def rgc_params(value, source: str):
     for key in value:
         if key not in RGC_KEYS:
             raise SpecError(source, f"rgc.{key}", f"unknown key; allowed: {', '.join(RGC_KEYS)}")
-    chosen = {"limits": defaults.limits, "thresholds": defaults.thresholds, "power": defaults.power}
+    chosen: dict[str, tuple[float, ...]] = {
+        "limits": defaults.limits,
+        "thresholds": defaults.thresholds,
+        "power": (defaults.power,),
+    }
     for key, given in value.items():
         if key == "power":
             numbers = [("rgc.power", number(given, source, "rgc.power"))]
@@ -372,5 +378,5 @@ def rgc_params(value, source: str):
                     field,
                     f"{v!r} is outside what OpenColorIO's ACES_GAMUT_COMP_13 takes; allowed: {low:g} to {high:g}",
                 )
-        chosen[key] = numbers[0][1] if key == "power" else tuple(v for _, v in numbers)
-    return RGCParams(*chosen["limits"], *chosen["thresholds"], chosen["power"])
+        chosen[key] = tuple(v for _, v in numbers)
+    return RGCParams(*chosen["limits"], *chosen["thresholds"], *chosen["power"])

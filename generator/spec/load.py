@@ -230,7 +230,8 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     every = {n.lower() for n in all_names}
     if reference.lower() not in every:
         raise SpecError(source, "scene_reference", f"{reference!r} is not among the colour spaces")
-    chosen = next(s for s in (*listed, *customs) if reference.lower() in (n.lower() for n in (s.name, *s.aliases)))
+    both: tuple[library.SpaceDef | ColourSpace, ...] = (*listed, *customs)
+    chosen = next(s for s in both if reference.lower() in (n.lower() for n in (s.name, *s.aliases)))
     linear = chosen.curve == "linear" if isinstance(chosen.curve, str) else isinstance(chosen.curve, Linear)
     if chosen.encoding != "scene-linear" or not linear:
         what = (
@@ -252,7 +253,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     rules = _file_rules(raw, source, every | set(taken))
     names = namespace.colour_spaces((*listed, *customs), taken)
     environment = looks.environment(raw.get("environment"), source)
-    by_name = {n.lower(): s for s in (*listed, *customs) for n in (s.name, *s.aliases)}
+    by_name = {n.lower(): s for s in both for n in (s.name, *s.aliases)}
     spec_looks = looks.tables(raw.get("look"), source, base, by_name, environment)
     looks.check_view_looks(displays, spec_looks, source, view_looks)
     return Spec(
@@ -287,7 +288,7 @@ def _displays(raw: dict, source: str, base: Path) -> tuple[tuple[Display, ...], 
     out, given = [], {}
     for i, table in enumerate(_tables(raw, "display", source)):
         field = f"display[{i}]"
-        entries = {}
+        entries: dict[int, str] = {}
         if isinstance(table, dict) and "views" in table:
             names, entries = looks.split_views(table["views"], source, f"{field}.views")
             table = {**table, "views": names}
@@ -501,7 +502,8 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
             f"{field}.views",
             f"empty; allowed: one or more of {', '.join(VIEWS)}, or the key left out for the defaults",
         )
-    for i, view in enumerate(views or ()):
+    listed_views = views or ()
+    for i, view in enumerate(listed_views):
         if view not in VIEWS and view not in COLORIMETRIC_ALIASES and not aces_views.is_aces_name(view):
             raise SpecError(
                 source,
@@ -510,7 +512,7 @@ def _display(table: dict, source: str, field: str, base: Path) -> Display:
                 f"allowed: {', '.join(VIEWS)}, {', '.join(COLORIMETRIC_ALIASES)}, {aces_views.OWN_ACES2} "
                 "(the display's own) or an ACES studio view ('ocioforge list --views' shows them)",
             )
-        if view in views[:i]:
+        if view in listed_views[:i]:
             raise SpecError(source, f"{field}.views[{i}]", f"{view!r} is listed twice; allowed: each view once")
     known = {n.lower(): d for d in library.DISPLAYS for n in (d.name, *d.aliases)}
     custom = any(k in table for k in ("gamut", "primaries", "primaries_spectra", "eotf"))
@@ -895,7 +897,7 @@ def _file_rules(raw: dict, source: str, names: set[str]) -> tuple[FileRule, ...]
     """The file rules; each names a colour space, display or role of the config (``names``)."""
     if "file_rule" not in raw:  # the embedded default's, as for every key left out
         raw = {"file_rule": embedded_default("file_rule")}
-    rules = []
+    rules: list[FileRule] = []
     for i, table in enumerate(_tables(raw, "file_rule", source)):
         field = f"file_rule[{i}]"
         labels.check_keys(table, FILE_RULE_KEYS, source, f"{field}.")

@@ -14,13 +14,16 @@ import dataclasses
 import glob
 import hashlib
 import re
+from collections.abc import Mapping
 from pathlib import Path, PurePosixPath
+from typing import Any
 
 from generator.colorimetry.cdl import STYLES, CdlFileError, Correction, correction_ids, read_cdl
+from generator.colorimetry.library import SpaceDef
 from generator.colorimetry.look_luts import INTERPOLATIONS, LutFileError, cached_lut3d
 from generator.colorimetry.look_luts import SUFFIXES as LUT_SUFFIXES
 from generator.spec import fields, labels
-from generator.spec.schema import CONTEXT_VARIABLE, Look, SpecError, context_variables, with_context
+from generator.spec.schema import CONTEXT_VARIABLE, ColourSpace, Look, SpecError, context_variables, with_context
 
 KEYS = (
     "name",
@@ -117,13 +120,15 @@ def check_view_looks(displays, looks: tuple[Look, ...], source: str, given: dict
                 raise SpecError(source, field, f"{text!r} names a look twice; allowed: each look once")
 
 
-def tables(value, source: str, base: Path, spaces: dict[str, object], env: tuple) -> tuple[Look, ...]:
+def tables(
+    value, source: str, base: Path, spaces: Mapping[str, SpaceDef | ColourSpace], env: tuple
+) -> tuple[Look, ...]:
     """The ``[[look]]`` tables; ``spaces``: lower-case name or alias -> the spec's colour space."""
     if value is None:
         return ()
     if not isinstance(value, list):
         raise SpecError(source, "look", f"expected an array of tables ([[look]]), got {value!r}")
-    looks = []
+    looks: list[Look] = []
     for i, table in enumerate(value):
         look = _look(table, source, f"look[{i}]", base, spaces, dict(env))
         if look.name in (earlier.name for earlier in looks):
@@ -132,7 +137,7 @@ def tables(value, source: str, base: Path, spaces: dict[str, object], env: tuple
     return tuple(looks)
 
 
-def _look(table, source: str, field: str, base: Path, spaces: dict, env: dict) -> Look:
+def _look(table, source: str, field: str, base: Path, spaces: Mapping[str, SpaceDef | ColourSpace], env: dict) -> Look:
     labels.check_keys(table, KEYS, source, f"{field}.")
     name = labels.table_name(table, source, field)
     if name.startswith(("+", "-")) or "|" in name:
@@ -156,7 +161,7 @@ def _look(table, source: str, field: str, base: Path, spaces: dict, env: dict) -
             source, field, "give an ASC CDL (slope, offset, power, saturation) or a file, exactly one of them"
         )
     description = labels.string(table.get("description", ""), source, f"{field}.description", text=True)
-    common = dict(name=name, process_space=space.name, description=description)
+    common: dict[str, Any] = dict(name=name, process_space=space.name, description=description)
     if inline:
         for key in ("cccid", "interpolation"):
             if key in table:
@@ -300,7 +305,7 @@ def ccc_ids(look: Look, folder: Path, context: dict) -> tuple[str, ...]:
 def records(spec) -> dict:
     """The looks and environment as the resolved spec records them: absent when there are none,
     so a spec without looks gives the bytes it gave before looks existed."""
-    out = {}
+    out: dict[str, list] = {}
     if spec.looks:
         out["looks"] = [dataclasses.asdict(look) for look in spec.looks]
     if spec.environment:

@@ -172,7 +172,9 @@ class _Reader:
             raise self.fail(f"{field}.family", f"unknown family {family!r} ({', '.join(['Function', *_CURVE_TYPES])})")
         cls = _CURVE_TYPES[family]
         d = self.table(data, ("family", *(f.name for f in dataclasses.fields(cls))), field)
-        values = {f.name: self.field_value(d[f.name], f.type, f"{field}.{f.name}") for f in dataclasses.fields(cls)}
+        values = {
+            f.name: self.field_value(d[f.name], str(f.type), f"{field}.{f.name}") for f in dataclasses.fields(cls)
+        }
         if family in _SPEC_FAMILIES:
             fields.check_ranges(_SPEC_FAMILIES[family], values, self.source, field)
         column = next((k for k in ("code", "linear") if k in values and not np.all(np.diff(values[k]) > 0.0)), None)

@@ -53,13 +53,16 @@ def float32_shift(src: paths.Endpoint, dst_matrix, codes: np.ndarray) -> tuple[n
     each matrix product adds FLOAT32_MATRIX_ROUNDINGS u of |M||x|.
     """
     u, k = tolerances.FLOAT32_UNIT_ROUNDOFF, tolerances.FLOAT32_MATRIX_ROUNDINGS
+    to_linear, matrix = src.linear, src.matrix
+    if to_linear is None or matrix is None:
+        raise ValueError(f"{src.name!r} has no linear values to shift")
     with np.errstate(all="ignore"):
-        linear = src.linear(codes)
-        ref = apply_matrix(src.matrix, linear)
+        linear = to_linear(codes)
+        ref = apply_matrix(matrix, linear)
         constant = getattr(src.curve, "code_constant", 0.0)
-        source = u * ((1.0 + k) * np.abs(linear) + k * _input_side(src.linear, codes, linear, constant))
+        source = u * ((1.0 + k) * np.abs(linear) + k * _input_side(to_linear, codes, linear, constant))
         to_dst = np.abs(np.linalg.inv(dst_matrix))
-        return ref, apply_matrix(to_dst, apply_matrix(np.abs(src.matrix), source) + k * u * np.abs(ref))
+        return ref, apply_matrix(to_dst, apply_matrix(np.abs(matrix), source) + k * u * np.abs(ref))
 
 
 def float32_allowance(src: paths.Endpoint, dst_matrix, encode, codes: np.ndarray, shifted=None) -> np.ndarray | None:
@@ -82,6 +85,8 @@ def determinate(src: paths.Endpoint, dst: paths.Endpoint, codes: np.ndarray) -> 
     """Samples whose destination linear values (ADX: exposures) all stand clear of their
     float32 noise: a bounded encoding has no code for a non-positive exposure, so one
     that float32 may move through zero has no determinate code."""
+    if dst.matrix is None:
+        raise ValueError(f"{dst.name!r} has no linear values to compare")
     ref, shift = float32_shift(src, dst.matrix, codes)
     with np.errstate(invalid="ignore"):
         return np.all(np.abs(apply_matrix(np.linalg.inv(dst.matrix), ref)) > shift, axis=-1)
@@ -117,7 +122,7 @@ def _operator_shift(display: Display, view: str, linear: np.ndarray, shift: np.n
     """The departure OCIO's own operators for a view's mapping may make, in display-linear
     RGB, given the float32 ``shift`` of the display's linear values ``linear``
     (:data:`OPERATOR_SHIFTS`; 0 for the other views)."""
-    method = OPERATOR_SHIFTS.get(paths.view_method(view))
+    method = OPERATOR_SHIFTS.get(paths.view_method(view) or "")
     return np.zeros_like(linear) if method is None else method(display, linear, shift)
 
 

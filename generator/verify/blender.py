@@ -16,7 +16,15 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from generator.verify.check import VIEW, Check
-from generator.verify.hosts import TOO_NEW, NotRunnable, linked_ocio, read_output, run_host, write_inputs
+from generator.verify.hosts import (
+    TOO_NEW,
+    NotRunnable,
+    installed,
+    linked_ocio,
+    read_output,
+    run_host,
+    write_inputs,
+)
 from generator.verify.judge import Output
 from generator.verify.paths import RAW
 
@@ -61,13 +69,14 @@ class BlenderEngine:
 
     def version(self) -> str:
         """The first line of ``blender --version``."""
-        result = run_host([self.executable(), "--version"])
-        ocio = linked_ocio(self.executable()) or "unknown (linked in)"  # Debian's links the system's OCIO
+        exe = installed(self.executable(), "blender")
+        result = run_host([exe, "--version"])
+        ocio = linked_ocio(exe) or "unknown (linked in)"  # Debian's links the system's OCIO
         return f"{(result.stdout.strip().splitlines() or ['blender'])[0]}, OCIO {ocio}"
 
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
         """Each check's probes through Blender's view transform, read back from 16-bit PNGs."""
-        sources = {}
+        sources: dict[tuple[str, int], Check] = {}
         for check in checks:
             sources.setdefault((check.src, id(check.probes)), check)
         unique = list(sources.values())
@@ -87,7 +96,16 @@ class BlenderEngine:
         request.write_text(json.dumps({"jobs": jobs, "status": str(status_path)}), encoding="utf-8")
         env = {**os.environ, "OCIO": str(config)}  # OCIO's overrides set aside by verify()
         result = run_host(
-            [self.executable(), "-b", "--factory-startup", "--python", str(SCRIPT), "--", str(request)], env
+            [
+                installed(self.executable(), "blender"),
+                "-b",
+                "--factory-startup",
+                "--python",
+                str(SCRIPT),
+                "--",
+                str(request),
+            ],
+            env,
         )
         if TOO_NEW in result.stdout + result.stderr:
             raise NotRunnable(next(line for line in (result.stdout + result.stderr).splitlines() if TOO_NEW in line))

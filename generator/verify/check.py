@@ -56,7 +56,7 @@ class Check:
     keep: np.ndarray | None = field(default=None, repr=False)
     allowance: np.ndarray | None = field(default=None, repr=False)
     problem: str = ""
-    encode: object | None = field(default=None, repr=False)
+    encode: paths.Evaluate | None = field(default=None, repr=False)
 
     @property
     def title(self) -> str:
@@ -107,6 +107,7 @@ def judging(
     """Metric, tolerance, scale and target (Check fields) for an output kind (a baked source, a view)."""
     method = paths.view_method(view) if view else None
     if view and paths.is_aces13(view):
+        display = _shown(display, view)
         # OCIO's ACES 1.x builtins depart from the CTL (black's offset, the red modifier's
         # saturation, rescaled tone-curve slopes): held to what was measured against them.
         return dict(
@@ -115,8 +116,14 @@ def judging(
             tolerance=tolerances.ACES13_OCIO_RED_DARK_DELTA_E_ITP if display.is_hdr else tolerances.ACES13_OCIO_CODES,
         )
     if method is not None and method not in paths.ANALYTIC_METHODS:
+        display = _shown(display, view)
         return dict(metric=ITP if display.is_hdr else CODES, tolerance=view_lut_tolerance(display), target=display)
-    if baked_src is not None and baked_src.baked and (out is None or out.output == paths.LINEAR):
+    if (
+        baked_src is not None
+        and baked_src.baked
+        and baked_src.matrix is not None
+        and (out is None or out.output == paths.LINEAR)
+    ):
         gain = float(np.abs(baked_src.matrix).sum(1).max())
         return dict(metric=COLOUR, tolerance=tolerances.BAKED_CURVE_RELATIVE, scale=gain)
     if display is not None and display.is_hdr:
@@ -125,6 +132,13 @@ def judging(
         return dict(metric=COLOUR)
     tolerance = tolerances.BAKED_CURVE_RELATIVE if out is not None and out.baked else tolerances.ANALYTIC_RELATIVE
     return dict(metric=RELATIVE, tolerance=tolerance, target=display)
+
+
+def _shown(display: Display | None, view: str) -> Display:
+    """The display a view is judged on; ValueError without one."""
+    if display is None:
+        raise ValueError(f"the view {view!r} is judged on a display, and none was given")
+    return display
 
 
 @lru_cache(maxsize=32)

@@ -11,6 +11,7 @@ The record itself, its kinds and metrics are :mod:`generator.verify.check`'s.
 from __future__ import annotations
 
 from functools import partial
+from typing import Any
 
 import numpy as np
 
@@ -42,6 +43,9 @@ from generator.verify.check import (
     judging,
 )
 from generator.verify.probes import Family, Probes, Sizes
+
+#: Every endpoint of a spec by name (:func:`generator.verify.paths.endpoints`).
+Ends = dict[str, paths.Endpoint]
 
 #: The record's names, from :mod:`generator.verify.check`, where callers have long found them.
 __all__ = [
@@ -112,7 +116,7 @@ def _keep(
     """The samples compared: away from baked discontinuities; for bounded encodings (ADX)
     valid inputs inside the code range and colours it represents; above
     HLG_BUILTIN_BLACK for HLG displays."""
-    masks = []
+    masks: list[np.ndarray | None] = []
     if src is not None:
         masks.append(discontinuity_band(src, inputs))
         if src.valid is not None:
@@ -125,18 +129,20 @@ def _keep(
             masks.append(_representable(dst, inputs, expected) & dst.valid(expected))
     if display is not None and display.eotf_name == "HLG" and expected is not None:
         masks.append(~_hlg_dark(display, expected))
-    masks = [m for m in masks if m is not None]
-    return np.logical_and.reduce(masks) if masks else None
+    kept = [m for m in masks if m is not None]
+    return np.logical_and.reduce(kept) if kept else None
 
 
-def space_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
+def space_checks(spec: Spec, ends: Ends, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
     """Every colour space to the scene reference and back."""
     ref = ends[spec.reference.name]
+    to_ref = ref.encode
+    assert to_ref is not None  # the scene reference always encodes
     out = []
     for end in ends.values():
-        if end.decode is not None:
+        if (decode := end.decode) is not None:
             inputs = input_probes(end, scene, sizes)
-            expected = evaluate(lambda v: ref.encode(end.decode(v)), inputs.values)  # noqa: B023 (called at once)
+            expected: np.ndarray | None = evaluate(lambda v: to_ref(decode(v)), inputs.values)
             out.append(
                 Check(
                     TO_REFERENCE,
@@ -213,16 +219,18 @@ def _scene_space(spec: Spec, end: paths.Endpoint):
         return None
 
 
-def _endpoint(spec: Spec, ends: dict, name: str | None) -> paths.Endpoint | None:
-    if name is None or name in ends:
-        return ends.get(name)
+def _endpoint(spec: Spec, ends: Ends, name: str | None) -> paths.Endpoint | None:
+    if name is None:
+        return None
+    if name in ends:
+        return ends[name]
     try:
         return ends[spec.space(name).name]
     except KeyError:
         return None
 
 
-def view_sources(spec: Spec, ends: dict) -> list[paths.Endpoint]:
+def view_sources(spec: Spec, ends: Ends) -> list[paths.Endpoint]:
     """The inputs every display/view is checked from: the scene_linear role, the
     compositing_log role and the first display's (display-referred) space."""
     roles = dict(spec.roles)
@@ -231,7 +239,7 @@ def view_sources(spec: Spec, ends: dict) -> list[paths.Endpoint]:
     return list({e.name: e for e in found if e is not None}.values())
 
 
-def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
+def view_checks(spec: Spec, ends: Ends, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
     """Every display/view from each of :func:`view_sources`. Each source's probes are decoded
     once; an ACES view's rendering (:func:`paths.aces_stage`) is evaluated once per source and
     shared by the displays showing it, as is the float32 shift of a display's linear values
@@ -249,7 +257,8 @@ def view_checks(spec: Spec, ends: dict, scene: tuple[Family, ...], sizes: Sizes)
             stage = None if view == paths.RAW else paths.aces_stage(spec, display, view)
             fn = None if view == paths.RAW or stage is not None else paths.view_function(spec, display, view)
             for src, inputs, decoded in sources:
-                title, common = f"{display.name} / {view}", dict(probes=inputs, display=display.name, view=view)
+                title = f"{display.name} / {view}"
+                common: dict[str, Any] = dict(probes=inputs, display=display.name, view=view)
                 if view == paths.RAW:
                     out.append(Check(VIEW, title, src.name, output=paths.DATA, expected=inputs.values.copy(), **common))
                     continue
@@ -300,7 +309,7 @@ def _read_only(values: np.ndarray) -> np.ndarray:
 
 
 def conversion_check(
-    spec: Spec, ends: dict, inputs: Probes, src: str, dst: str = "", display: str = "", view: str = ""
+    spec: Spec, ends: Ends, inputs: Probes, src: str, dst: str = "", display: str = "", view: str = ""
 ) -> Check:
     """The check of one conversion a config runs on ``inputs`` (``ocioforge convert``'s frames):
     ``src`` to the colour space ``dst``, or to ``display`` through ``view`` (names as the config
@@ -330,8 +339,9 @@ def conversion_check(
     )
     allowance = None
     if expected is not None and target.output in (paths.CODE, paths.DISPLAY):
-        allowance = (
-            view_allowance(
+        if target.view:
+            assert target.display is not None  # a display-view space shows its display
+            allowance = view_allowance(
                 spec,
                 source,
                 target.matrix,
@@ -341,9 +351,8 @@ def conversion_check(
                 expected,
                 ends[target.display.name].encode,
             )
-            if target.view
-            else float32_allowance(source, target.matrix, target.encode, values)
-        )
+        else:
+            allowance = float32_allowance(source, target.matrix, target.encode, values)
         allowance = with_encoding(allowance, spec, target.display, expected, _scene_space(spec, target))
     elif expected is not None and source.baked:
         allowance = _input_rounding(source, target, values)
@@ -365,9 +374,9 @@ def conversion_check(
     )
 
 
-def _view_conversion(spec: Spec, ends: dict, source, inputs: Probes, display: str, view: str) -> Check:
+def _view_conversion(spec: Spec, ends: Ends, source, inputs: Probes, display: str, view: str) -> Check:
     """:func:`conversion_check` through a display's view."""
-    common = dict(probes=inputs, display=display, view=view)
+    common: dict[str, Any] = dict(probes=inputs, display=display, view=view)
     target = next((d for d in spec.displays if d.name == display), None)
     if source is None or target is None:
         return Check(

@@ -16,7 +16,7 @@ import PyOpenColorIO as ocio
 
 from generator.ocio.emit import LUT_FOLDER, generated_spaces, space_categories
 from generator.ocio.write import leaf_transforms
-from generator.spec.schema import Display, Spec
+from generator.spec.schema import ColourSpace, Display, Spec
 from generator.verify.looks import look_differences
 
 
@@ -84,7 +84,8 @@ def differences(cfg, spec: Spec) -> list[str]:
             out.append(f"{display.name} also lists the shared views {shared}, which the build does not write")
     out += _additions(cfg, spec)
     out += look_differences(cfg, spec, LUT_FOLDER)  # looks, environment, search path
-    for space in (*spec.colour_spaces, *spec.displays):
+    spaces: tuple[ColourSpace | Display, ...] = (*spec.colour_spaces, *spec.displays)
+    for space in spaces:
         held = cfg.getColorSpace(space.name)
         menu = _menu(space)
         shown = (

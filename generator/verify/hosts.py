@@ -44,6 +44,13 @@ def _outside_python(name: str) -> str | None:
     return shutil.which(name, path=os.pathsep.join(dirs))
 
 
+def installed(executable: str | None, name: str) -> str:
+    """``executable``, a host program found on PATH; NotRunnable when it was not found."""
+    if executable is None:
+        raise NotRunnable(f"{name} is not installed")
+    return executable
+
+
 def ocio_in(text: str) -> str:
     """The OpenColorIO version a host's own words name ("OpenColorIO 2.1.2, color config: ..."), or ""."""
     found = re.search(r"OpenColorIO v?(\d+\.\d+(?:\.\d+)?)", text)
@@ -122,7 +129,7 @@ class OiiotoolEngine:
 
     def version(self) -> str:
         """oiiotool's version and the OpenColorIO it was built with."""
-        exe = self.executable()
+        exe = installed(self.executable(), "oiiotool")
         oiio = run_host([exe, "--version"]).stdout.strip()  # --help names the OCIO it runs, in 2.4 and 3.x
         return f"OpenImageIO {oiio}, OCIO {ocio_in(run_host([exe, '--help']).stdout) or 'unknown'} ({exe})"
 
@@ -146,7 +153,7 @@ class OiiotoolEngine:
     def _command(self, config: Path) -> list[str]:
         """oiiotool reading ``config``, with its frame wildcards off: a colour space, display or
         view name that reads as a path with a '#' ('Cam #1/A') is a name, not a file sequence."""
-        return [self.executable(), "--wildcardoff", "--colorconfig", str(config)]
+        return [installed(self.executable(), "oiiotool"), "--wildcardoff", "--colorconfig", str(config)]
 
     def run(self, config: Path, checks: list[Check], workdir: Path) -> list[list[Output]]:
         """Every check through one oiiotool command, read back from each file variant."""
@@ -192,8 +199,8 @@ def oiiotool_engines() -> tuple:
     """The oiiotool beside this Python (or on PATH) and, when another one is installed outside
     this Python environment (Debian's, running its own OCIO), that one too, as its own engine."""
     ours, system = OiiotoolEngine(), SystemOiiotoolEngine()
-    found = [ours.executable(), system.executable()]
-    if all(found) and os.path.realpath(found[0]) != os.path.realpath(found[1]):
+    found, other = ours.executable(), system.executable()
+    if found and other and os.path.realpath(found) != os.path.realpath(other):
         return (ours, system)
     return (ours,)
 
@@ -215,11 +222,11 @@ class OcioconvertEngine:
 
     def version(self) -> str:
         """Where the ocioconvert run is (it prints no version)."""
-        exe = self.executable()
+        exe = installed(self.executable(), "ocioconvert")
         return f"OCIO {linked_ocio(exe) or 'unknown'} ({exe}, the system's, outside this Python environment)"
 
     def _command(self, check: Check, source: Path, target: Path, config: Path) -> list[str]:
-        exe = self.executable()
+        exe = installed(self.executable(), "ocioconvert")
         if check.kind == VIEW:
             return [exe, "--view", str(source), check.src, str(target), check.display, check.view]
         if check.kind == LUT:

@@ -69,6 +69,8 @@ class Outcome:
 def sample_errors(check: Check, actual: np.ndarray, step: float) -> tuple[np.ndarray, int]:
     """Per-sample errors in the check's metric (NaN where not compared) and the undefined count."""
     expected = check.expected
+    if expected is None:
+        raise ValueError(f"{check.title}: the reference evaluation gave nothing to compare")
     if step:
         expected = np.clip(expected, 0.0, 1.0)
     compared = check.probes.finite & np.all(np.isfinite(expected), axis=-1)

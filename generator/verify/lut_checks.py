@@ -15,7 +15,7 @@ from generator.luts import aces_lattice, hsv, hsv_axes
 from generator.luts.axes import LogAxis
 from generator.luts.evaluate import cell_inputs, shaper_inputs
 from generator.luts.hsv_axes import ocio_hsv_to_rgb
-from generator.luts.lattice import grid, node_values, preimages
+from generator.luts.lattice import as_pre_shaper, grid, node_values, preimages
 from generator.luts.view import HSV_METHOD, LATTICE_DEFINED, ends_in_light, view_filename, view_lattice
 from generator.ocio.curves import curve_label
 from generator.ocio.emit import LUT_FOLDER, baked_aces_views
@@ -66,7 +66,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
     the display's codes, or to display light that the verifier then encodes in float64,
     applied tetrahedrally) against its view's mapping (:func:`_lattice_probes` for a view
     defined by its lattice)."""
-    out = []
+    out: list[Check] = []
     for display in spec.displays:
         to_display = reference.normalised_display_matrix(spec, display)
         families = probes.code_families(0.0, 1.0, sizes) + [
@@ -90,6 +90,7 @@ def view_lut_checks(spec: Spec, scene: tuple[Family, ...], sizes: Sizes) -> list
                 allowance = lattice_file_allowance(spec, display, method, checked.values * display.clip_high)
             else:
                 fn = paths.view_function(spec, display, view)
+                assert fn is not None  # a gamut-mapped view has an evaluation
                 checked = Probes((*families, *_output_table_greys(spec, display, method)))
                 expected = evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), checked.values)  # noqa: B023
             out.append(
@@ -175,11 +176,12 @@ def _lattice_probes(spec: Spec, display: Display, method: str, families: list[Fa
         Family("a colour in every lattice cell", cell_inputs(lat)),
         Family("a channel on every shaper entry and between", shaper_inputs(lat)),
     )
-    axis = lat.pre.inverse(preimages(lat.size, lat.shaper, lat.domain))
+    axis = as_pre_shaper(lat.pre).inverse(preimages(lat.size, lat.shaper, lat.domain))
     nodes = Family("lattice nodes (the mapping itself)", grid(axis).reshape(-1, 3))
     with np.errstate(all="ignore"):
-        held = node_values(display, method, axis * peak, None, None, lat.light, lat.decimals).reshape(-1, 3)
-        at_nodes = held if lat.light is None else reference.display_encode(display, lat.light.inverse(held) * peak)
+        light = None if lat.light is None else as_pre_shaper(lat.light)
+        held = node_values(display, method, axis * peak, None, None, light, lat.decimals).reshape(-1, 3)
+        at_nodes = held if light is None else reference.display_encode(display, light.inverse(held) * peak)
         expected = np.concatenate([through(f.values * peak) for f in lattice_families] + [at_nodes])
     return Probes((*lattice_families, nodes)), expected
 
@@ -199,6 +201,7 @@ def hsv_lut_checks(spec: Spec, display: Display, view: str, families: list[Famil
     )
     shared_name = f"{LUT_FOLDER}/{hsv.SHARED_FILE}"
     fn = paths.view_function(spec, display, view)
+    assert fn is not None  # an HSV view has an evaluation
 
     light = hsv_axes.ocio_hsv_to_rgb(hsv_axes.hsv_of_coordinates(coordinates.values), max_saturation=2.0)
     expected = evaluate(lambda v: fn(apply_matrix(np.linalg.inv(to_display), v)), light)

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
@@ -33,7 +34,7 @@ from generator import reference
 from generator.colorimetry import adx
 from generator.colorimetry.curves import HALF_MAX
 from generator.colorimetry.matrices import apply_matrix
-from generator.colorimetry.transfer import Linear
+from generator.colorimetry.transfer import Function, Linear, Tabulated
 from generator.luts import aces_lattice
 from generator.luts.axes import LOG_METHODS
 from generator.luts.evaluate import display_file
@@ -105,8 +106,9 @@ def code_range(spec: Spec, space: ColourSpace) -> tuple[float, float]:
     if space.special == "adx16":
         top = float(np.min(reference.from_reference(spec, space, np.full(3, HALF_MAX))))
         return (0.0, min(1.0, top))
-    if space_is_baked(spec, space):
-        return tuple(float(v) for v in space.curve.domain)
+    if space_is_baked(spec, space) and isinstance(space.curve, Function | Tabulated):
+        lo, hi = space.curve.domain
+        return (float(lo), float(hi))
     return (0.0, 1.0)
 
 
@@ -312,7 +314,10 @@ def aces_view_function(spec: Spec, display: Display, view: str) -> Evaluate:
     (:func:`aces_stage`): the float64 output transform where OCIO runs it analytically, else
     its baked lattice evaluated in float64 (the file is then what is held to), then the
     display's encoding."""
-    _, to_xyz = aces_stage(spec, display, view)
+    stage = aces_stage(spec, display, view)
+    if stage is None:
+        raise ValueError(f"{view!r} is not an ACES view of {display.name!r}")
+    to_xyz = stage[1]
     return lambda ref: reference.display_xyz_encode(spec, display, to_xyz(ref))
 
 
@@ -382,20 +387,22 @@ def endpoints(spec: Spec) -> dict[str, Endpoint]:
     return {e.name: e for e in out}
 
 
-class LazyEndpoints(dict):
+class LazyEndpoints(dict[str, Endpoint]):
     """:func:`endpoints`, each built when first looked up: a conversion needs two or three of them,
     and building every view's lattice takes seconds."""
 
     def __init__(self, spec: Spec):
         super().__init__()
         self.spec = spec
-        self.makers = {s.name: (lambda s=s: _scene_endpoint(spec, s)) for s in spec.colour_spaces}
-        self.makers[DISPLAY_REFERENCE] = lambda: _xyz_endpoint(spec)
-        self.makers.update({d.name: (lambda d=d: _display_endpoint(spec, d)) for d in spec.displays})
+        self.makers: dict[str, Callable[[], Endpoint]] = {
+            s.name: partial(_scene_endpoint, spec, s) for s in spec.colour_spaces
+        }
+        self.makers[DISPLAY_REFERENCE] = partial(_xyz_endpoint, spec)
+        self.makers.update({d.name: partial(_display_endpoint, spec, d) for d in spec.displays})
         if spec.display_view_spaces:
             self.makers.update(
                 {
-                    display_view_space(v, d.name): (lambda d=d, v=v: display_view_endpoint(spec, d, v))
+                    display_view_space(v, d.name): partial(display_view_endpoint, spec, d, v)
                     for d in spec.displays
                     for v in d.views
                     if v != RAW

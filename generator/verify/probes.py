@@ -101,7 +101,9 @@ def code_families(lo: float, hi: float, sizes: Sizes, lut: tuple[int, float] | N
     LUT has ``lut = (nodes, shaper)``, its nodes and the midpoints between them."""
     ramp = np.linspace(lo, hi, sizes.ramp)
     zeros = np.zeros_like(ramp)
-    ramps = [np.stack([ramp] * 3, axis=-1)] + [np.stack(np.roll([ramp, zeros, zeros], k, axis=0), -1) for k in range(3)]
+    ramps = [np.stack([ramp] * 3, axis=-1)] + [
+        np.stack(list(np.roll([ramp, zeros, zeros], k, axis=0)), -1) for k in range(3)
+    ]
     n = sizes.lattice
     axis = lo + (hi - lo) * (np.arange(n) + 0.5) / n
     lattice = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)

@@ -11,6 +11,7 @@ import os
 import shutil
 import tempfile
 import time
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -255,7 +256,7 @@ def _in_process_for_hosts(config: Path, spec: Spec, outcomes: list[Outcome], wor
     return [o for engine in IN_PROCESS for o in run_engine(engine, config, spec, list(failed.values()), workdir)[1]]
 
 
-def _explained(config: Path, outcomes: list[Outcome], extra: list[Outcome] = ()) -> list[Outcome]:
+def _explained(config: Path, outcomes: list[Outcome], extra: Sequence[Outcome] = ()) -> list[Outcome]:
     """Default-flags failures on checks the lossless engine passes, explained (APPROX) when
     one default flag accounts for them; then hosts' failures that match those (``extra``:
     in-process outcomes run only for these explanations, not returned)."""
