@@ -9,8 +9,6 @@ import time
 import click
 
 from generator.cli import NAME, Command, ConfigPath, GivenPath, printable, say
-from generator.convert import run as runner
-from generator.convert.plan import plan_run
 from generator.spec.schema import SpecError
 
 FORMAT_NAMES = ("exr", "tiff", "png", "jpeg", "dpx")
@@ -96,7 +94,12 @@ def command(
     fail_fast,
     memory,
 ):
+    """Convert image sequences through a config (the ``ocioforge convert`` command)."""
     started = time.perf_counter()
+    # Here, not at the top: `convert --help` starts without OpenColorIO, colour-science or Dask.
+    from generator.convert import run as runner
+    from generator.convert.plan import plan_run
+
     plan, sources = plan_run(
         inputs,
         output,

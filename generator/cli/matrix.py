@@ -12,14 +12,14 @@ from generator import reference
 from generator.cli import NAME, Command, GivenPath, say
 from generator.colorimetry import library
 from generator.colorimetry.gamuts import gamuts
-from generator.colorimetry.matrices import CATS, rgb_to_rgb, settled
+from generator.colorimetry.matrices import CATS, Gamut, rgb_to_rgb, settled
 from generator.luts.names import slug
 from generator.ocio.emit import matrix_transform
 from generator.reference import adaptation_between
 from generator.spec import load
 from generator.spec.load import DEFAULT_ADAPTATION
 from generator.spec.namespace import DISPLAY_REFERENCE, DISPLAY_REFERENCE_ALIASES
-from generator.spec.schema import SpecError
+from generator.spec.schema import ColourSpace, Display, SpecError
 
 FORMATS = ("plain", "json", "nuke", "ocio")
 
@@ -50,9 +50,9 @@ class Endpoint:
 
     name: str
     aliases: tuple[str, ...]
-    gamut: object
+    gamut: Gamut
     kind: str
-    record: object = None
+    record: ColourSpace | Display | None = None
 
 
 def _is_display(name: str) -> bool:
@@ -78,7 +78,7 @@ def endpoint(spec, name: str, which: str) -> Endpoint:
 
 def to_reference(spec, end: Endpoint) -> np.ndarray:
     """``end``'s linear RGB (a display's: 1.0 = 100 cd/m²) to ``spec``'s scene reference, as its config converts."""
-    if end.kind == "display":
+    if end.kind == "display" and isinstance(end.record, Display):
         return np.linalg.inv(reference.scene_to_display_matrix(spec, end.record))
     if end.kind == "reference":
         return np.linalg.inv(reference.scene_to_display_reference(spec))

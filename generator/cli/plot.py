@@ -10,7 +10,7 @@ import click
 from generator.cli import NAME, Command, ConfigPath, GivenPath, printable, say
 from generator.files import check_file_output, target, write_atomic
 from generator.spec.fields import suggest
-from generator.spec.schema import SpecError
+from generator.spec.schema import ColourSpace, SpecError
 from generator.verify import figures
 from generator.verify.run import load
 
@@ -68,7 +68,7 @@ def _spaces(spec, given: tuple[str, ...]) -> list:
     names = [n.strip() for value in given for n in value.split(",")]
     if any(not n for n in names):
         raise SpecError("ocioforge plot", "--spaces", f"{','.join(given)!r} holds an empty name; allowed: names")
-    found = {}
+    found: dict[str, ColourSpace] = {}
     for name in names:
         space = next((s for s in spec.colour_spaces if name.lower() in (n.lower() for n in s.all_names)), None)
         if space is None:

@@ -25,6 +25,7 @@ from generator.luts.lattice import CUBE_DECIMALS
 from generator.luts.names import slug
 from generator.luts.pool import Pool
 from generator.luts.source_axes import SOURCE_SHAPER_SIZES
+from generator.rendering.views import ACESView
 from generator.spec import load
 from generator.spec.schema import LutPack, Spec, SpecError
 
@@ -85,8 +86,9 @@ def _pairs(spec: Spec, where: str, index: int, table: LutPack) -> list[tuple[str
 
 def _formats(spec: Spec, table: LutPack, source: str) -> list[tuple[str, int | None]]:
     """(format, size) the table bakes ``source`` in: a linear source's from ``linear_source_formats``."""
-    linear = table.linear_source_formats is not None and isinstance(spec.space(source).curve, Linear)
-    return [(f, s) for f, s in zip(table.formats, table.sizes) if not linear or f in table.linear_source_formats]
+    allowed = table.linear_source_formats
+    linear = allowed is not None and isinstance(spec.space(source).curve, Linear)
+    return [(f, s) for f, s in zip(table.formats, table.sizes) if not linear or f in (allowed or ())]
 
 
 def _table_items(spec: Spec, where: str, index: int, table: LutPack) -> list[Item]:
@@ -216,13 +218,21 @@ def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: 
     )
 
 
+def _aces_view(req: bake.Request) -> ACESView:
+    """The ACES view ``req`` bakes; ValueError for a gamut-mapping request."""
+    if req.view is None:
+        raise ValueError("the request bakes a gamut mapping, not an ACES view")
+    return req.view
+
+
 def _aces_figures(req: bake.Request, paths: list[Path]) -> dict:
     """Set name to (p99, max) of the file read through OCIO (default flags, tetrahedral) on
     :mod:`generator.luts.aces_probes`' sets, against the reference."""
+    view = _aces_view(req)
     apply = _apply(_transform(paths, "tetrahedral"), "OPTIMIZATION_DEFAULT")
     out = {}
     for name, aces in aces_probes.sets(req.display, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT).items():
-        code, expected = aces_probes.in_source(req.spec, req.source, req.display, req.view.name, aces)
+        code, expected = aces_probes.in_source(req.spec, req.source, req.display, view.name, aces)
         error = probes.errors(req.display, apply(code), expected)[0]
         out[name] = (float(np.percentile(error, 99)), float(error.max()))
     return out
@@ -231,7 +241,8 @@ def _aces_figures(req: bake.Request, paths: list[Path]) -> dict:
 def _aces_row(name: str, req: bake.Request, figures: dict) -> str:
     unit = "ΔE ITP" if req.display.is_hdr else "10-bit codes"
     cells = " | ".join(f"{figures[kind][0]:.2f} / {figures[kind][1]:.1f}" for kind in aces_probes.SETS)
-    return f"| {name} | {req.source.name} | {req.view.name} | {req.display.name} | {req.size}³ | {cells} | {unit} |\n"
+    view = _aces_view(req).name
+    return f"| {name} | {req.source.name} | {view} | {req.display.name} | {req.size}³ | {cells} | {unit} |\n"
 
 
 def bake_item(item: Item, folder: Path) -> tuple[tuple[str, ...], str]:

@@ -182,7 +182,8 @@ def load(path: str | Path | None = None, keep: tuple[str, ...] | None = None) ->
     return parse(text, str(path), path.parent, keep)
 
 
-def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = None) -> Spec:
+def parse(text: str, source: str, base: Path | None, keep: tuple[str, ...] | None = None) -> Spec:
+    """The spec of TOML ``text`` (read from ``source``, relative paths from ``base``), validated."""
     try:
         raw = tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
@@ -254,7 +255,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
     names = namespace.colour_spaces((*listed, *customs), taken)
     environment = looks.environment(raw.get("environment"), source)
     by_name = {n.lower(): s for s in both for n in (s.name, *s.aliases)}
-    spec_looks = looks.tables(raw.get("look"), source, base, by_name, environment)
+    spec_looks = looks.tables(raw.get("look"), source, base or Path.cwd(), by_name, environment)
     looks.check_view_looks(displays, spec_looks, source, view_looks)
     return Spec(
         name=labels.string(raw.get("name", "ocioforge"), source, "name"),
@@ -278,7 +279,7 @@ def parse(text: str, source: str, base: Path, keep: tuple[str, ...] | None = Non
         ),
         looks=spec_looks,
         environment=environment,
-        look_folder=str(base.absolute()),
+        look_folder=str((base or Path.cwd()).absolute()),
     )
 
 
@@ -360,6 +361,7 @@ def library_def(name: str, source: str, field: str) -> library.SpaceDef:
 
 
 def library_space(name: str, source: str, field: str) -> ColourSpace:
+    """The library colour space ``name`` (or an alias); SpecError naming ``field`` otherwise."""
     return from_library(library_def(name, source, field))
 
 

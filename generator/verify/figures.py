@@ -19,7 +19,7 @@ import numpy as np
 
 from generator import reference
 from generator.colorimetry.matrices import apply_matrix
-from generator.gamut import METHODS, DisplayGamut
+from generator.gamut import METHODS
 from generator.rendering import views
 from generator.spec.schema import Display, Spec
 from generator.verify import probes
@@ -74,7 +74,7 @@ def _display_linear(spec: Spec, display: Display, scene: np.ndarray) -> np.ndarr
 def _mapped(spec: Spec, display: Display, scene: np.ndarray) -> dict[str, np.ndarray]:
     """Display-linear RGB of ``scene`` colours after each mapping method and each ACES view
     the display offers, in [0, 1] of peak."""
-    gamut = DisplayGamut(display.gamut.rgb_to_xyz, display.gamut.whitepoint)
+    gamut = reference.display_gamut(display)
     linear = _display_linear(spec, display, scene)
     out = {name: method(linear, gamut) for name, method in METHODS.items()}
     aces = apply_matrix(reference.to_aces_matrix(spec), scene)
@@ -175,7 +175,7 @@ def mapping(spec: Spec, display: Display, spaces=()):
         _triangle(axes, display.gamut.primaries, display.name, colour="black")
         source, target = _pairs(before, after)
         axes.add_collection(
-            LineCollection(np.stack([source, target], axis=1), colors="0.45", linewidths=0.6, label="moves")
+            LineCollection(list(np.stack([source, target], axis=1)), colors="0.45", linewidths=0.6, label="moves")
         )
         axes.scatter(source[:, 0], source[:, 1], s=9, facecolors="none", edgecolors="black", linewidths=0.6)
         axes.scatter(target[:, 0], target[:, 1], s=9, color=f"C{index % 10}", zorder=3)
@@ -219,7 +219,7 @@ def mapping_ramps(spec: Spec, display: Display):
 
 def family_errors(outcome) -> dict[str, float]:
     """The worst error over tolerance of each probe family in an outcome."""
-    out = {}
+    out: dict[str, float] = {}
     if outcome.errors is None:
         return out
     index = outcome.check.probes.family_index

@@ -121,7 +121,8 @@ def _problem(spec: Spec, names: tuple[str, ...], context: dict[str, str]) -> str
 
 def look_checks(spec: Spec, context: dict[str, str], density: str = "full") -> list[Check]:
     """Each look of ``spec`` alone, on its process space's values, in ``context``."""
-    inputs, out = _look_probes(density), []
+    inputs = _look_probes(density)
+    out: list[Check] = []
     for look in spec.looks:
         shown = describe({v: context[v] for v in look.variables})
         problem = _problem(spec, (look.name,), context)
@@ -163,7 +164,7 @@ def view_look_checks(spec: Spec, context: dict[str, str], density: str = "full")
     sizes = probes.SIZES[density]
     ends = paths.endpoints(spec)
     scene = probes.scene_families(spec, sizes)
-    out = []
+    out: list[Check] = []
     for display in spec.displays:
         for view, given in display.looks:
             names = display.view_looks(view)
@@ -176,8 +177,11 @@ def view_look_checks(spec: Spec, context: dict[str, str], density: str = "full")
                 graded = (
                     None if applied is None else evaluate(lambda v, s=src, a=applied: a(s.decode(v)), inputs.values)
                 )
-                expected = None if fn is None or graded is None else evaluate(fn, graded)
-                allowance = None if expected is None else _rounding_allowance(fn, graded, expected)
+                expected: np.ndarray | None = None
+                allowance: np.ndarray | None = None
+                if fn is not None and graded is not None:
+                    expected = evaluate(fn, graded)
+                    allowance = _rounding_allowance(fn, graded, expected)
                 rule = judging(None, display, None, view)
                 if rule["metric"] == RELATIVE:  # judged in ΔE ITP: see LOOK_VIEW_DELTA_E_ITP
                     rule.update(metric=ITP, tolerance=tolerances.LOOK_VIEW_DELTA_E_ITP, target=display)

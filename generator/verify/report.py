@@ -61,10 +61,10 @@ def groups(verification: Verification) -> dict:
     mixes tolerances, so the largest error beside the largest tolerance could read as within it
     while rows failed). A row run but not computed (a file OCIO could not load) makes the worst
     NaN: "-", not a number."""
-    out = defaultdict(
+    out: defaultdict[tuple[str, str, str], dict[str, float]] = defaultdict(
         lambda: {"checks": 0, PASS: 0, FAIL: 0, APPROX: 0, NOT_RUN: 0, "max": 0.0, "p99": 0.0, "tolerance": 0.0}
     )
-    share = {}
+    share: dict[tuple[str, str, str], float] = {}
     for o in verification.outcomes:
         key = (o.engine, o.check.kind, o.check.metric)
         entry = out[key]
