@@ -21,6 +21,7 @@ run: $(STAMP)
 test: $(STAMP)
 	$(BIN)/ruff check generator tests bench
 	$(BIN)/ruff format --check --quiet generator tests bench
+	$(BIN)/mypy generator
 	$(BIN)/pytest -n 2 -p no:warnings
 
 bench: $(STAMP)
