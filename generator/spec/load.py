@@ -202,12 +202,13 @@ def parse(text: str, source: str, base: Path | None, keep: tuple[str, ...] | Non
         _check_role_name(role, source)
     listed = _listed(raw, source)
     customs = tuple(
-        _custom_space(t, source, f"custom_space[{i}]", base) for i, t in enumerate(_tables(raw, "custom_space", source))
+        _custom_space(t, source, f"custom_space[{i}]", base or Path.cwd())
+        for i, t in enumerate(_tables(raw, "custom_space", source))
     )
     owners = list(labels.owners(listed, customs, "colour_spaces" in raw and raw["colour_spaces"] != ["*"]))
     labels.distinct(owners, source)
     all_names = [name for name, _, _ in owners]
-    displays, view_looks = _displays(raw, source, base)
+    displays, view_looks = _displays(raw, source, base or Path.cwd())
     if not displays:
         raise SpecError(
             source, "display", "no displays; allowed: one [[display]] or more, or none given for the library's"
