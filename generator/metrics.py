@@ -14,6 +14,7 @@ from generator.colorimetry.matrices import rgb_to_rgb
 
 
 def relative_error(actual, expected) -> np.ndarray:
+    """``|actual - expected|`` over ``|expected|``, the denominator at least RELATIVE_FLOOR."""
     expected = np.asarray(expected, dtype=np.float64)
     return np.abs(np.asarray(actual, dtype=np.float64) - expected) / np.maximum(
         np.abs(expected), tolerances.RELATIVE_FLOOR

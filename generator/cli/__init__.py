@@ -29,19 +29,25 @@ COMMANDS = {
 
 
 class LazyGroup(click.Group):
+    """The ocioforge group: each command's module imported only when that command runs."""
+
     def list_commands(self, ctx):
+        """The command names, in the order the help lists them."""
         return list(COMMANDS)
 
     def get_command(self, ctx, name):
+        """The command called ``name``, its module imported now; None for an unknown name."""
         if name not in COMMANDS:
             return None
         return importlib.import_module(f"generator.cli.{name.replace('-', '_')}").command
 
     def format_commands(self, ctx, formatter):
+        """The help's command list, from :data:`COMMANDS` (no module imported)."""
         with formatter.section("Commands"):
             formatter.write_dl([(name, text) for name, text in COMMANDS.items()], col_max=12)
 
     def resolve_command(self, ctx, args):
+        """The command ``args`` names; a usage error naming the allowed ones for an unknown name."""
         if args and not args[0].startswith("-") and args[0] not in COMMANDS:
             raise click.UsageError(f"no command {args[0]!r}; allowed: {', '.join(COMMANDS)}")
         return super().resolve_command(ctx, args)
@@ -89,6 +95,7 @@ class _Given:
     """A parameter type refusing an empty value (``-o ""`` had meant the default)."""
 
     def convert(self, value, param, ctx):
+        """``value``, refused when empty."""
         if value == "":
             self.fail("is empty; give a value", param, ctx)
         return super().convert(value, param, ctx)
@@ -102,6 +109,7 @@ class ConfigPath(GivenPath):
     """A built config: its config.ocio, or the build's folder holding one."""
 
     def convert(self, value, param, ctx):
+        """The config.ocio ``value`` names (itself, or the one in a build's folder)."""
         from generator.ocio.write import CONFIG_FILENAME
 
         if isinstance(value, str) and os.path.isdir(value):
@@ -131,6 +139,7 @@ class Name(_Given, click.types.StringParamType):
     anything but empty."""
 
     def convert(self, value, param, ctx):
+        """``value`` without surrounding blanks, refused when empty."""
         return super().convert(value.strip() if isinstance(value, str) else value, param, ctx)
 
 
@@ -141,6 +150,7 @@ class Command(click.Command):
     """A command refusing an option given twice (the last had silently won)."""
 
     def parse_args(self, ctx, args):
+        """Parse ``args``; a usage error when a single-valued option is given twice."""
         _, _, order = self.make_parser(ctx).parse_args(args=[*args])  # (list: the command module)
         single = [p for p in order if isinstance(p, click.Option) and not (p.is_flag or p.multiple or p.count)]
         repeated = next((p for i, p in enumerate(single) if p in single[:i]), None)

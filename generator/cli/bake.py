@@ -68,6 +68,7 @@ from generator.spec.schema import SpecError
 )
 @click.option("--force", is_flag=True, help="Replace existing files (through a link, the file it points to).")
 def command(source, display, method, view, size, fmt, shaper, spec_path, output, force):
+    """Bake one LUT file (the ``ocioforge bake`` command)."""
     started = time.perf_counter()
     if view is not None and method is not None:
         raise SpecError(

@@ -24,6 +24,7 @@ def counted(number: int, noun: str) -> str:
 @click.option("--ocio-version", type=NAME, help="Config version to write, e.g. 2.1 (overrides the spec).")
 @click.option("--force", is_flag=True, help="Replace the output folder if it holds a previous build.")
 def command(spec, output, ocio_version, force):
+    """Build a config from a spec (the ``ocioforge build`` command)."""
     started = time.perf_counter()
     parsed = load.load(spec)
     version = load.parse_version(ocio_version, "--ocio-version") if ocio_version else None

@@ -107,6 +107,7 @@ def _expression(space, version) -> str:
     "adaptation (default: the library's spaces, the default spec's displays).",
 )
 def command(name, spec_path):
+    """Describe a colour space or display (the ``ocioforge info`` command)."""
     spec = load(spec_path)
     display = named_display(spec, name)
     if display is not None:

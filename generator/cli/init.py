@@ -13,6 +13,7 @@ from generator.spec.load import default_text
 @click.argument("file", type=GivenPath())
 @click.option("--force", is_flag=True, help="Overwrite an existing FILE (through a link, the file it points to).")
 def command(file, force):
+    """Write the default spec (the ``ocioforge init`` command)."""
     check_file_output(file)
     write_atomic(file, default_text().encode("utf-8"), force)
     say(f"{printable(file)}: default spec written; edit it, then: ocioforge build {printable(file)} -o configs/NAME")

@@ -74,6 +74,7 @@ def _spec_rows(spec, what: str) -> tuple[tuple[str, ...], list[tuple[str, ...]]]
     "with their views, or (--views) each display's views.",
 )
 def command(displays, curves, views, spaces, spec_path):
+    """List colour spaces, displays, curves or views (the ``ocioforge list`` command)."""
     given = (("spaces", spaces), ("displays", displays), ("curves", curves), ("views", views))
     chosen = [name for name, flag in given if flag]
     if len(chosen) > 1:

@@ -94,6 +94,7 @@ def published_matrix(source, target):
 
 
 def render(matrix, fmt: str, label: str) -> str:
+    """``matrix`` as text: plain rows, json, a Nuke ColorMatrix node named ``label``, or an OCIO snippet."""
     matrix = settled(matrix)
     rows = [[float(v) for v in row] for row in matrix]
     if fmt == "json":
@@ -127,6 +128,7 @@ def render(matrix, fmt: str, label: str) -> str:
     "does (default: the library's spaces).",
 )
 def command(src, dst, cat, fmt, spec_path):
+    """Print the matrix between two colour spaces (the ``ocioforge matrix`` command)."""
     if cat is not None:
         chosen = next((c for c in CATS if c.lower() == cat.lower()), None)
         if chosen is None:

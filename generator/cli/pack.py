@@ -35,6 +35,7 @@ from generator.spec.schema import SpecError
 )
 @click.option("--jobs", type=click.IntRange(1, 256), default=None, help="Worker processes (default: one per core).")
 def command(spec_path, output, force, jobs):
+    """Bake a spec's LUT pack into a folder (the ``ocioforge pack`` command)."""
     started = time.perf_counter()
     if not output:
         raise SpecError("ocioforge pack", "-o", "give the folder to write")
@@ -62,6 +63,7 @@ class _Progress:
         self.total, self.bar, self.task = 0, None, None
 
     def advance(self, done: int, total: int) -> None:
+        """Show ``done`` of ``total`` files baked (a bar on a terminal only)."""
         self.total = total
         if self.bar is None and sys.stderr.isatty():
             columns = (TextColumn("baking"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn())
@@ -72,5 +74,6 @@ class _Progress:
             self.bar.update(self.task, completed=done)
 
     def stop(self) -> None:
+        """Remove the bar, if one is shown."""
         if self.bar is not None:
             self.bar.stop()

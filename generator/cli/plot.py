@@ -44,6 +44,7 @@ FORMATS = ("png", "svg", "pdf")
 )
 @click.option("--force", is_flag=True, help="Replace an existing image (through a link, the file it points to).")
 def command(config, output, space_names, mapping, display_name, force):
+    """Draw gamuts on the chromaticity diagram (the ``ocioforge plot`` command)."""
     if display_name is not None and not mapping:
         raise SpecError("ocioforge plot", "--display", "chooses the display --mapping draws; allowed: with --mapping")
     check_file_output(output)

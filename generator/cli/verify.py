@@ -67,6 +67,7 @@ ENGINES = "ocio,oiiotool,ocioconvert,blender"
 )
 @click.pass_context
 def command(ctx, config, engines, report_dir, force, quick, only, summary_only, context):
+    """Verify a config against the reference (the ``ocioforge verify`` command)."""
     if report_dir:
         _check_report_folder(Path(report_dir), force)
     names = tuple(dict.fromkeys(e.strip().lower() for e in engines.split(",") if e.strip()))  # each engine once

@@ -53,6 +53,7 @@ class AdxEncoding:
 
     @property
     def max_code(self) -> float:
+        """The largest integer code of the encoding's bit depth."""
         return float(2**self.bits - 1)
 
 

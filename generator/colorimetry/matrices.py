@@ -61,10 +61,12 @@ class Gamut:
 
     @property
     def rgb_to_xyz(self) -> np.ndarray:
+        """The normalised primary matrix: linear RGB to CIE XYZ (SMPTE RP 177)."""
         return normalised_primary_matrix(self.primaries, self.whitepoint)
 
     @property
     def xyz_to_rgb(self) -> np.ndarray:
+        """CIE XYZ to linear RGB: the inverse of :attr:`rgb_to_xyz`."""
         return np.linalg.inv(self.rgb_to_xyz)
 
 

@@ -83,9 +83,11 @@ class Linear:
     """The identity: the encoding is already linear."""
 
     def decode(self, code):
+        """Linear values of ``code``: a float64 copy."""
         return _array(code).copy()
 
     def encode(self, linear):
+        """Code values of ``linear``: a float64 copy."""
         return _array(linear).copy()
 
 
@@ -99,10 +101,12 @@ class Power:
     exponent: float
 
     def decode(self, code):
+        """Linear values of ``code``: ``|code| ** exponent``, sign kept."""
         c = _array(code)
         return np.sign(c) * np.abs(c) ** self.exponent
 
     def encode(self, linear):
+        """Code values of ``linear``: ``|linear| ** (1 / exponent)``, sign kept."""
         v = _array(linear)
         return np.sign(v) * _root(np.abs(v), 1.0 / self.exponent)
 
@@ -131,6 +135,7 @@ class PiecewisePower:
 
     @property
     def break_linear(self) -> float:
+        """The linear value where the linear toe meets the power segment."""
         g, o = self.gamma, self.offset
         return (o * g / ((g - 1.0) * (1.0 + o))) ** g
 
@@ -140,6 +145,7 @@ class PiecewisePower:
         return self.break_linear / self.break_code
 
     def decode(self, code):
+        """Linear values of ``code``: the toe below the break, the power segment above."""
         c = _array(code)
         if self.mirror:
             return np.sign(c) * PiecewisePower(self.gamma, self.offset).decode(np.abs(c))
@@ -147,6 +153,7 @@ class PiecewisePower:
         return np.where(c > self.break_code, power, c * self.slope)
 
     def encode(self, linear):
+        """Code values of ``linear``: the toe below the break, the power segment above."""
         v = _array(linear)
         if self.mirror:
             return np.sign(v) * PiecewisePower(self.gamma, self.offset).encode(np.abs(v))
@@ -199,6 +206,7 @@ class LogCamera:
 
     @property
     def break_code(self) -> float:
+        """The code value at the linear break."""
         return float(self._log(self.lin_side_break))
 
     @property
@@ -221,6 +229,7 @@ class LogCamera:
         return self.log_side_slope * self.lin_side_slope / (arg * math.log(self.base))
 
     def encode(self, linear):
+        """Code values of ``linear``: the log segment, the straight line below the break."""
         x = _array(linear)
         log = self._log(x)
         if self.lin_side_break is None:
@@ -229,6 +238,7 @@ class LogCamera:
         return np.where(x > self.lin_side_break, log, toe)
 
     def decode(self, code):
+        """Linear values of ``code``: the inverse of :meth:`encode`."""
         y = _array(code)
         lin = (
             self.base ** ((y - self.log_side_offset) / self.log_side_slope) - self.lin_side_offset
@@ -290,15 +300,18 @@ class Function:
 
     @property
     def domain(self) -> tuple[float, float]:
+        """The code-value domain a baked LUT covers: the rule's result, or the given pair."""
         rule = self.domain_rule
         lo, hi = rule(self.encode) if callable(rule) else rule
         return (float(lo), float(hi))
 
     def decode(self, code):
+        """Linear values of ``code`` through ``decode_fn``, float64, warnings silenced."""
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return _array(self.decode_fn(_array(code)))
 
     def encode(self, linear):
+        """Code values of ``linear`` through ``encode_fn``, float64, warnings silenced."""
         with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
             return _array(self.encode_fn(_array(linear)))
 
@@ -318,12 +331,15 @@ class Tabulated:
 
     @property
     def domain(self) -> tuple[float, float]:
+        """The first and last code values of the table."""
         return (self.code[0], self.code[-1])
 
     def decode(self, code):
+        """Linear values of ``code``, interpolated linearly in the table (clamped at its ends)."""
         return np.interp(_array(code), self.code, self.linear)
 
     def encode(self, linear):
+        """Code values of ``linear``, interpolated linearly in the table (clamped at its ends)."""
         return np.interp(_array(linear), self.linear, self.code)
 
 

@@ -25,6 +25,7 @@ DEFAULT_NAME = "ocioforge-studio"
 
 
 def cache_folder() -> Path:
+    """Where ocioforge caches files: ``$XDG_CACHE_HOME/ocioforge``, else ``~/.cache/ocioforge``."""
     base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
     return Path(base) / "ocioforge"
 

@@ -73,6 +73,7 @@ class FrameResult:
 
     @property
     def ok(self) -> bool:
+        """Whether the frame was converted and, when verified, passed."""
         return self.status != FAILED and (self.verdict is None or self.verdict.passed)
 
 

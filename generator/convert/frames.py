@@ -37,6 +37,7 @@ class Pattern:
     suffix: str
 
     def path(self, frame: int) -> str:
+        """The file name of frame number ``frame``."""
         return f"{self.prefix}{frame:0{self.padding}d}{self.suffix}"
 
     def regex(self) -> re.Pattern:

@@ -45,6 +45,7 @@ class Verdict:
     note: str = ""
 
     def describe(self) -> str:
+        """The verdict in one line: pixels compared, worst error against the tolerance."""
         if self.note and not self.compared:
             return self.note
         verdict = "within" if self.passed else "above"

@@ -72,10 +72,12 @@ class RGCParams:
 
     @property
     def limits(self) -> tuple[float, float, float]:
+        """The cyan, magenta and yellow limits."""
         return (self.limit_cyan, self.limit_magenta, self.limit_yellow)
 
     @property
     def thresholds(self) -> tuple[float, float, float]:
+        """The cyan, magenta and yellow thresholds."""
         return (self.threshold_cyan, self.threshold_magenta, self.threshold_yellow)
 
     def as_ocio_params(self) -> list[float]:

@@ -58,6 +58,7 @@ class AcesLattice:
 
     @property
     def size(self) -> int:
+        """Nodes along each axis of the cube."""
         return self.cube.shape[0]
 
     @property

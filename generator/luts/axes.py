@@ -126,6 +126,7 @@ class LogAxis:
 
     @property
     def high(self) -> float:
+        """The largest value the axis reaches (its last node)."""
         return float(self.position(1.0))
 
     def coordinate(self, x) -> np.ndarray:
@@ -140,6 +141,7 @@ class LogAxis:
         return np.where(np.isclose(v * (self.size - 1), self.one, rtol=0, atol=1e-12), 1.0, x)
 
     def nodes(self) -> np.ndarray:
+        """The value at each node, first to last."""
         return self.position(np.arange(self.size) / (self.size - 1))
 
 

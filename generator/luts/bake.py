@@ -290,6 +290,7 @@ def _smallest_size(spec: Spec, display: Display, source: ColourSpace, method: st
 
 
 def build_lattice(req: Request) -> lattice.Lattice:
+    """The lattice ``req`` asks for: an ACES view's or a gamut mapping's, in the layout its format takes."""
     if req.view is not None:
         if req.fmt == "clf" and req.shaper == "auto":
             return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size)
@@ -302,6 +303,7 @@ def build_lattice(req: Request) -> lattice.Lattice:
 
 
 def describe(req: Request) -> str:
+    """``req`` in one line: source, display, view or mapping, lattice size."""
     if req.view is not None:
         return f"{req.source.name} to {req.display.name}, view {req.view.name}, {req.size}^3 lattice"
     return f"{req.source.name} to {req.display.name}, gamut mapping {req.method}, {req.size}^3 lattice"
@@ -373,6 +375,7 @@ def lattice_files(req: Request, lat: lattice.Lattice) -> dict[str, bytes]:
 
 
 def identifier(req: Request) -> str:
+    """The identifier written in ``req``'s file (its source, display, method and size)."""
     return f"ocioforge:{slug(req.source.name)}_to_{slug(req.display.name)}_{slug(req.method)}_{req.size}"
 
 

@@ -52,10 +52,12 @@ class _Shaped:
     shaper: float
 
     def code(self, u):
+        """Code values of the table positions ``u`` (0 to 1) through the shaper."""
         lo, hi = self.domain
         return lo + (hi - lo) * np.asarray(u, dtype=np.float64) ** self.shaper
 
     def decode(self, u):
+        """Linear values of the table positions ``u``."""
         return self.curve.decode(self.code(u))
 
 

@@ -73,6 +73,7 @@ def _n(value) -> str:
 
 
 def resolve_cube(lattice: Lattice, title: str, notes=()) -> bytes:
+    """``lattice`` as a Resolve .cube (a 1D shaper table before the 3D table, when it has one)."""
     lo, hi = lattice.domain
     head = [_comments([title, *notes])]  # OCIO's Resolve reader takes no TITLE line
     body = []
@@ -91,6 +92,7 @@ def resolve_cube(lattice: Lattice, title: str, notes=()) -> bytes:
 
 
 def iridas_cube(lattice: Lattice, title: str, notes=()) -> bytes:
+    """``lattice`` as an Iridas .cube (3D table only; ValueError for a lattice with a shaper)."""
     if lattice.shaper is not None:
         raise ValueError("an Iridas .cube holds no shaper")
     lo, hi = lattice.domain

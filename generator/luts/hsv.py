@@ -75,6 +75,7 @@ class HsvLattice:
 
     @property
     def size(self) -> int:
+        """Nodes along each axis of the cube."""
         return self.cube.shape[0]
 
 

@@ -122,10 +122,12 @@ class PreShaper:
         return np.sign(x) * PiecewisePower(self.gamma, self.offset).encode(np.abs(x))
 
     def forward(self, x) -> np.ndarray:
+        """Shaper input of normalised display-linear ``x``: the curve, scaled to keep the peak at 1."""
         x = np.asarray(x, dtype=np.float64) * self.scale
         return self._curve(x) if self.scale == 1.0 else self._curve(x) / self.norm
 
     def inverse(self, w) -> np.ndarray:
+        """Normalised display-linear values of shaper inputs ``w``: the inverse of :meth:`forward`."""
         w = np.asarray(w, dtype=np.float64) * (self.norm if self.scale != 1.0 else 1.0)
         if not self.offset:
             return np.sign(w) * np.abs(w) ** self.gamma / self.scale

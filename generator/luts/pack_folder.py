@@ -28,6 +28,7 @@ NOTE = "The files ocioforge pack wrote in this folder; a rerun replaces them and
 
 
 def digest(data: bytes) -> str:
+    """The SHA-256 of ``data``, in hex."""
     return hashlib.sha256(data).hexdigest()
 
 

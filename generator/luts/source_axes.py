@@ -119,6 +119,7 @@ class SourceAxis:
 
     @property
     def size(self) -> int:
+        """Nodes along the axis."""
         return self.values.size
 
     def coordinate(self, x) -> np.ndarray:

@@ -13,6 +13,7 @@ import numpy as np
 
 
 def format_spi1d(values, domain: tuple[float, float] = (0.0, 1.0)) -> str:
+    """``values`` as a Sony Imageworks .spi1d over ``domain``."""
     values = np.asarray(values, dtype=np.float64)
     lines = ["Version 1", f"From {domain[0]:.9g} {domain[1]:.9g}", f"Length {values.size}", "Components 1", "{"]
     lines.extend(f"    {v:.9g}" for v in values)

@@ -72,6 +72,7 @@ HLG_DISPLAY_BUILTIN = "DISPLAY - CIE-XYZ-D65_to_REC.2100-HLG-1000nit"
 
 
 def has_builtin(style: str, version: tuple[int, int]) -> bool:
+    """Whether OCIO ``version`` has the builtin transform ``style``."""
     return version >= BUILTIN_MIN_VERSION[style]
 
 

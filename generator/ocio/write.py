@@ -26,6 +26,8 @@ CONFIG_FILENAME = "config.ocio"
 
 @dataclass(frozen=True)
 class BuildResult:
+    """What a build wrote: the config's path and how many colour spaces, displays and views it holds."""
+
     path: Path
     colour_spaces: int
     displays: int
@@ -70,6 +72,7 @@ def for_folder(spec: Spec, out_dir: Path, version: tuple[int, int] | None = None
 
 
 def write_files(spec: Spec, folder: Path) -> BuildResult:
+    """Write the config of ``spec`` and its LUT files into ``folder``; what was written."""
     emitted = emit(spec)
     _check_baked(spec, emitted.luts)
     (folder / CONFIG_FILENAME).write_text(emitted.config.serialize(), encoding="utf-8")

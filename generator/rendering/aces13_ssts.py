@@ -118,6 +118,7 @@ class HdrOdt:
 
     @property
     def spline(self) -> SegmentedSpline:
+        """The SSTS tone curve of the ODT's black, mid-grey and peak luminance."""
         return hdr_spline(self.y_min, self.y_mid, self.y_max)
 
 

@@ -69,6 +69,7 @@ def suggest(name: str, choices) -> str:
 
 
 def number(value, source: str, field: str) -> float:
+    """``value`` as a finite float; SpecError for a bool or anything else."""
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
         raise SpecError(source, field, f"expected a finite number, got {value!r}")
     return float(value)
@@ -92,6 +93,7 @@ def plausible_xy(xy, source: str, field: str, white: bool = False, origin: str =
 
 
 def primaries(value, source: str, field: str) -> tuple:
+    """Three xy chromaticities (red, green, blue) from ``[[x, y], [x, y], [x, y]]``."""
     if not isinstance(value, list) or len(value) != 3:
         raise SpecError(source, field, "expected three chromaticities [[xr, yr], [xg, yg], [xb, yb]]")
     return tuple(xy_pair(v, source, f"{field}[{i}]") for i, v in enumerate(value))
@@ -126,6 +128,7 @@ def check_triangle(primaries: tuple, white: tuple, source: str, field: str, whit
 
 
 def resolve_path(value, base: Path, source: str, field: str) -> Path:
+    """``value``, a readable file, as an absolute path (a relative one is from ``base``)."""
     if not isinstance(value, str) or not value:
         raise SpecError(source, field, f"expected a file path, got {value!r}")
 
@@ -180,6 +183,7 @@ def whitepoint(value, base: Path, source: str, field: str) -> tuple[float, float
 
 
 def spectral_primaries(value, base: Path, source: str, field: str) -> tuple:
+    """Three xy chromaticities from the red, green and blue spectra of a CSV file."""
     from generator.colorimetry import spectral  # lazy: it imports colour-science (seconds)
 
     path = resolve_path(value, base, source, field)

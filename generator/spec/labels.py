@@ -45,6 +45,7 @@ def folder_name(name: str, source: str) -> str:
 
 
 def check_keys(table: dict, allowed, source: str, prefix: str) -> None:
+    """SpecError unless ``table`` is a table whose keys are all among ``allowed``."""
     if not isinstance(table, dict):
         raise SpecError(
             source,
@@ -83,18 +84,21 @@ def string(value, source: str, field: str, text: bool = False) -> str:
 
 
 def boolean(value, source: str, field: str) -> bool:
+    """``value``, which must be true or false."""
     if not isinstance(value, bool):
         raise SpecError(source, field, f"expected true or false, got {value!r}")
     return value
 
 
 def strings(value, source: str, field: str) -> tuple[str, ...]:
+    """``value``, a list of strings, as a tuple."""
     if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
         raise SpecError(source, field, f"expected a list of strings, got {value!r}")
     return tuple(string(v, source, f"{field}[{i}]") for i, v in enumerate(value))
 
 
 def aliases(value, source: str, field: str) -> tuple[str, ...]:
+    """``value``, a list of aliases (labels without commas), as a tuple."""
     aliases = strings(value, source, field)
     for i, alias in enumerate(aliases):
         label(alias, source, f"{field}[{i}]")
@@ -142,6 +146,7 @@ def distinct(named, source: str) -> None:
 
 
 def table_name(table: dict, source: str, field: str) -> str:
+    """The ``name`` of a table: a label without commas."""
     name = label(table.get("name", ""), source, f"{field}.name")
     no_comma(name, source, f"{field}.name")
     return name

@@ -63,6 +63,7 @@ def _rule_record(rule: FileRule) -> dict:
 
 
 def dumps(spec: Spec) -> str:
+    """``spec`` as the JSON a build writes beside its config."""
     data = {f.name: getattr(spec, f.name) for f in dataclasses.fields(spec) if f.metadata.get("resolved", True)}
     data["colour_spaces"] = [_record(s) for s in spec.colour_spaces]
     data["displays"] = [_record(d) for d in spec.displays]
@@ -98,6 +99,7 @@ class _Reader:
         self.source = source
 
     def fail(self, field: str, message: str) -> SpecError:
+        """A SpecError on the stored spec's ``field``."""
         return SpecError(self.source, field, f"{message}; allowed: the value a build writes (build again)")
 
     def typed(self, value, kind, field: str):
@@ -127,14 +129,17 @@ class _Reader:
         return tuple(read(v, f"{field}[{i}]") for i, v in enumerate(values))
 
     def strings(self, value, field: str) -> tuple[str, ...]:
+        """A list of strings, as a tuple."""
         return self.items(value, field, lambda v, f: self.typed(v, str, f))
 
     def xy(self, value, field: str) -> tuple[float, float]:
+        """A chromaticity ``[x, y]``."""
         if not isinstance(value, list) or len(value) != 2:
             raise self.fail(field, f"expected a chromaticity [x, y], got {value!r}")
         return tuple(self.typed(v, float, f"{field}[{i}]") for i, v in enumerate(value))
 
     def gamut(self, data, field: str) -> Gamut:
+        """A gamut record."""
         keys = ("name", "primaries", "whitepoint", "adapting_white", "citation", "adaptation")
         d = self.table(data, keys, field)
         primaries = self.items(d["primaries"], f"{field}.primaries", self.xy, 3)
@@ -159,9 +164,11 @@ class _Reader:
         return gamut
 
     def white(self, value, field: str) -> tuple[float, float]:
+        """A white point: a plausible chromaticity."""
         return fields.plausible_xy(self.xy(value, field), self.source, field, white=True)
 
     def curve(self, data, field: str):
+        """A transfer function record: a library curve by name, or a family's parameters."""
         family = self.typed(self.typed(data, dict, field).get("family"), str, f"{field}.family")
         if family == "Function":
             name = self.table(data, ("family", "name"), field)["name"]
@@ -191,6 +198,7 @@ class _Reader:
         return self.typed(value, {"bool": bool, "str": str}.get(annotation, float), field)
 
     def space(self, data, field: str) -> ColourSpace:
+        """A colour space record."""
         d = self.table(data, [f.name for f in dataclasses.fields(ColourSpace)], field)
         gamut = None if d["gamut"] is None else self.gamut(d["gamut"], f"{field}.gamut")
         special = self.typed(d["special"], str, f"{field}.special")
@@ -211,6 +219,7 @@ class _Reader:
         )
 
     def display(self, data, field: str) -> Display:
+        """A display record."""
         keys = [f.name for f in dataclasses.fields(Display) if f.name != "looks" or "looks" in data]
         d = self.table(data, keys, field)
         views = self.items(d["views"], f"{field}.views", lambda v, f: self.typed(v, str, f), 1)
@@ -242,11 +251,13 @@ class _Reader:
         )
 
     def pair(self, value, field: str) -> tuple[str, str]:
+        """A role record ``[role, colour space]``."""
         if not isinstance(value, list) or len(value) != 2:
             raise self.fail(field, f"expected [role, colour space], got {value!r}")
         return tuple(self.typed(v, str, f"{field}[{i}]") for i, v in enumerate(value))
 
     def rule(self, value, field: str) -> FileRule:
+        """A file rule record."""
         keys = [
             "name",
             "colour_space",
@@ -269,6 +280,7 @@ class _Reader:
             raise self.fail("rgc", str(error)) from None
 
     def version(self, value) -> tuple[int, int]:
+        """The OCIO version ``[major, minor]``, one the installed OpenColorIO writes."""
         if not isinstance(value, list) or len(value) != 2:
             raise self.fail("ocio_version", f"expected [major, minor], got {value!r}")
         version = tuple(self.typed(v, int, f"ocio_version[{i}]") for i, v in enumerate(value))
@@ -277,6 +289,7 @@ class _Reader:
         return version
 
     def spec(self, data) -> Spec:
+        """The whole stored spec."""
         keys = [f.name for f in dataclasses.fields(Spec) if f.metadata.get("resolved", True) and f.name != "rgc"]
         # Builds before the spec held RGC parameters recorded none: they used ACES 1.3's.
         data = dict(data) if isinstance(data, dict) else data

@@ -44,6 +44,7 @@ class ColourSpace:
 
     @property
     def all_names(self) -> tuple[str, ...]:
+        """The name, then the aliases."""
         return (self.name, *self.aliases)
 
 
@@ -73,6 +74,7 @@ class Display:
 
     @property
     def is_hdr(self) -> bool:
+        """Whether the display's encoding is an HDR one (anything but sdr-video)."""
         return self.encoding != "sdr-video"
 
     @property
@@ -208,4 +210,5 @@ class Spec:
 
     @property
     def reference(self) -> ColourSpace:
+        """The scene-reference colour space."""
         return self.space(self.scene_reference)

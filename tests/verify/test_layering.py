@@ -1,4 +1,4 @@
-"""generator/verify's modules import one another one way, and each public name says what it is."""
+"""generator/verify's modules import one another one way (docstrings: tests/test_docstrings.py)."""
 
 from __future__ import annotations
 
@@ -33,17 +33,3 @@ def test_verify_modules_import_each_other_one_way():
         tuple(TopologicalSorter(graph).static_order())
     except CycleError as error:
         pytest.fail(f"import cycle in generator/verify: {' -> '.join(error.args[1])}")
-
-
-def _public(tree: ast.AST):
-    for node in ast.iter_child_nodes(tree):
-        if isinstance(node, ast.FunctionDef | ast.ClassDef) and not node.name.startswith("_"):
-            yield node
-            if isinstance(node, ast.ClassDef):
-                yield from _public(node)
-
-
-@pytest.mark.parametrize("name", sorted(MODULES))
-def test_every_public_function_and_class_has_a_docstring(name):
-    missing = [node.name for node in _public(MODULES[name]) if ast.get_docstring(node) is None]
-    assert not missing, f"generator/verify/{name}.py: no docstring on {', '.join(missing)}"
