@@ -358,7 +358,11 @@ def test_list_piped_gives_one_unwrapped_line_a_row(capsys):
 
 def test_an_unknown_command_lists_the_commands(capsys):
     code, _, err = run(capsys, "bogus")
-    assert code == 2 and "allowed: build, init, matrix, bake, pack, verify, plot, info, list, convert" in err and err.count("\n") == 1
+    assert (
+        code == 2
+        and "allowed: build, init, matrix, bake, pack, verify, plot, info, list, convert" in err
+        and err.count("\n") == 1
+    )
 
 
 def _interrupted(*args, **kwargs):
