@@ -3,85 +3,51 @@
 A soft chroma compression (``threshold`` < 1, by default 0.8) or its limit
 ``threshold = 1``: a hue-preserving clip that leaves the display cube alone.
 
-Method (this project's design, documented here):
+Method (docs/views.md gives the measurements behind it):
 
-1. Display RGB -> XYZ -> *display-adapted* Oklab. Oklab (B. Ottosson, "A
-   perceptual color space for image processing", 2020) is defined for D65;
-   its neutral axis ``a = b = 0`` is not exactly any display's white (the
-   colour-science D65, x = 0.3127, y = 0.3290, lands at a chroma of 1.2e-4).
-   XYZ is therefore first adapted with CAT02 (CIE 159:2004) from the display
-   white to the XYZ that Oklab maps to ``(1, 0, 0)``, so the display's greys
-   ``k (1, 1, 1)`` are exactly ``(k^(1/3), 0, 0)`` and its white has ``L = 1``.
+1. Display RGB -> XYZ -> *display-adapted* Oklab (B. Ottosson, "A perceptual
+   color space for image processing", 2020). Oklab is defined for D65, so XYZ
+   is first adapted with CAT02 (CIE 159:2004) from the display white to
+   Oklab's: the display's greys ``k (1, 1, 1)`` are exactly
+   ``(k^(1/3), 0, 0)`` and its white has ``L = 1``.
 2. Each colour moves along a straight line of its hue plane (lightness ``L``
    against chroma ``C``) through a *focus* ``(L_f, -D)`` behind the neutral
    axis: ``D`` is ``focus_distance`` and ``L_f`` the lightness of the
-   display's cusp of that hue (its most chromatic colour, on the cube edges
-   where one channel is 1 and another 0), interpolated linearly in hue in a
-   table of :data:`CUSP_SAMPLES` points per edge (within 2.5e-6 of the cusp,
-   measured at 8 times the density, except within 0.5 degree of the blue
-   primary, where Oklab hue folds back by 0.16 degree in BT.709 and the
-   cusp is ambiguous). The line meets the axis at its grey
-   ``L_a = (L D + C L_f) / (D + C)`` and climbs ``m = (L_a - L_f) / D`` per
-   unit of chroma; lines do not cross where ``C >= 0``. The line through the
-   cusp is level, so lines above it leave the gamut through its upper faces
-   and lines below through its lower ones: output chroma then never falls
-   along a constant-``L`` chroma ramp. A line whose grey is beyond black or
-   white holds no displayable colour of its hue: the colour goes to black
-   (``L_a < 0``) or white (``L_a > 1``), continuously, as the gamut chroma
-   along the line falls to 0 when ``L_a`` reaches 0 or 1.
+   display's cusp of that hue (its most chromatic colour, on the cube edges),
+   interpolated in hue in a table of :data:`CUSP_SAMPLES` points per edge.
+   The line meets the axis at its grey ``L_a = (L D + C L_f) / (D + C)`` and
+   climbs ``m = (L_a - L_f) / D`` per unit of chroma; lines do not cross
+   where ``C >= 0``, and the line through the cusp is level, so output chroma
+   never falls along a constant-``L`` chroma ramp. A line whose grey is
+   beyond black or white holds no displayable colour of its hue: the colour
+   goes to black (``L_a < 0``) or white (``L_a > 1``), continuously.
 3. Along the line the display boundary chroma ``C_d`` is found by bisection
-   (:data:`BISECTION_STEPS` fixed steps, "display RGB within [0, 1]"). The
-   bracket is anchored at the colour: from its chroma to
-   :func:`chroma_bracket` if it is in the cube, else from the grey to its
-   chroma. Where a line leaves and re-enters the cube (near blue primaries,
-   where the hue plane is not star-shaped from the grey) a colour of the
-   cube is thus never judged outside, nor one outside judged inside. The
-   source boundary ``C_s`` is found on the same line when
-   ``source_to_display`` is given (anchored alike: a colour not strictly
-   inside the source gamut has ``C >= C_s``), and the limit is
-   ``max(C_s / C_d, 1)``; otherwise the limit is a fixed ratio. Where Oklab
-   hue folds (BT.709 and BT.2020 near blue, :func:`hue_folds`) the line of a
-   colour at or beyond the blue edge runs just outside the cube through the
-   red = 0 face (up to 7e-4 of blue) before meeting the colour; counted
-   strictly, such a colour would land far inside and the mapping would jump.
-   For colours outside the cube of such a display, of hues within
-   :data:`FOLD_HUE_MARGIN` of the fold (:func:`fold_hues`), a point whose negative
-   channels are within :data:`FOLD_SLACK` of its largest is counted inside,
-   and the final clip removes the excursion (hue and line kept within 0.0032
-   there on BT.709, 0.0075 radian on BT.2020, measured). The slack does not
-   remove every turn of such a line: beyond the cube near blue (a channel
-   negative, blue above 1), a colour whose line grazes the cube can still jump
-   between the line's two crossings, by up to 0.14 of blue for a change of 1e-5
-   (measured on BT.709; the P3 displays, whose hue does not fold, have steep
-   but continuous bends there instead).
+   (:data:`BISECTION_STEPS` fixed steps, "display RGB within [0, 1]"),
+   anchored at the colour: from its chroma to :func:`chroma_bracket` if it is
+   in the cube, else from the grey to its chroma, so a colour is never judged
+   on the wrong side where a line leaves and re-enters the cube. The source
+   boundary ``C_s`` is found alike when ``source_to_display`` is given, and
+   the limit is ``max(C_s / C_d, 1)``; otherwise it is a fixed ratio. Where
+   Oklab hue folds (:func:`hue_folds`), a colour outside the cube within
+   :data:`FOLD_HUE_MARGIN` of the fold (:func:`fold_hues`) counts a point whose
+   negative channels are within :data:`FOLD_SLACK` of its largest as inside,
+   and the final clip removes the excursion.
 4. With ``x = C / C_d``, threshold ``t`` and limit ``l``, the new ratio is
    ``x`` for ``x <= t``, ``t + (1 - t)(1 - (1 - u)^k)`` with
    ``u = (x - t) / (l - t)`` and ``k = (l - t) / (1 - t)`` for ``t < x < l``,
-   and 1 beyond: slope 1 at ``t``, so a colour just past the threshold
-   moves by the square of its excess (C1), and the source boundary lands on
-   the display boundary. For ``t = 1`` the new ratio is ``min(x, 1)``: the
-   cube is untouched and every colour outside goes to the boundary point of
-   its line (a clip toward a focus, as in B. Ottosson, "sRGB gamut
-   clipping", 2021).
-5. The output is the point of the same line at the new chroma ``C'``. Kept
-   exactly (to float64 rounding; outside a folding display's cube, to the clip
-   of step 3): the Oklab hue, and the line, i.e. the
-   focus, the colour and its image are collinear. Lightness becomes
-   ``L_a + m C'``: it moves toward ``L_f`` by ``m (C - C')`` (colours
-   brighter than their hue's cusp darken, darker ones lighten, those at the
-   cusp lightness keep it). Back to RGB, a clip removes rounding excursions
-   (of order 1e-12). Colours not compressed (``x <= t`` and ``L_a`` in
-   [0, 1]) are returned unchanged, bit for bit.
+   and 1 beyond: slope 1 at ``t`` (C1), and the source boundary lands on the
+   display boundary. For ``t = 1`` the new ratio is ``min(x, 1)``: a clip
+   toward a focus (B. Ottosson, "sRGB gamut clipping", 2021) that leaves the
+   cube untouched.
+5. The output is the point of the same line at the new chroma ``C'``, so the
+   Oklab hue and the line are kept (to float64 rounding; outside a folding
+   display's cube, to the clip of step 3). Lightness becomes ``L_a + m C'``,
+   moving toward ``L_f``. Back to RGB, a clip removes rounding excursions.
+   Colours not compressed (``x <= t`` and ``L_a`` in [0, 1]) are returned
+   unchanged, bit for bit.
 
-What ``t = 1`` buys: the config bakes this mapping into a 33³ LUT
-whose nodes lie on the display's code values, only 8 intervals across the
-cube (:mod:`generator.luts.axes`). Any ``t < 1`` moves the cube's surface
-nodes inward, lifting zero channels, where code values are steepest, and
-cells reaching them interpolate the bend: measured in-gamut errors of 42 to
-45 ten-bit codes at ``t = 0.8`` (sRGB, Display P3, DCI-P3), still 2.5 to 22
-at ``t = 0.999``, and 35 at 129³. With ``t = 1`` the cube maps to itself and
-the LUT reproduces it to 0.008 codes. ``t = 0.8`` leaves 62 % of the cube's
-volume in linear RGB untouched (35 % of the volume in 2.4-power code values).
+``t = 1`` is what a 33³ lattice can hold: the cube maps to itself. Any
+``t < 1`` bends the mapping inside the cube, which the lattice cannot follow.
 
 Non-finite input follows :mod:`generator.gamut.display`: NaN -> 0, -Inf -> 0,
 +Inf -> the largest value (so the colour is brighter than white: white). The
@@ -101,28 +67,21 @@ from generator.gamut.display import DisplayGamut, matrix_tuple, sanitize
 #: Bisection steps for a boundary chroma; the bracket shrinks to 2^-40 of its width.
 BISECTION_STEPS = 40
 
-#: Upper end of the chroma bracket; every library display and source has C < 0.5 (AP1
-#: green: 0.49). A wider gamut's is twice its largest chroma (:func:`chroma_bracket`).
+#: Upper end of the chroma bracket: every library display and source has C < 0.5 (AP1 green:
+#: 0.49). A wider gamut's is twice its largest chroma (:func:`chroma_bracket`).
 CHROMA_BRACKET = 1.0
 
-#: Samples per edge of the cube's hue hexagon (red, yellow, green, cyan, blue, magenta)
-#: in the cusp table.
+#: Samples per edge of the cube's hue hexagon in the cusp table: within 2.5e-6 of the cusp
+#: (but near a folding blue primary, where the cusp is ambiguous).
 CUSP_SAMPLES = 1024
 
-#: Negative channel excursion, relative to a point's largest channel, still counted as inside
-#: the display cube when the boundary is sought for a colour outside it (display with a hue
-#: fold only; the upper face stays strict). Oklab's hue folds
-#: back by 0.16 degree near the BT.709 blue primary, so the line of a colour at or just
-#: beyond the blue edge leaves the cube through the red = 0 face by up to 7e-4 of blue
-#: (measured) before reaching it: counted strictly, the colour would land far inside
-#: (a jump of 0.18 in blue at (0, 0, 0.89) perturbed by 1e-6). The final clip removes
-#: what the slack lets through.
+#: Negative channel, relative to the largest, counted inside the cube when the boundary of a
+#: colour outside it is sought near a hue fold: above the 7e-4 of blue by which the line of a
+#: colour beyond BT.709's blue edge leaves the cube before reaching it.
 FOLD_SLACK = 1e-3
 
-#: Hue (radians) beyond the fold's own span within which :data:`FOLD_SLACK` applies. Elsewhere
-#: the slack only let the boundary point leave the cube, and the final clip then moved it:
-#: applied at every hue, it put an orange on BT.709 10.7 ten-bit codes off in blue, and hue
-#: 0.41 degree off on BT.2020 (a cyan).
+#: Hue (radians) beyond the fold's own span within which :data:`FOLD_SLACK` applies: applied
+#: at every hue, the slack let boundary points leave the cube, and the clip moved them visibly.
 FOLD_HUE_MARGIN = 0.02
 
 #: RGB excursion still counted as inside a gamut during the bisection.

@@ -18,42 +18,29 @@ from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice, coor
 from generator.luts.source_axes import SOURCE_SHAPER_SIZES, shaper_domain, source_axis, source_domain
 from generator.spec.schema import ColourSpace, Display, Spec
 
-#: Colours per probe set in the least-squares fit of source-layout node values: fewer
-#: overfit the sample (measured at 33³, clip, on the pairs of OCIOBAKELUT_P99, the smallest
-#: ratio of ociobakelut's p99 to ours over pairs and sets: 1.96 with 16384 colours and three
-#: reweighted passes, 2.24 with 32768 and one, 2.24 with 65536 and three, which bakes a 65³
-#: .cube three times slower: 1.6 s against 0.56 s in-process, both with FIT_RTOL 1e-6).
+#: Colours per probe set in the least-squares fit of source-layout node values: fewer overfit
+#: the sample, more bake slower for no gain (docs/luts.md gives the figures).
 FIT_COUNT = 32768
 
-#: Weight of in-gamut colours in the fit, against 1 for the other sets: an equal weight
-#: trades in-gamut accuracy for out-of-gamut accuracy (measured at 33³, clip, Linear
-#: Rec.2020 to Gamma 2.6 P3, in-gamut / out-of-gamut p99 in ten-bit codes: 56.6 / 65.0 with
-#: weight 1, 38.2 / 80.2 with 3, 34.3 / 84.3 with 4).
+#: Weight of in-gamut colours in the fit, against 1 for the other sets: an equal weight trades
+#: in-gamut accuracy for out-of-gamut accuracy (in-gamut p99 56.6 codes at 1, 34.3 at 4).
 FIT_IN_GAMUT_WEIGHT = 4.0
 
-#: Least-squares passes after the first, each weighting a colour by its error in the
-#: previous one (:func:`reweighted_fit`; measured at 33³, clip, with FIT_COUNT colours, the
-#: smallest ratio as there: 2.10 without, 2.24 with one, 2.24 with two).
+#: Least-squares passes after the first, each weighting a colour by its error in the previous one
+#: (:func:`reweighted_fit`): one gains what two do.
 FIT_REWEIGHTS = 1
 
-#: Reweighting, with ``u`` a colour's error over its set's 99th percentile: weight
-#: ``FLOOR + u ** 2`` up to ``u = CUTOFF``, ``TAIL`` beyond. The 99th percentile is set by
-#: the colours near it, so they gain weight; those well above it, where a clipping plane
-#: crosses a cell and no node values bring them under it, lose theirs (measured at 33³,
-#: clip, the bench's pairs' p99 move by up to a tenth over floors 0.3 to 1, cut-offs 1.3 to
-#: 2 and tails 0.05 to 0.5; a weight growing as ``u ** 2`` without a cut-off, as for an
-#: L4 norm, takes ACEScg to sRGB's in-gamut p99 from 29 to 58).
+#: Reweighting, with ``u`` a colour's error over its set's 99th percentile: weight ``FLOOR + u ** 2``
+#: up to ``u = CUTOFF``, ``TAIL`` beyond, so colours near the percentile gain weight and those
+#: no node values can bring under it lose theirs.
 FIT_REWEIGHT_FLOOR, FIT_REWEIGHT_CUTOFF, FIT_REWEIGHT_TAIL = 0.5, 1.5, 0.3
 
 #: Pull of each node toward its sampled value, in units of one colour's weight: nodes
 #: few colours reach stay where they are.
 FIT_REGULARISATION = 1.0
 
-#: Relative residual at which the conjugate-gradient solve stops (per channel): the node
-#: values settle long before the residual does (measured at 33³, clip, on the pairs of
-#: OCIOBAKELUT_P99, the smallest ratio of ociobakelut's p99 to ours: 2.24 at 1e-6 after 22
-#: products, 2.245 at 1e-3 after 7, 2.25 at 3e-3, where PQ's dark set falls from 2.46 to
-#: 2.28; a 65³ bake takes 0.53 s at 1e-6, 0.36 s at 1e-3).
+#: Relative residual at which the conjugate-gradient solve stops (per channel): the node values
+#: settle long before the residual does, so 1e-3 fits as well as 1e-6 in a third of the products.
 FIT_RTOL = 1e-3
 
 #: Conjugate-gradient steps at most.
