@@ -90,9 +90,12 @@ def test_a_staged_folder_is_marked_while_filled_and_unmarked_in_place(tmp_path):
 @LINUX
 def test_the_next_build_removes_what_a_build_killed_outright_left(tmp_path, capsys):
     (tmp_path / "tiny.toml").write_text(TINY, encoding="utf-8")
+    # A baked ACES 2.0 view and a Scale file keep the killed build in its staging folder for seconds.
+    slow = TINY.replace('views = ["Colorimetric", "Raw"]', 'views = ["ACES 2.0", "Scale", "Raw"]')
+    (tmp_path / "slow.toml").write_text(slow, encoding="utf-8")
     out = tmp_path / "configs"
     build = subprocess.Popen(
-        [sys.executable, "-m", "generator", "build", str(tmp_path / "tiny.toml"), "-o", str(out / "show")],
+        [sys.executable, "-m", "generator", "build", str(tmp_path / "slow.toml"), "-o", str(out / "show")],
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
     )
