@@ -5,10 +5,9 @@ from __future__ import annotations
 import re
 import shutil
 
-import pytest
-
 from generator.ocio.host_versions import HOSTS, Host, not_loading
 from tests.cli.test_cli import run
+from tests.conftest import host_missing
 
 TINY = (
     'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
@@ -38,7 +37,7 @@ def test_debians_entry_is_the_ocio_its_tools_load():
 
     program = shutil.which("ocioconvert", path="/usr/bin")
     if program is None:
-        pytest.skip("Debian's ocioconvert is not installed")
+        host_missing("Debian's ocioconvert is not installed")
     debian = next(h for h in HOSTS if h.name.startswith("Debian 12"))
     assert linked_ocio(program).startswith(".".join(map(str, debian.ocio)) + ".")
 

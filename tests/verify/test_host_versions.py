@@ -9,7 +9,7 @@ import shutil
 import pytest
 
 from generator.verify.hosts import OcioconvertEngine, linked_ocio, ocio_in, oiiotool_engines
-from tests.conftest import require_program
+from tests.conftest import host_missing, require_program
 
 VERSION = re.compile(r"OCIO \d+\.\d+\.\d+")
 
@@ -36,7 +36,7 @@ def test_debians_oiiotool_is_an_engine_of_its_own_beside_pips():
     system = shutil.which("oiiotool", path="/usr/bin")
     engines = oiiotool_engines()
     if system is None or len(engines) == 1:
-        pytest.skip("one oiiotool only: a second engine needs pip's and Debian's")
+        host_missing("one oiiotool only: a second engine needs pip's and Debian's")
     assert [e.name for e in engines] == ["oiiotool", "oiiotool system"]
     assert os.path.realpath(engines[1].executable()) == os.path.realpath(system)
     assert all(VERSION.search(e.version()) for e in engines)
@@ -67,13 +67,11 @@ def test_a_host_that_cannot_load_the_config_says_which_ocio_refused_it(build_con
     from tests.conftest import NEWEST
 
     require_program("ocioconvert")
-    if NEWEST < (2, 5):
-        pytest.skip("PyOpenColorIO writes no 2.5 config")
+    assert NEWEST >= (2, 5), "the pinned PyOpenColorIO writes 2.5 configs"
     only = "ACEScct -> ACES2065-1"
     result = verify(build_config((2, 5)), ("oiiotool", "ocioconvert"), density="quick", only=only, strict=True)
     runs = {e.name: e for e in result.engines}
-    if not runs["ocioconvert"].skipped:
-        pytest.skip(f"this ocioconvert loads a 2.5 config ({runs['ocioconvert'].version})")
+    assert runs["ocioconvert"].skipped, f"Debian's ocioconvert loaded a 2.5 config ({runs['ocioconvert'].version})"
     assert runs["ocioconvert"].version == OcioconvertEngine().version() and VERSION.search(runs["ocioconvert"].version)
     lines = summary(result).splitlines()
     assert f"  engine ocioconvert: not run ({runs['ocioconvert'].version}): " in "\n".join(lines)
