@@ -12,9 +12,11 @@ from __future__ import annotations
 
 import time
 
+import generator  # noqa: F401  (numpy's settings first)
+
+# isort: split
 import numpy as np
 
-import generator  # noqa: F401  (numpy's settings first)
 from generator import reference
 from generator.colorimetry.curves import CURVES
 from generator.colorimetry.gamuts import gamuts

@@ -17,9 +17,10 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
-
 import generator  # noqa: F401  (numpy's and OpenBLAS's fixed kernels: before numpy loads)
+
+# isort: split
+import numpy as np
 
 FRAMES, WIDTH, HEIGHT = 6, 3840, 2160
 SRC, DST = "ARRI LogC4", "ACEScg"

@@ -43,9 +43,11 @@ import sys
 import tempfile
 from pathlib import Path
 
+import generator  # noqa: F401  (before numpy: the numbers ocioforge itself gets, see generator/backends.py)
+
+# isort: split
 import numpy as np
 
-import generator  # noqa: F401  (before numpy: the numbers ocioforge itself gets, see generator/backends.py)
 from generator import reference
 
 PAIRS = (
