@@ -87,21 +87,34 @@ class _System:
 
 
 def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
-    """The fit's rows of ``colours`` (set name to (input values, expected codes)): the
-    unknowns are the nodes neither :func:`_kept` nor unreached by every colour."""
-    code = np.concatenate([code for code, _ in colours.values()]).T
-    nodes, weights = tetrahedra(coordinates(lat, np.ascontiguousarray(code)) * (lat.size - 1), lat.size)
+    """The fit's rows of ``colours`` (set name to (input values, expected codes)) in ``lat``'s
+    source layout: :func:`_node_system` with the nodes :func:`_kept` keeps."""
+    index = {
+        name: coordinates(lat, np.ascontiguousarray(code.T)).T * (lat.size - 1) for name, (code, _) in colours.items()
+    }
+    return _node_system(
+        lat.cube, {name: (index[name], expected) for name, (_, expected) in colours.items()}, _kept(lat.size, zero)
+    )
+
+
+def _node_system(cube: np.ndarray, colours: dict, kept: np.ndarray) -> _System:
+    """The fit's rows of ``colours`` (set name to (fractional node indices (m, 3), expected
+    values)) on ``cube`` (n, n, n, 3): the unknowns are the nodes neither ``kept`` (flat mask)
+    nor unreached by every colour."""
+    size = cube.shape[0]
+    index = np.concatenate([index for index, _ in colours.values()]).T
+    nodes, weights = tetrahedra(np.ascontiguousarray(index), size)
     expected = np.ascontiguousarray(np.concatenate([np.nan_to_num(codes) for _, codes in colours.values()]).T)
-    ends = np.cumsum([0, *(len(code) for code, _ in colours.values())])
+    ends = np.cumsum([0, *(len(index) for index, _ in colours.values())])
     sets = {name: slice(a, b) for name, a, b in zip(colours, ends[:-1], ends[1:])}
     # A free node no colour reaches has the equation FIT_REGULARISATION * (x - start) = 0 alone:
     # it keeps its sampled value, and the unknowns are the free nodes the colours reach.
-    free = ~_kept(lat.size, zero)
-    unknown = free & (np.bincount(nodes.ravel(), minlength=lat.size**3) > 0)
+    free = ~kept
+    unknown = free & (np.bincount(nodes.ravel(), minlength=size**3) > 0)
     reached = unknown[nodes]
     columns = np.where(reached, (np.cumsum(unknown) - 1)[nodes], 0)
     touching = np.flatnonzero(~reached.all(axis=0))
-    start = np.ascontiguousarray(lat.cube.reshape(-1, 3).T)
+    start = np.ascontiguousarray(cube.reshape(-1, 3).T)
     rest = FIT_REGULARISATION**2 * (start**2 @ (free & ~unknown).astype(np.float64))
     return _System(
         nodes,
@@ -123,23 +136,30 @@ def reweighted_fit(lat: Lattice, colours: dict, zero: int | None, rtol: float | 
     weight scaled by its error in the probes' metric (ten-bit codes, ΔE ITP for HDR)
     relative to its set's 99th percentile (see :data:`FIT_REWEIGHT_FLOOR`); ``rtol`` as
     :func:`fit`'s."""
+    return reweighted_nodes(
+        lat.cube, _system(lat, colours, zero), lambda a, e: probes.errors(lat.display, a, e)[0], rtol
+    )
+
+
+def reweighted_nodes(cube: np.ndarray, system: _System, error, rtol: float | None = None) -> np.ndarray:
+    """:func:`reweighted_fit` of ``cube``'s node values on a built ``system``, ``error``
+    giving per-colour errors (m,) of actual against expected values (m, 3)."""
     base = {
-        name: np.full(len(code), FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
-        for name, (code, _) in colours.items()
+        name: np.full(rows.stop - rows.start, FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
+        for name, rows in system.sets.items()
     }
-    system = _system(lat, colours, zero)
-    cube = fit(lat, colours, zero, base, system, rtol)
+    fitted = _solved(cube, base, system, rtol)
     for _ in range(FIT_REWEIGHTS):
-        actual = solve.interpolate(system.nodes, system.weights, np.ascontiguousarray(cube.reshape(-1, 3).T))
+        actual = solve.interpolate(system.nodes, system.weights, np.ascontiguousarray(fitted.reshape(-1, 3).T))
         weights = {}
         for name, rows in system.sets.items():
-            error = probes.errors(lat.display, actual[:, rows].T, system.expected[:, rows].T)[0]
+            error_ = error(actual[:, rows].T, system.expected[:, rows].T)
             # beyond the cut-off a colour's weight is the tail's whatever u is; capped, u**2 cannot overflow
-            u = np.minimum(error / max(_percentile_99(error) if error.size else 1.0, 1e-12), 2 * FIT_REWEIGHT_CUTOFF)
+            u = np.minimum(error_ / max(_percentile_99(error_) if error_.size else 1.0, 1e-12), 2 * FIT_REWEIGHT_CUTOFF)
             scale = np.where(u > FIT_REWEIGHT_CUTOFF, FIT_REWEIGHT_TAIL, FIT_REWEIGHT_FLOOR + u**2)
             weights[name] = base[name] * scale
-        cube = fit(lat, colours, zero, weights, system, rtol)
-    return cube
+        fitted = _solved(cube, weights, system, rtol)
+    return fitted
 
 
 def _percentile_99(values: np.ndarray) -> float:
@@ -180,11 +200,15 @@ def fit(
     diagonal's nodes (greys) and, with ``zero``, the nodes of a zero channel are
     kept at their sampled values; the others solve the normal equations, to a residual of
     ``rtol`` (:data:`FIT_RTOL`) relative to the right-hand side."""
-    system = system or _system(lat, colours, zero)
+    return _solved(lat.cube, weights, system or _system(lat, colours, zero), rtol)
+
+
+def _solved(cube: np.ndarray, weights: dict, system: _System, rtol: float | None = None) -> np.ndarray:
+    """:func:`fit` from ``cube``'s sampled values on a built ``system``."""
     scale = np.sqrt(np.concatenate([weights[name] for name in system.sets]))
     free, columns, unknown = system.free * scale, system.columns, system.unknown
     count = int(np.count_nonzero(unknown))
-    start = np.ascontiguousarray(lat.cube.reshape(-1, 3).T)
+    start = np.ascontiguousarray(cube.reshape(-1, 3).T)
     residual = system.expected * scale
     touching = system.touching
     residual[:, touching] -= solve.interpolate(system.nodes[:, touching], system.kept * scale[touching], start)
@@ -199,7 +223,7 @@ def fit(
     values = start.copy()
     rtol = FIT_RTOL if rtol is None else rtol  # read when called: FIT_RTOL is the one default
     values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, rtol * whole, FIT_MAXITER)
-    return numbers.rounded(values.T.reshape(lat.cube.shape), CUBE_DECIMALS)
+    return numbers.rounded(values.T.reshape(cube.shape), CUBE_DECIMALS)
 
 
 def _shaper_table(spec: Spec, source: ColourSpace, display: Display, size: int, shaper, domain) -> np.ndarray | None:
