@@ -47,16 +47,3 @@ def test_axis_inverts(default_spec):
     assert np.all(np.diff(axis.index(np.sort(x))) > 0)
 
 
-def test_a_dim_displays_log_axis_still_reaches_half_float_light(tmp_path):
-    """An absolute display of 1 cd/m² (a hundredth of display-referred 1.0): its clip and scale
-    lattice reaches 65504 display-referred units, not 65504 times its own peak (655)."""
-    from generator.spec import load
-
-    spec = load.parse(
-        "[[display]]\nname = 'Dim'\ngamut = 'Rec.709'\neotf = 'gamma 2.2'\npeak_luminance = 1\n"
-        "absolute_luminance = true",
-        "show.toml",
-        tmp_path,
-    )
-    axis = lattice.display_axis(spec.displays[0], 17, "scale")
-    assert axis.high * spec.displays[0].clip_high == pytest.approx(lattice.LOG_DISPLAY_HIGH, rel=1e-9)

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from generator import reference, tolerances
-from generator.luts import bake, formats, lattice, probes, source_axes
+from generator.luts import bake, lattice, probes
 from generator.luts.axes import LogAxis
 
 
@@ -116,29 +116,6 @@ def test_resolve_cube_halves_ociobakelut_p99_on_every_set(default_spec, tmp_path
         assert figures[name].p99 * tolerances.LUT_CUBE_P99_RATIO <= theirs, name
 
 
-def test_resolve_cube_keeps_greys_and_zero_channels(default_spec, tmp_path):
-    """The fit leaves the diagonal and the nodes of a zero channel at their sampled values."""
-    req = _request(default_spec, "resolve_cube", size=33, source="ACEScg")
-    apply = probes.ocio_apply(_transform(_write(tmp_path, req)))
-    rng = np.random.default_rng(3)
-    grey = np.repeat(10.0 ** rng.uniform(-4, 1.2, (2000, 1)), 3, axis=1)
-    expected = reference.mapped_view(
-        default_spec, req.display, "clip", reference.to_reference(default_spec, req.source, grey)
-    )
-    assert np.abs(apply(grey) - expected).max() * 1023 <= tolerances.LUT_CUBE_GREY_CODES
-    lat = bake.build_lattice(req)
-    zero = source_axes.source_axis(default_spec, req.source, req.display, 33).zero
-    linear = req.source.curve.decode(lattice.preimages(lat.size, lat.shaper, lat.domain))
-    matrix = reference.scene_to_display_matrix(default_spec, req.display) @ reference.space_matrix(
-        default_spec, req.source
-    )
-    sampled = lattice.node_values(req.display, "clip", linear, matrix, None)
-    np.testing.assert_array_equal(lat.cube[zero], sampled[zero])
-    np.testing.assert_array_equal(lat.cube[:, :, zero], sampled[:, :, zero])
-    diagonal = np.arange(lat.size)
-    np.testing.assert_array_equal(lat.cube[diagonal, diagonal, diagonal], sampled[diagonal, diagonal, diagonal])
-
-
 @pytest.mark.parametrize("fmt", ("resolve_cube", "clf", "spi3d"))
 def test_same_input_same_bytes(default_spec, fmt):
     req = _request(default_spec, fmt, method="scale", source="ARRI LogC4", display="Rec.2100-PQ - Display")
@@ -191,23 +168,6 @@ def test_an_spi3d_and_its_shaper_say_how_they_chain_and_load_in_ocio_2_1(default
         np.testing.assert_allclose([float(v) for v in done.stdout.split()[-3:]], expected, atol=1e-5)
 
 
-def test_writers_refuse_what_a_format_cannot_hold(default_spec):
-    lat = bake.build_lattice(_request(default_spec, "resolve_cube"))
-    with pytest.raises(ValueError):
-        formats.iridas_cube(lat, "t")
-
-
-def test_a_cube_from_a_display_encoded_source_is_exact_on_what_its_domain_holds(default_spec, tmp_path):
-    """sRGB-encoded values through a .cube into the sRGB display (an identity in gamut): the
-    fit leaves out colours beyond the file's domain (codes above 1, which the file clamps),
-    which had pulled near-white nodes hundreds of codes off."""
-    req = _request(default_spec, "resolve_cube", method="scale", size=33, source="sRGB Encoded Rec.709 (sRGB)")
-    figures = probes.measure(
-        default_spec, req.source, req.display, "scale", probes.ocio_apply(_transform(_write(tmp_path, req)))
-    )
-    assert max(figures[name].maximum for name in ("in_gamut", "dark")) <= tolerances.LUT_CLF_IN_GAMUT_CODES
-
-
 @pytest.mark.parametrize("method", ("desaturate", "perceptual"))
 def test_an_extended_range_clf_follows_the_displays_toe(default_spec, tmp_path, method):
     """An extended-range display (Display P3 HDR: sRGB's curve, code 1 at 100 cd/m², peak 1000)
@@ -232,17 +192,6 @@ def test_every_size_from_the_smallest_bakes(default_spec, method):
     for size in range(smallest, 12):
         lat = bake.build_lattice(_request(default_spec, "clf", method=method, size=size, source="ACEScg"))
         assert lat.size == size
-
-
-def test_a_named_shaper_spaces_the_nodes_over_its_own_codes(default_spec):
-    """--shaper ACEScct from ACEScg: the domain is the light ACEScct codes 0 to 1 hold (as
-    ociobakelut's shaper space), so the table is ACEScct's code; the source's [-1, 16] range
-    had put nine tenths of the nodes below 0 and mid grey 24 codes off."""
-    acescct = default_spec.space("ACEScct")
-    lat = bake.build_lattice(_request(default_spec, "resolve_cube", size=33, source="ACEScg", shaper="ACEScct"))
-    np.testing.assert_allclose(lat.domain, acescct.curve.decode(np.array([0.0, 1.0])), rtol=1e-12)
-    linear = np.linspace(*lat.domain, lat.shaper.size)
-    np.testing.assert_allclose(lat.shaper, acescct.curve.encode(linear), rtol=0, atol=10.0**-lattice.SHAPER_DECIMALS)
 
 
 def test_a_log_without_a_break_decodes_exactly_in_a_clf(tmp_path):

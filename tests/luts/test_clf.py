@@ -6,10 +6,8 @@ import numpy as np
 import PyOpenColorIO as ocio
 import pytest
 
-from generator.colorimetry import transfer
 from generator.luts import clf, formats, hsv
 from generator.luts.lattice import display_lattice
-from generator.ocio.curves import decode_transforms
 
 
 def _probes() -> np.ndarray:
@@ -87,28 +85,3 @@ def test_the_hsv_files_run_as_their_transforms(tmp_path):
     (tmp_path / "f.clf").write_bytes(hsv.shared_clf())
     read = _apply(ocio.FileTransform("f.clf", interpolation=ocio.INTERP_DEFAULT), tmp_path)
     assert np.array_equal(read, _apply(ocio.GroupTransform(hsv.shared_steps())), equal_nan=True)
-
-
-@pytest.mark.parametrize(
-    "curve",
-    [
-        transfer.Power(2.4),
-        transfer.PiecewisePower(2.4, 0.055),
-        transfer.PiecewisePower(2.4, 0.055, mirror=True),
-        transfer.LogCamera(
-            base=2.0,
-            log_side_slope=1 / 17.52,
-            log_side_offset=9.72 / 17.52,
-            lin_side_slope=1.0,
-            lin_side_offset=0.0,
-            lin_side_break=0.0078125,
-        ),
-    ],
-    ids=repr,
-)
-def test_a_clf_decodes_a_curve_with_the_configs_transforms(curve):
-    """One translation: a CLF's decoding of an analytic curve is the config's, parameter for parameter
-    (a mirrored sRGB-like curve was monCurveFwd in a CLF, mirrored in the config)."""
-    config = decode_transforms("x", curve, (2, 1), {})
-    written = formats.decode_steps("x", curve)
-    assert [str(t) for t in written] == [str(t) for t in config]

@@ -1,0 +1,50 @@
+"""Fast, deterministic text of LUT tables (generator/luts/numbers.py)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from generator.luts import numbers
+
+RNG_SEED = 7
+
+
+def _reference_text(value: float, decimals: int) -> str:
+    q = round(value * 10**decimals)
+    text = f"{abs(q) / 10**decimals:.{decimals}f}".rstrip("0").rstrip(".")
+    return ("-" if q < 0 else "") + text
+
+
+def test_table_text_drops_trailing_zeros_and_spans_blocks():
+    rng = np.random.default_rng(RNG_SEED)
+    rows = numbers.TABLE_BLOCK + 300
+    values = rng.uniform(-9.99, 9.99, (rows, 3))
+    values[::7] = np.round(values[::7], 2)
+    values[::11, 0] = 0.0
+    values[::13, 1] = -1e-9  # rounds to zero: written without a sign
+    values[::17, 2] = 1.0
+    for decimals in (5, 6, 7):
+        lines = numbers.table(values, decimals).decode("ascii").splitlines()
+        assert len(lines) == rows
+        rounded = numbers.rounded(values, decimals)
+        assert lines == [" ".join(_reference_text(v, decimals) for v in row) for row in rounded]
+
+
+@pytest.mark.parametrize("value", [10.0, -10.0, 9.9999996, np.nan, np.inf])
+def test_a_value_outside_ten_once_rounded_or_not_finite_is_refused(value):
+    with pytest.raises(ValueError, match="within"):
+        numbers.table(np.array([[0.5, value, 0.0]]), 6)
+
+
+def test_a_table_of_one_column_is_one_value_a_line():
+    assert numbers.table(np.array([[0.0], [-0.0000004], [1.5], [-2.25]]), 6) == b"0\n0\n1.5\n-2.25\n"
+
+
+def test_a_number_is_text_that_reads_back_to_the_same_float():
+    rng = np.random.default_rng(RNG_SEED)
+    values = np.concatenate([rng.normal(0.0, 1.0, 500), 10.0 ** rng.uniform(-300, 300, 500), [0.1, -0.0078125, 1.0]])
+    for value in values:
+        assert float(numbers.number(value)) == value
+    assert numbers.number(0.0) == numbers.number(-0.0) == "0"
+    assert numbers.number(-0.0078125) == "-0.0078125"
