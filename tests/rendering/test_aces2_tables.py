@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 from generator.rendering.aces2 import tables
-from generator.rendering.aces2_compress import hue_dependent
 from generator.rendering.aces2_params import CUBE_CORNERS
 from generator.rendering.aces2_presets import PRESETS
 from generator.rendering.aces2_tables import CUSP_M_SCALE, PADDED_SIZE, REACH_TOLERANCE, reach_corners
@@ -67,18 +66,6 @@ def test_reach_table_brackets_the_reach_boundary(view):
     assert np.all(lowest(m) < 0.0)
     assert np.all(lowest(m - REACH_TOLERANCE) >= 0.0)
     assert t.reach_m[0] == t.reach_m[-2] and t.reach_m[-1] == t.reach_m[1]
-
-
-@pytest.mark.parametrize("view", VIEWS)
-def test_hue_dependent_values_are_continuous(view):
-    """Interpolating by each interval's share, the cusp and the upper hull's gamma meet at every
-    entry from both sides (the CTL's unnormalised gamma weight would jump there)."""
-    t = preset_tables(view)
-    entries = t.hues[2:-1]
-    below = np.stack(hue_dependent(np.nextafter(entries, -np.inf), t), axis=-1)
-    at = np.stack(hue_dependent(entries, t), axis=-1)
-    np.testing.assert_allclose(below, at, rtol=1e-12)
-    np.testing.assert_allclose(at, np.stack([t.cusp_j, t.cusp_m, t.gamma_top_inv], axis=-1)[2:-1], rtol=1e-12)
 
 
 def test_gamma_is_within_the_search():
