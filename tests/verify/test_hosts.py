@@ -1,15 +1,24 @@
-"""Which OpenColorIO each host engine runs, said beside its result; Debian's oiiotool beside pip's."""
+"""The command-line hosts (oiiotool, Debian's ocioconvert): which OpenColorIO each runs, said
+beside its result; Debian's oiiotool beside pip's; a host whose OCIO cannot read the config
+reported not run, found at once; names oiiotool would read as wildcards."""
 
 from __future__ import annotations
 
 import os
 import re
 import shutil
+import subprocess
+import sys
 
 import pytest
 
-from generator.verify.hosts import OcioconvertEngine, linked_ocio, ocio_in, oiiotool_engines
-from tests.conftest import host_missing, require_program
+from generator.verify.checks import FROM_REFERENCE, LUT
+from generator.verify.hosts import TOO_NEW, OcioconvertEngine, linked_ocio, ocio_in, oiiotool_engines
+from generator.verify.judge import APPROX, NOT_RUN, PASS
+from generator.verify.report import summary
+from generator.verify.run import verify
+from tests.conftest import NEWEST, host_missing, require_program
+from tests.verify.conftest import verified_on
 
 VERSION = re.compile(r"OCIO \d+\.\d+\.\d+")
 
@@ -46,25 +55,35 @@ def test_debians_oiiotool_is_an_engine_of_its_own_beside_pips():
 def test_verify_says_which_ocio_each_host_runs(build_config, tmp_path):
     """Each engine's line names the OpenColorIO it runs: oiiotool's from its help, ocioconvert's
     and Blender's from the library they load (they print none)."""
-    from tests.cli.test_verify_cli import run
-
     require_program("ocioconvert")
     require_program("oiiotool")
     engines = ("--engines", "oiiotool,ocioconvert")
-    result = run("verify", build_config((2, 1)), *engines, "--quick", "--only", "ACEScct -> ACES2065-1", "--summary")
-    lines = [line for line in result.output.splitlines() if re.match(r"  engine [^:]+: ", line)]
+    only = ("--only", "ACEScct -> ACES2065-1")
+    result = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "generator",
+            "verify",
+            str(build_config((2, 1))),
+            *engines,
+            "--quick",
+            *only,
+            "--summary",
+        ],
+        capture_output=True,
+        text=True,
+    )
+    lines = [line for line in result.stdout.splitlines() if re.match(r"  engine [^:]+: ", line)]
     names = [e.name for e in oiiotool_engines()] + ["ocioconvert"]
-    assert [line.split(":")[0].removeprefix("  engine ") for line in lines] == names, result.output
+    assert [line.split(":")[0].removeprefix("  engine ") for line in lines] == names, result.stdout + result.stderr
     assert all(VERSION.search(line) for line in lines), lines
-    assert result.exit_code == 0, result.output
+    assert result.returncode == 0, result.stdout + result.stderr
 
 
 def test_a_host_that_cannot_load_the_config_says_which_ocio_refused_it(build_config):
     """Debian's ocioconvert and oiiotool (OCIO 2.1) cannot load a 2.5 config: each is reported not
     run with the OCIO it runs; Debian's oiiotool, run beside pip's (which loads it), fails nothing."""
-    from generator.verify.report import summary
-    from generator.verify.run import verify
-    from tests.conftest import NEWEST
 
     require_program("ocioconvert")
     assert NEWEST >= (2, 5), "the pinned PyOpenColorIO writes 2.5 configs"
@@ -84,8 +103,48 @@ def test_a_host_that_cannot_load_the_config_says_which_ocio_refused_it(build_con
         assert alone.passed and [e.name for e in alone.engines if e.skipped] == ["oiiotool system"]
 
 
-def test_blender_says_which_ocio_it_runs():
-    from generator.verify.blender import BlenderEngine
+def test_a_config_newer_than_a_hosts_ocio_is_not_run_there(build_config):
+    """Debian's ocioconvert (OCIO 2.1) cannot read a 2.3 config: verify reports it not run, with
+    OCIO's reason, rather than failing every check; the LUT files it reads without the config
+    do not change that."""
 
-    require_program("blender")
-    assert re.search(r"^Blender \d.*, OCIO (\d+\.\d+\.\d+|unknown)", BlenderEngine().version())
+    require_program("ocioconvert")
+    config = build_config((2, 3))
+    # "cale": the Scale display-view spaces (which load the config) and the Scale view LUTs (which do not)
+    result = verify(config, ("ocioconvert",), density="quick", kinds=(FROM_REFERENCE, LUT), only="cale")
+    outcomes = [o for o in result.outcomes if o.engine.startswith("ocioconvert")]
+    assert {o.check.kind for o in outcomes} == {FROM_REFERENCE, LUT}
+    assert outcomes and not [o for o in outcomes if o.verdict not in (PASS, APPROX, NOT_RUN)]
+    run = next(e for e in result.engines if e.name == "ocioconvert")
+    if run.skipped:  # a host whose OCIO predates 2.3
+        assert TOO_NEW in run.skipped and all(o.verdict == NOT_RUN for o in outcomes)
+        rows = [line for line in summary(result).splitlines() if line.strip().startswith("ocioconvert ")]
+        assert rows and all(line.endswith("not run") for line in rows)  # no figures of 0 for what never ran
+
+
+def test_oiiotool_reads_names_holding_its_wildcards(tmp_path):
+    """'#' is oiiotool's frame wildcard: a colour space whose name reads as a path with one
+    ('Cam #1/A') made every check of the batch fail ("No filenames found matching pattern")."""
+    result = verified_on(
+        tmp_path,
+        "oiiotool",
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = \'Cam #1/A\'\ngamut = "P3-D65"\ntransfer = { family = "gamma", exponent = 2.2 }\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n',
+        density="quick",
+        only="Cam #1/A",
+    )
+    assert result.passed, [(o.check.title, o.engine, o.note) for o in result.failures]
+
+
+def test_a_host_that_cannot_read_the_config_is_found_at_once_and_proves_nothing(build_config):
+    """OCIO 2.1's ocioconvert cannot read a 2.6 config: one process finds that out (it had
+    started one per check, minutes of them), and a run in which no engine compared anything
+    does not pass."""
+
+    require_program("ocioconvert")
+    result = verify(build_config((2, 6)), ("ocioconvert",), density="quick")
+    assert [run.name for run in result.engines if run.skipped] == ["ocioconvert"]
+    assert {o.verdict for o in result.outcomes} == {NOT_RUN}
+    assert not result.compared and not result.passed
+    assert "nothing compared" in summary(result).splitlines()[-1]

@@ -1,90 +1,17 @@
-"""verify catches a broken config and names the broken item (PyOpenColorIO engines, small probe sets).
-
-Each corruption is judged against the same config unbroken: exactly the broken
-items must fail in addition to whatever fails there already."""
+"""verify's checks of a config's LUT files on their own: every baked file is checked, under its
+own name, and one broken anywhere a probe could miss (a node, a shaper entry, an output table's
+entry, the shared HSV table) is named; the unbroken config is the baseline (PyOpenColorIO engines,
+small probe sets)."""
 
 from __future__ import annotations
 
 import numpy as np
-import PyOpenColorIO as ocio
 import pytest
 
-from generator.spec.schema import SpecError
+from generator.verify import checks
 from generator.verify.checks import FROM_REFERENCE, LUT, TO_REFERENCE, VIEW
-from generator.verify.judge import FAIL
 from generator.verify.run import verify
-from tests.verify.conftest import dim_output_table
-
-KINDS = (TO_REFERENCE, FROM_REFERENCE, VIEW, LUT)
-
-
-def _failing_items(config_path, kinds) -> set[str]:
-    result = verify(config_path, ("ocio",), density="quick", kinds=kinds)
-    return {o.check.item for o in result.outcomes if o.verdict == FAIL}
-
-
-def _rewrite(config_path, change) -> None:
-    cfg = ocio.Config.CreateFromFile(str(config_path))
-    change(cfg)
-    config_path.write_text(cfg.serialize(), encoding="utf-8")
-
-
-_BEFORE: dict[tuple, set[str]] = {}
-
-
-def _newly_failing(config_path, corrupt, kinds=KINDS) -> set[str]:
-    """The items that fail once ``corrupt(config_path)`` has run, and did not before
-    (the unbroken copy is verified once per set of kinds)."""
-    if kinds not in _BEFORE:
-        _BEFORE[kinds] = _failing_items(config_path, kinds)
-    corrupt(config_path)
-    return _failing_items(config_path, kinds) - _BEFORE[kinds]
-
-
-def _edit_space(name: str, edit):
-    def change(cfg):
-        space = cfg.getColorSpace(name)
-        transform = space.getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE)
-        space.setTransform(edit(transform), ocio.COLORSPACE_DIR_TO_REFERENCE)
-        cfg.addColorSpace(space)
-
-    return change
-
-
-def test_the_default_config_passes(config_copy):
-    result = verify(config_copy, ("ocio",), density="quick")
-    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
-
-
-def test_a_matrix_entry_off_by_a_thousandth_is_named(config_copy):
-    def nudge(matrix_transform):
-        values = list(matrix_transform.getMatrix())
-        values[0] += 1e-3
-        matrix_transform.setMatrix(values)
-        return matrix_transform
-
-    corrupt = lambda path: _rewrite(path, _edit_space("Linear P3-D65", nudge))  # noqa: E731
-    assert _newly_failing(config_copy, corrupt, (TO_REFERENCE, FROM_REFERENCE)) == {"Linear P3-D65"}
-
-
-def test_a_wrong_exponent_is_named(config_copy):
-    def steeper(group):
-        exponent = group[0]
-        exponent.setValue([2.25, 2.25, 2.25, 1.0])
-        return group
-
-    corrupt = lambda path: _rewrite(path, _edit_space("Gamma 2.2 Encoded Rec.709", steeper))  # noqa: E731
-    assert _newly_failing(config_copy, corrupt, (TO_REFERENCE, FROM_REFERENCE)) == {"Gamma 2.2 Encoded Rec.709"}
-
-
-def test_a_mislabelled_transfer_function_is_named(config_copy):
-    def mislabel(cfg):
-        srgb, video = cfg.getColorSpace("sRGB Encoded Rec.709 (sRGB)"), cfg.getColorSpace("Camera Rec.709")
-        srgb.setTransform(video.getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE), ocio.COLORSPACE_DIR_TO_REFERENCE)
-        cfg.addColorSpace(srgb)
-
-    corrupt = lambda path: _rewrite(path, mislabel)  # noqa: E731
-    assert _newly_failing(config_copy, corrupt, (TO_REFERENCE, FROM_REFERENCE)) == {"sRGB Encoded Rec.709 (sRGB)"}
+from tests.verify.conftest import failing_items, newly_failing, nudge_nodes
 
 
 def test_swapped_lut_files_are_named(config_copy):
@@ -97,7 +24,7 @@ def test_swapped_lut_files_are_named(config_copy):
         first.write_bytes(b)
         second.write_bytes(a)
 
-    failing = _newly_failing(config_copy, swap, (TO_REFERENCE, FROM_REFERENCE, LUT))
+    failing = newly_failing(config_copy, swap, (TO_REFERENCE, FROM_REFERENCE, LUT))
     assert {"luts/canon_log_2_to_linear.spi1d", "luts/canon_log_3_to_linear.spi1d"} <= failing
     assert {"CanonLog2 CinemaGamut D55", "CanonLog3 CinemaGamut D55"} <= failing
 
@@ -116,23 +43,13 @@ def test_swapped_desaturate_files_are_named(config_copy):
         first.write_bytes(b)
         second.write_bytes(a)
 
-    failing = _newly_failing(config_copy, swap, (VIEW, LUT))
+    failing = newly_failing(config_copy, swap, (VIEW, LUT))
     assert {
         "luts/view_srgb_display_desaturate_hsv19.clf",
         "luts/view_gamma_2_6_dci_p3_display_desaturate_hsv19.clf",
         "sRGB - Display / Desaturate",
         "Gamma 2.6 DCI-P3 - Display / Desaturate",
     } <= failing
-
-
-def _nudge_nodes(clf, nodes, amount: float) -> None:
-    """Add ``amount`` to every value at lattice ``nodes`` ((r, g, b) indices) of a 33³ CLF."""
-    lines = clf.read_text(encoding="utf-8").splitlines(keepends=True)
-    start = next(i for i, line in enumerate(lines) if 'dim="33 33 33 3"' in line) + 1
-    for r, g, b in nodes:
-        row = start + (r * 33 + g) * 33 + b  # blue fastest
-        lines[row] = " ".join(f"{float(v) + amount:.5f}" for v in lines[row].split()) + "\n"
-    clf.write_text("".join(lines), encoding="utf-8")
 
 
 @pytest.mark.parametrize("node", [(16, 16, 19), (30, 12, 12)])
@@ -143,9 +60,9 @@ def test_a_perceptual_node_nudged_by_a_tenth_of_a_code_is_named(config_copy, nod
     0.875)) and far outside it (red 3 times the peak), where no other probe reaches."""
 
     def nudge(path):
-        _nudge_nodes(path.parent / "luts" / "view_srgb_display_perceptual_33.clf", [node], 0.1 / 1023)
+        nudge_nodes(path.parent / "luts" / "view_srgb_display_perceptual_33.clf", [node], 0.1 / 1023)
 
-    failing = _newly_failing(config_copy, nudge, (LUT,))
+    failing = newly_failing(config_copy, nudge, (LUT,))
     assert failing == {"luts/view_srgb_display_perceptual_33.clf"}
 
 
@@ -165,7 +82,7 @@ def test_a_perceptual_shaper_entry_nudged_is_named(config_copy, entry):
     def nudge(path):
         _raise_entry(path.parent / "luts" / "view_srgb_display_perceptual_33.clf", entry, 1e-3, 6)
 
-    assert "luts/view_srgb_display_perceptual_33.clf" in _newly_failing(config_copy, nudge, (LUT,))
+    assert "luts/view_srgb_display_perceptual_33.clf" in newly_failing(config_copy, nudge, (LUT,))
 
 
 @pytest.mark.parametrize("half, column", [(0x0CBA, 0), (0x0B5B, 2), (0x0010, 1)])
@@ -183,7 +100,7 @@ def test_an_entry_of_the_shared_hsv_table_is_named(config_copy, half, column):
         lines[start + half] = " ".join(f"{v:.9g}" for v in values) + "\n"
         clf.write_text("".join(lines), encoding="utf-8")
 
-    assert _newly_failing(config_copy, nudge, (LUT,)) == {"luts/hsv_coordinates.clf"}
+    assert newly_failing(config_copy, nudge, (LUT,)) == {"luts/hsv_coordinates.clf"}
 
 
 @pytest.mark.parametrize("entry", [37, 1500, 2700])
@@ -195,36 +112,7 @@ def test_an_entry_of_a_scale_files_output_table_nudged_is_named(config_copy, ent
     def nudge(path):
         _raise_entry(path.parent / "luts" / "view_srgb_display_scale_17.clf", entry, 0.1 / 1023, 9)
 
-    assert "luts/view_srgb_display_scale_17.clf" in _newly_failing(config_copy, nudge, (LUT,))
-
-
-def test_a_scale_file_dimmed_by_half_a_code_is_named(config_copy):
-    """The exact lattices (Scale, Desaturate) are held to the in-gamut target on every set, as
-    Perceptual is to its lattice: the sRGB Scale file's output table scaled by 0.9995 (half a
-    ten-bit code at white) fails its view and file; under the issue's every-set bound of a
-    code, a file scaled by 0.9991 had passed."""
-
-    def dim(path):
-        dim_output_table(path.parent / "luts" / "view_srgb_display_scale_17.clf", 0.9995)
-
-    failing = _newly_failing(config_copy, dim, (VIEW, LUT))
-    assert failing == {"luts/view_srgb_display_scale_17.clf", "sRGB - Display / Scale"}
-
-
-def test_a_perceptual_file_off_by_codes_fails_its_view(config_copy):
-    """Node values a few codes off inside the cube fail the sRGB Perceptual view too, no other
-    display's."""
-
-    def nudge(path):
-        _nudge_nodes(
-            path.parent / "luts" / "view_srgb_display_perceptual_33.clf",
-            [(r, g, b) for r in (14, 16, 18) for g in (14, 16, 18) for b in (14, 16, 18)],
-            5 / 1023,
-        )
-
-    failing = _newly_failing(config_copy, nudge, (VIEW, LUT))
-    assert failing >= {"luts/view_srgb_display_perceptual_33.clf", "sRGB - Display / Perceptual"}
-    assert not {item for item in failing if "Perceptual" in item and "sRGB" not in item}
+    assert "luts/view_srgb_display_scale_17.clf" in newly_failing(config_copy, nudge, (LUT,))
 
 
 def test_a_perceptual_lattice_assembled_wrongly_is_named(tmp_path, monkeypatch):
@@ -249,57 +137,60 @@ def test_a_perceptual_lattice_assembled_wrongly_is_named(tmp_path, monkeypatch):
     )
     folder = tmp_path / "swapped"
     build(for_folder(load.parse(text, "swapped.toml", tmp_path), folder), folder)
-    assert "luts/view_srgb_display_perceptual_33.clf" in _failing_items(folder / "config.ocio", (LUT,))
+    assert "luts/view_srgb_display_perceptual_33.clf" in failing_items(folder / "config.ocio", (LUT,))
 
 
-@pytest.mark.parametrize("view", ["Scale", "Desaturate"])
-def test_a_view_read_back_wrongly_is_named(config_copy, view):
-    """A "<view> - <display>" space read into the scene (a display-referred image brought into
-    a comp) is checked against the display's decoding: its view transform's inverse matrix
-    off by a tenth in one entry fails that space alone."""
-    change = _scale_view_matrix(f"{view} (sRGB - Display)", ocio.VIEWTRANSFORM_DIR_TO_REFERENCE, 0, 1.1)
-    failing = _newly_failing(config_copy, lambda path: _rewrite(path, change), (TO_REFERENCE,))
-    assert failing == {f"{view} - sRGB - Display"}
+def test_every_baked_lut_file_is_checked(build_config, spec):
+    on_disk = {f"luts/{p.name}" for p in (build_config((2, 1)).parent / "luts").iterdir()}
+    assert {c.lut for c in checks.build_checks(spec, "quick", kinds=(LUT,))} == on_disk
 
 
-def _scale_view_matrix(name: str, direction, entry: int, factor: float):
-    """A change multiplying one entry of view transform ``name``'s matrix in ``direction``."""
+def test_custom_curves_are_checked_under_their_files_names_and_as_code_values(tmp_path):
+    """A custom tabulated curve is baked under its space's or display's name, and verify checks
+    that file on its own (a display's was only read through its views);
+    a gamma-encoded space labelled scene-linear is still judged as code values, with the
+    float32 limit of its steep power (it failed by colour relative error before)."""
+    from generator.ocio.write import build, for_folder
+    from generator.spec import load
 
-    def change(cfg):
-        vt = cfg.getViewTransform(name)
-        matrix = vt.getTransform(direction)
-        values = list(matrix.getMatrix())
-        values[entry] *= factor
-        matrix.setMatrix(values)
-        vt.setTransform(matrix, direction)
-        cfg.addViewTransform(vt)
-
-    return change
-
-
-def test_a_missing_lut_file_is_named_not_a_traceback(config_copy):
-    missing = config_copy.parent / "luts" / "mi_log_to_linear.spi1d"
-    assert _newly_failing(config_copy, lambda path: missing.unlink(), (TO_REFERENCE, LUT)) == {
-        "Mi-Log Rec.2020",
-        "luts/mi_log_to_linear.spi1d",
-    }
-    result = verify(config_copy, ("ocio",), density="quick", kinds=(TO_REFERENCE, LUT), only="Mi-Log")
-    notes = {o.check.item: o.note for o in result.failures}
-    assert notes and all("mi_log_to_linear.spi1d" in note for note in notes.values())
-    result = verify(config_copy, ("ocio",), density="quick", kinds=(LUT,), only="mi_log")
-    assert {o.note for o in result.failures} == {"FileNotFoundError: missing LUT file luts/mi_log_to_linear.spi1d"}
-
-
-def test_a_wrong_view_transform_fails_every_colorimetric_view(config_copy):
-    nudge = _scale_view_matrix("Colorimetric", ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE, 5, 1.001)
-    failing = _newly_failing(config_copy, lambda path: _rewrite(path, nudge), (VIEW,))
-    displays = ocio.Config.CreateFromFile(str(config_copy)).getDisplays()
-    assert {f"{d} / Colorimetric" for d in displays} <= failing
-    assert all(" / " in item for item in failing)
+    (tmp_path / "curve.csv").write_text("code,linear\n0,0\n0.25,0.02\n0.5,0.12\n0.75,0.45\n1,1\n")
+    text = (
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw", '
+        '"CIE XYZ-D65 - Scene-referred"]\n'
+        '[[custom_space]]\nname = "Tab"\ngamut = "P3-D65"\ntransfer = { family = "tabulated", file = "curve.csv" }\n'
+        '[[custom_space]]\nname = "Warm"\nencoding = "scene-linear"\nprimaries = [[0.70, 0.30], [0.17, 0.80], '
+        '[0.13, 0.04]]\nwhite = 5000\ntransfer = { family = "gamma", exponent = 2.2 }\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Colorimetric", "Raw"]\n'
+        '[[display]]\nname = "Tab Monitor"\ngamut = "Rec.709"\neotf = { family = "tabulated", file = "curve.csv" }\n'
+        'views = ["Colorimetric", "Raw"]\n'
+    )
+    (tmp_path / "show.toml").write_text(text)
+    folder = tmp_path / "show"
+    build(for_folder(load.load(tmp_path / "show.toml"), folder, (2, 1)), folder)
+    files = {"luts/tab_to_linear.spi1d", "luts/tab_monitor_to_linear.spi1d"}
+    assert {f"luts/{p.name}" for p in (folder / "luts").iterdir()} == files
+    result = verify(
+        folder / "config.ocio",
+        ("ocio",),
+        density="quick",
+        kinds=(TO_REFERENCE, FROM_REFERENCE, LUT),
+    )
+    assert files <= {o.check.item for o in result.outcomes}
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
 
 
-@pytest.mark.parametrize("missing", ["config.ocio", "ocioforge-spec.json"])
-def test_a_missing_file_is_a_clear_error(config_copy, missing):
-    (config_copy.parent / missing).unlink()
-    with pytest.raises(SpecError, match="no such config file|no resolved spec here"):
-        verify(config_copy, ("ocio",), density="quick")
+def test_verify_checks_each_space_against_its_own_curve_file(slugging_alike):
+    """Spaces whose names slug alike (one as a library curve's) each have a file; verify
+    checks every one, and each space through its own (they shared one file before, and
+    verify failed the spaces decoding with another's curve)."""
+
+    _spec, folder = slugging_alike
+    result = verify(
+        folder / "config.ocio",
+        ("ocio",),
+        density="quick",
+        kinds=(TO_REFERENCE, FROM_REFERENCE, LUT),
+    )
+    files = {f"luts/{p.name}" for p in (folder / "luts").iterdir()}
+    assert len(files) == 4 and files <= {o.check.item for o in result.outcomes}
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]

@@ -1,20 +1,17 @@
 """What verify prints and writes: the summary's rows agree with their FAIL counts; report.html
-opens with the verdict, and Chromium draws it and filters its table."""
+opens with the verdict, and Chromium draws it with every failure on the first screen."""
 
 from __future__ import annotations
 
 import html
 import re
-import subprocess
-from html.parser import HTMLParser
 
 import PyOpenColorIO as ocio
-import pytest
 
 from generator.verify.checks import LUT, TO_REFERENCE, VIEW
-from generator.verify.report import groups, html_page, sentence, summary, write_report
+from generator.verify.report import groups, html_page, sentence, summary
 from generator.verify.run import verify
-from tests.conftest import require_program
+from tests.verify.conftest import chromium, parsed
 
 
 def _group_rows_failing(result) -> list[tuple]:
@@ -52,67 +49,11 @@ def test_a_row_not_computed_says_so(config_copy):
 
 # The report page: the verdict first, figures, every result to filter; checked in Chromium.
 
-TINY = """
-colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]
-display_view_spaces = false
-
-[[display]]
-name = "sRGB - Display"
-views = ["Colorimetric", "Scale", "Raw"]
-
-[roles]
-scene_linear = "ACEScg"
-"""
-
-
-@pytest.fixture(scope="module")
-def failing_report(tmp_path_factory):
-    """A small config built in tmp, its Scale view's LUT dimmed by a tenth (8 rows fail on the
-    two ocio engines), verified with figures: the verification and its report.html."""
-    from generator.ocio.write import build, for_folder
-    from generator.spec import load
-    from generator.verify.figures import report_figures
-    from tests.verify.conftest import dim_output_table
-
-    folder = tmp_path_factory.mktemp("report")
-    (folder / "spec.toml").write_text(TINY, encoding="utf-8")
-    config = folder / "tiny"
-    build(for_folder(load.load(folder / "spec.toml"), config, (2, 1)), config)
-    dim_output_table(config / "luts" / "view_srgb_display_scale_17.clf", 0.9)
-    result = verify(config / "config.ocio", ("ocio",), density="quick")
-    write_report(result, folder / "report", report_figures(result))
-    return result, folder / "report" / "report.html"
-
-
-class _Rows(HTMLParser):
-    """The result rows of a page: (engine, verdict, item, hidden)."""
-
-    def __init__(self):
-        super().__init__()
-        self.rows: list[tuple[str, str, str, bool]] = []
-        self.first: str | None = None
-        self._in_body = False
-
-    def handle_starttag(self, tag, attrs):
-        found = dict(attrs)
-        if tag == "body":
-            self._in_body = True
-        elif self._in_body and self.first is None:
-            self.first = f"{tag}#{found.get('id', '')}"
-        if tag == "tr" and "data-engine" in found:
-            self.rows.append((found["data-engine"], found["data-verdict"], found["data-item"], "hidden" in found))
-
-
-def _parsed(page: str) -> _Rows:
-    parser = _Rows()
-    parser.feed(page)
-    return parser
-
 
 def test_the_page_opens_with_the_verdict_and_a_sentence_per_failure(failing_report):
     result, path = failing_report
     page = path.read_text(encoding="utf-8")
-    assert _parsed(page).first == "section#verdict"
+    assert parsed(page).first == "section#verdict"
     assert page.index("verify FAILED") < page.index("data:image/png") < page.index('id="results"')
     assert "8 of 48 results failing" in page
     told = html.unescape(re.sub(r"<[^>]+>", "", page[: page.index("</section>")]))
@@ -143,19 +84,10 @@ def test_a_passing_page_says_passed_and_lists_no_failure(config_copy):
     assert 'class="passed"' in page
 
 
-def _chromium(tmp_path, *args: str) -> subprocess.CompletedProcess:
-    """Debian's Chromium, headless, in a window of 1280 x 800 (CI installs it: see .ci/run)."""
-    program = require_program("chromium")
-    profile = tmp_path / "chromium-profile"
-    command = [program, "--headless", "--disable-gpu", "--no-sandbox", f"--user-data-dir={profile}"]
-    command += ["--no-first-run", "--window-size=1280,800", *args]
-    return subprocess.run(command, capture_output=True, text=True, timeout=180, check=True)
-
-
 def test_chromium_draws_the_report(failing_report, tmp_path):
     _, path = failing_report
     shot = tmp_path / "report.png"
-    _chromium(tmp_path, f"--screenshot={shot}", path.as_uri())
+    chromium(tmp_path, f"--screenshot={shot}", path.as_uri())
     from PIL import Image
 
     with Image.open(shot) as image:
@@ -180,30 +112,9 @@ def test_the_verdict_and_every_failure_are_on_the_first_screen(failing_report, t
     _, path = failing_report
     probe = tmp_path / "probe.html"
     probe.write_text(path.read_text(encoding="utf-8").replace("</body>", PROBE), encoding="utf-8")
-    dom = _chromium(tmp_path, "--dump-dom", probe.as_uri()).stdout
-    assert _parsed(dom).first == "section#verdict"
+    dom = chromium(tmp_path, "--dump-dom", probe.as_uri()).stdout
+    assert parsed(dom).first == "section#verdict"
     top, bottom, last, width, height, scroll = map(float, re.search(r'data-probe="([^"]*)"', dom).group(1).split())
     # --dump-dom's window keeps some of its 800 pixels for itself (657 measured); the screenshot has them all
     assert 600 <= height <= 800 and 0 <= top < bottom < last <= height, (top, bottom, last, height)
     assert scroll <= width
-
-
-@pytest.mark.parametrize(
-    "fragment, wanted",
-    [
-        ("engine=ocio+lossless&verdict=FAIL", lambda o: o.engine == "ocio lossless" and o.verdict == "FAIL"),
-        ("engine=ocio&item=scale", lambda o: "scale" in f"{o.check.kind} {o.check.title}".lower()),
-        ("verdict=pass&item=Colorimetric", lambda o: o.verdict == "pass" and "Colorimetric" in o.check.title),
-        ("", lambda o: True),
-    ],
-)
-def test_the_fragment_filters_the_table_in_chromium(failing_report, tmp_path, fragment, wanted):
-    result, path = failing_report
-    dom = _chromium(tmp_path, "--dump-dom", f"{path.as_uri()}#{fragment}").stdout
-    rows = _parsed(dom).rows
-    assert len(rows) == len(result.outcomes)
-    shown = [(engine, verdict, item) for engine, verdict, item, hidden in rows if not hidden]
-    expected = [(o.engine, o.verdict, f"{o.check.kind} {o.check.title}") for o in result.outcomes if wanted(o)]
-    assert shown == expected and expected
-    assert f">{len(expected)} of {len(rows)} results shown<" in dom
-    assert '<div id="filters">' in dom  # shown by the script

@@ -1,0 +1,72 @@
+"""A verify run: the config and its stored spec loaded (or refused, naming why), every engine
+asked for run and judged, hosts' default-flag departures explained, the working folder removed,
+and the verdict (CI counts an engine that did not run as a failure)."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+import pytest
+
+from generator.spec.schema import SpecError
+from generator.verify.judge import APPROX
+from generator.verify.run import engine_registry, verify
+from tests.conftest import require_program
+
+
+def test_the_default_config_passes(config_copy):
+    result = verify(config_copy, ("ocio",), density="quick")
+    assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
+
+
+@pytest.mark.parametrize("missing", ["config.ocio", "ocioforge-spec.json"])
+def test_a_missing_file_is_a_clear_error(config_copy, missing):
+    (config_copy.parent / missing).unlink()
+    with pytest.raises(SpecError, match="no such config file|no resolved spec here"):
+        verify(config_copy, ("ocio",), density="quick")
+
+
+def test_a_host_verified_alone_has_its_default_flag_departures_explained(build_config):
+    """oiiotool runs OCIO with its default flags; verified without the in-process engines, its
+    departures the flags explain are named so (APPROX) from in-process runs made for that alone,
+    not failures (they failed when the ocio engine was not asked for)."""
+    require_program("oiiotool")
+    result = verify(build_config((2, 1)), ("oiiotool",), density="quick")
+    names = {e.name for e in engine_registry()["oiiotool"]}  # Debian's too, where it is installed
+    assert {run.name for run in result.engines} == names
+    assert {o.engine for o in result.outcomes} <= {f"{n} ({v})" for n in names for v in ("EXR float", "TIFF uint16")}
+    assert any(o.verdict == APPROX and "in-process default flags" in o.note for o in result.outcomes)
+    assert result.passed, [(o.check.title, o.engine, o.worst) for o in result.failures]
+
+
+def test_a_stopped_run_leaves_no_working_folder(build_config, tmp_path, monkeypatch):
+    """SIGTERM ends a run as SystemExit; its working folder goes even while a host's output is
+    still being written there (a run stopped under oiiotool left it, with a traceback)."""
+    from generator.verify import run as runner
+
+    def stopped(engine, config, spec, checks, workdir):
+        (workdir / "host-0000-out.exr").write_bytes(b"partial")
+        raise SystemExit(143)
+
+    monkeypatch.setattr(runner, "run_engine", stopped)
+    with pytest.raises(SystemExit):
+        verify(build_config((2, 1)), ("ocio",), density="quick", workdir=tmp_path)
+    assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "value, expected", [("true", True), ("1", True), ("YES", True), ("false", False), ("0", False), ("", False)]
+)
+def test_ci_is_told_as_ci_services_set_it(value, expected):
+    """CI=1 had counted as not CI, so engines a CI run lacks passed as not run."""
+    env = {**os.environ, "CI": value}
+    done = subprocess.run(
+        [sys.executable, "-c", "import generator.verify.run as r; print(r.ON_CI)"],
+        capture_output=True,
+        text=True,
+        check=True,
+        env=env,
+    )
+    assert done.stdout.strip() == str(expected)
