@@ -96,37 +96,6 @@ def test_library_curves_slug_apart():
     assert len({slug(name) for name in CURVES}) == len(CURVES)
 
 
-def test_a_table_with_evenly_spaced_rows_is_baked_on_its_rows():
-    """A 10-bit table whose top row flags a clip (linear 100 after 20 at the row before): the
-    LUT's entries fall on every row, so its interpolation is the table's own (a uniform LUT
-    of 131073 entries was 2.9e-3 off there)."""
-    from generator.colorimetry.transfer import Tabulated
-    from generator.luts.curve1d import bake_curve
-
-    code = tuple(i / 1023 for i in range(1024))
-    curve = Tabulated("clip.csv", code, (*tuple(20.0 * c**2.4 for c in code[:-1]), 100.0))
-    baked = bake_curve("Clip", curve, curve.domain)
-    assert (len(baked.values) - 1) % 1023 == 0 and baked.shaper == 1.0
-    assert baked.max_relative_error <= tolerances.BAKED_CURVE_RELATIVE
-
-
-@pytest.mark.parametrize("rows", [1024, 4096])
-def test_a_smooth_table_with_evenly_spaced_rows_is_baked_on_its_rows(rows):
-    """A smooth 10-bit (or 12-bit) table, which a smaller uniform LUT holds within the bound too:
-    it is still baked on its rows, as README promises, so OCIO interpolates the table's own rows
-    (a 1025-entry LUT, chosen as smaller, put its entries between them, 4.7e-6 off)."""
-    from generator.colorimetry.transfer import Tabulated
-    from generator.luts.curve1d import bake_curve
-
-    code = np.arange(rows) / (rows - 1)
-    curve = Tabulated("smooth.csv", tuple(code), tuple(code**2.2))
-    baked = bake_curve("Smooth", curve, curve.domain)
-    intervals = len(baked.values) - 1
-    assert intervals % (rows - 1) == 0 and baked.shaper == 1.0
-    on_rows = np.asarray(baked.values)[:: intervals // (rows - 1)]
-    assert np.array_equal(on_rows, (code**2.2).astype(np.float32).astype(np.float64))
-
-
 def test_a_table_no_lut_holds_is_refused(tmp_path):
     """Rows 1e-7 apart with a step between them: no 1D LUT holds it within the bound, and the
     build says so in one line instead of writing a config 0.12 off."""
