@@ -104,46 +104,6 @@ def bad(text: str) -> SpecError:
 @pytest.mark.parametrize(
     "table, field, words",
     [
-        ('colour = 1\nsources = ["ACEScg"]', "lut_pack[2].colour", "allowed: sources"),
-        ('sources = ["ACEScg"]\nformats = ["clf"]', "lut_pack[2].displays", "required"),
-        ('sources = ["Nope"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]', "lut_pack[2].sources[0]", "not in"),
-        ('sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["tiff"]', "lut_pack[2].formats[0]", "clf"),
-        (
-            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nsize = 500',
-            "lut_pack[2].size",
-            "2 to 129",
-        ),
-        (
-            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\ngamut_maps = ["squash"]',
-            "lut_pack[2].gamut_maps[0]",
-            "allowed: clip",
-        ),
-        (
-            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nviews = ["ACES 2.0"]\n'
-            'gamut_maps = ["clip"]',
-            "lut_pack[2].views",
-            "exclude each other",
-        ),
-        (
-            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\nfile_name = "{camera}"',
-            "lut_pack[2].file_name",
-            "{source}",
-        ),
-        (
-            'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["clf"]\ndecimals = 3',
-            "lut_pack[2].decimals",
-            "with views",
-        ),
-    ],
-)
-def test_bad_keys_are_named_when_loaded(table, field, words):
-    error = bad(f"[[lut_pack]]\n{table}\n")
-    assert error.field == field and words in error.message
-
-
-@pytest.mark.parametrize(
-    "table, field, words",
-    [
         # bake refuses it: the key that declared it is named
         (
             'sources = ["ACEScg"]\ndisplays = ["sRGB - Display"]\nformats = ["iridas_cube"]',
