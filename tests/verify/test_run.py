@@ -7,12 +7,15 @@ from __future__ import annotations
 import os
 import subprocess
 import sys
+from pathlib import Path
 
+import PyOpenColorIO as ocio
 import pytest
 
 from generator.spec.schema import SpecError
-from generator.verify.judge import APPROX
-from generator.verify.run import engine_registry, verify
+from generator.verify.check import TO_REFERENCE, Check
+from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, Outcome
+from generator.verify.run import EngineRun, Verification, engine_registry, load, verify
 from tests.conftest import require_program
 
 
@@ -70,3 +73,58 @@ def test_ci_is_told_as_ci_services_set_it(value, expected):
         env=env,
     )
     assert done.stdout.strip() == str(expected)
+
+
+def test_a_builtin_config_is_refused_as_no_build():
+    with pytest.raises(SpecError, match="is one of OpenColorIO's builtin configs, which no spec built"):
+        load("ocio://default")
+
+
+@pytest.mark.parametrize(
+    "edit, words",
+    [
+        ("paste", "its colour spaces are not what its stored spec builds (holds 'Pasted Space')"),
+        ("drop", "its displays/views are not what its stored spec builds (lacks 'sRGB - Display / Scale')"),
+    ],
+)
+def test_a_config_holding_what_its_spec_does_not_build_is_refused(config_copy, edit, words):
+    """A space pasted in would go unchecked, a view removed would be missed: both named."""
+    cfg = ocio.Config.CreateFromFile(str(config_copy))
+    if edit == "paste":
+        cfg.addColorSpace(ocio.ColorSpace(name="Pasted Space"))
+    else:
+        cfg.removeDisplayView("sRGB - Display", "Scale")
+    config_copy.write_text(cfg.serialize(), encoding="utf-8")
+    with pytest.raises(SpecError) as raised:
+        load(config_copy)
+    assert words in str(raised.value)
+
+
+def test_an_unknown_engine_or_a_title_matching_no_check_is_refused(build_config):
+    config = build_config((2, 1))
+    with pytest.raises(SpecError, match="unknown engine; allowed: ocio, oiiotool, ocioconvert, blender, gpu"):
+        verify(config, ("ocio", "nuke"), density="quick")
+    with pytest.raises(SpecError, match="matches no check title"):
+        verify(config, ("ocio",), density="quick", only="No Such Space ->")
+
+
+def _verification(outcomes, engines=(), strict=False) -> Verification:
+    return Verification(Path("config.ocio"), None, (), tuple(outcomes), tuple(engines), strict=strict)
+
+
+def test_a_run_passes_when_something_was_compared_nothing_failed_and_strict_every_engine_ran():
+    """An engine that did not run fails a strict run (and every run on CI); one run beside its
+    family's own engine (Debian's oiiotool beside pip's) fails nothing; a run that compared
+    nothing proves nothing."""
+    check = Check(TO_REFERENCE, "ACEScct", "ACEScct", "ACES2065-1")
+    passed, failed = Outcome(check, "ocio default", PASS), Outcome(check, "ocio default", FAIL)
+    not_run = Outcome(check, "ocioconvert", NOT_RUN, note="ocioconvert is not installed")
+    ran = EngineRun("ocio default", "PyOpenColorIO")
+    absent = EngineRun("ocioconvert", skipped="ocioconvert is not installed")
+    extra = EngineRun("oiiotool system", skipped="its OCIO cannot load the config", extra=True)
+    assert _verification([passed], [ran]).passed
+    assert not _verification([passed, failed], [ran]).passed
+    assert not _verification([not_run], [absent]).passed  # nothing compared
+    assert _verification([passed, not_run], [ran, absent, extra]).missing == ["ocioconvert"]
+    assert not _verification([passed, not_run], [ran, absent], strict=True).passed
+    assert _verification([passed], [ran, extra], strict=True).passed
