@@ -10,7 +10,6 @@ import pytest
 from generator import tolerances
 from generator.luts import hsv, hsv_axes
 from generator.luts.view import HSV_METHOD, bake_view_lut, ends_in_light, view_filename, view_size
-from generator.metrics import delta_e_itp
 from generator.ocio.view_luts import view_figures
 
 
@@ -47,14 +46,6 @@ def test_view_files_of_displays_named_alike_are_apart(default_spec, tmp_path):
     assert len(names) == 4 and all(n.startswith("view_wall_a_") for n in names)
     srgb = next(d for d in default_spec.displays if d.name == "sRGB - Display")
     assert view_filename(default_spec, srgb, "scale") == "view_srgb_display_scale_17.clf"
-
-
-def test_one_pq_code_on_a_grey_is_the_delta_e_itp_the_hdr_targets_use(default_spec):
-    display = next(d for d in default_spec.displays if d.eotf_name == "ST 2084")
-    grey = np.linspace(0.01, 0.99, 50)[:, None] * np.ones(3)
-    for codes in (tolerances.LUT_CLF_IN_GAMUT_CODES, tolerances.LUT_CLF_SCALE_CODES):
-        error = delta_e_itp(display, grey + codes / 1023.0, grey)
-        assert np.allclose(error, codes * tolerances.DELTA_E_ITP_PER_PQ_CODE, rtol=1e-9)
 
 
 @pytest.mark.parametrize("eotf", ["ST 2084", "HLG"])
