@@ -173,3 +173,29 @@ def chromium(tmp_path, *args: str) -> subprocess.CompletedProcess:
     command = [program, "--headless", "--disable-gpu", "--no-sandbox", f"--user-data-dir={profile}"]
     command += ["--no-first-run", "--window-size=1280,800", *args]
     return subprocess.run(command, capture_output=True, text=True, timeout=180, check=True)
+
+
+#: The view checks :func:`blender_run` asks Blender for: (source space, display, view).
+BLENDER_ASKED = (
+    ("ACEScg", "sRGB - Display", "Colorimetric"),
+    ("ACEScg", "sRGB - Display", "Raw"),
+    ("ACEScct", "sRGB - Display", "Raw"),
+    ("ACEScg", "sRGB - Display", "No Such View"),
+    ("ACEScct", "Rec.1886 Rec.709 - Display", "Colorimetric"),
+)
+
+
+@pytest.fixture(scope="session")
+def blender_run(build_config, spec, tmp_path_factory):
+    """Debian's Blender run once, as verify runs it, on the default config's checks of
+    :data:`BLENDER_ASKED` (quick code probes and the non-finite ones): the checks, Blender's
+    outputs and the working folder holding its request, status and renders."""
+    from generator.verify import checks, paths, probes
+    from generator.verify.blender import BlenderEngine
+
+    require_program("blender")
+    ends = paths.LazyEndpoints(spec)
+    inputs = probes.Probes((*probes.code_families(0.0, 1.0, probes.SIZES["quick"]), probes.non_finite()))
+    asked = [checks.conversion_check(spec, ends, inputs, src, display=d, view=v) for src, d, v in BLENDER_ASKED]
+    workdir = tmp_path_factory.mktemp("blender")
+    return asked, BlenderEngine().run(build_config((2, 1)), asked, workdir), workdir

@@ -1,6 +1,7 @@
 """The command-line hosts (oiiotool, Debian's ocioconvert): which OpenColorIO each runs, said
 beside its result; Debian's oiiotool beside pip's; a host whose OCIO cannot read the config
-reported not run, found at once; names oiiotool would read as wildcards."""
+reported not run, found at once; a check a host refuses failed alone with its words; names
+oiiotool would read as wildcards; a hung host stopped."""
 
 from __future__ import annotations
 
@@ -12,9 +13,20 @@ import sys
 
 import pytest
 
-from generator.verify.checks import FROM_REFERENCE, LUT
-from generator.verify.hosts import TOO_NEW, OcioconvertEngine, linked_ocio, ocio_in, oiiotool_engines
-from generator.verify.judge import APPROX, NOT_RUN, PASS
+from generator.verify import checks, hosts, paths, probes
+from generator.verify.checks import FROM_REFERENCE, LUT, TO_REFERENCE, Check
+from generator.verify.hosts import (
+    TOO_NEW,
+    NotRunnable,
+    OcioconvertEngine,
+    OiiotoolEngine,
+    installed,
+    linked_ocio,
+    ocio_in,
+    oiiotool_engines,
+    read_output,
+)
+from generator.verify.judge import APPROX, FAIL, NOT_RUN, PASS, judge
 from generator.verify.report import summary
 from generator.verify.run import verify
 from tests.conftest import NEWEST, host_missing, require_program
@@ -148,3 +160,49 @@ def test_a_host_that_cannot_read_the_config_is_found_at_once_and_proves_nothing(
     assert {o.verdict for o in result.outcomes} == {NOT_RUN}
     assert not result.compared and not result.passed
     assert "nothing compared" in summary(result).splitlines()[-1]
+
+
+@pytest.fixture(scope="module")
+def three_checks(spec):
+    """Two conversions of the default config and, between them, one from a space it lacks."""
+    ends = paths.LazyEndpoints(spec)
+    inputs = probes.Probes((*probes.code_families(0.0, 1.0, probes.SIZES["quick"]), probes.non_finite()))
+    good = [
+        checks.conversion_check(spec, ends, inputs, src, dst)
+        for src, dst in (("ACEScct", "ACEScg"), ("ACEScg", "ACEScct"))
+    ]
+    lost = Check(TO_REFERENCE, "No Such Space", "No Such Space", "ACEScg", probes=inputs, expected=inputs.values)
+    return [good[0], lost, good[1]]
+
+
+@pytest.mark.parametrize("engine", [OiiotoolEngine(), OcioconvertEngine()], ids=lambda e: e.name)
+def test_a_check_a_host_refuses_fails_alone_with_the_hosts_words(build_config, tmp_path, three_checks, engine):
+    """oiiotool runs a batch in one command: the check it stops at is failed with its message and
+    the rest of the batch is run again after it; ocioconvert runs a process per check."""
+    require_program(engine.name)
+    outputs = engine.run(build_config((2, 1)), three_checks, tmp_path)
+    assert [len(o) for o in outputs] == [1, 1, 1]
+    first, lost, last = (judge(check, engine.name, out[0]) for check, out in zip(three_checks, outputs))
+    assert first.verdict == last.verdict == PASS, (first.worst, last.worst)
+    assert lost.verdict == FAIL and "No Such Space" in lost.note, lost.note
+    assert sorted(p.name for p in tmp_path.iterdir() if p.name.endswith("-in.exr")) == [
+        f"{engine.name}-{i:04d}-in.exr" for i in range(3)
+    ]
+
+
+def test_an_output_a_host_did_not_write_carries_its_words(tmp_path, three_checks):
+    check = three_checks[0]
+    said = read_output(tmp_path / "none.exr", check, "EXR float", "oiiotool ERROR: unknown color space")
+    assert said.values is None and said.error == "oiiotool ERROR: unknown color space"
+    assert read_output(tmp_path / "none.exr", check, "EXR float", "").error == "no output written (none.exr)"
+
+
+def test_a_host_that_hangs_is_stopped_and_its_run_reported_failed(monkeypatch):
+    monkeypatch.setattr(hosts, "HOST_TIMEOUT", 1)
+    result = hosts.run_host([require_program("sleep"), "30"])
+    assert result.returncode == -1 and result.stderr == "timed out after 1 s"
+
+
+def test_a_host_not_installed_cannot_run():
+    with pytest.raises(NotRunnable, match="^ocioconvert is not installed$"):
+        installed(None, "ocioconvert")
