@@ -5,11 +5,16 @@ small probe sets)."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
+import PyOpenColorIO as ocio
 import pytest
 
-from generator.verify import checks
+from generator.verify import checks, lut_checks
 from generator.verify.checks import FROM_REFERENCE, LUT, TO_REFERENCE, VIEW
+from generator.verify.judge import FAIL, PASS, Output, judge
+from generator.verify.probes import SIZES
 from generator.verify.run import verify
 from tests.verify.conftest import failing_items, newly_failing, nudge_nodes
 
@@ -194,3 +199,35 @@ def test_verify_checks_each_space_against_its_own_curve_file(slugging_alike):
     files = {f"luts/{p.name}" for p in (folder / "luts").iterdir()}
     assert len(files) == 4 and files <= {o.check.item for o in result.outcomes}
     assert result.passed, [(o.check.title, o.engine, o.worst, o.note) for o in result.failures]
+
+
+def test_a_baked_curves_file_is_read_on_every_node_and_between_and_a_node_off_is_named(build_config, spec, tmp_path):
+    """N-Log's file through OCIO's FileTransform: the check reads every node (every fourth probe)
+    and the quarters between, expecting N-Log's own decoding there, and passes the file the
+    build wrote; one node raised by 1e-3 of its value fails, naming that node's probe."""
+    nlog = tuple(s for s in spec.colour_spaces if s.name == "N-Log N-Gamut")
+    (check,) = lut_checks.lut_checks(replace(spec, colour_spaces=nlog, displays=()), SIZES["quick"])
+    assert check.lut == "luts/n_log_to_linear.spi1d" and check.interpolation == "linear"
+    file = build_config((2, 1)).parent / check.lut
+    rows = file.read_text(encoding="utf-8").splitlines()
+    first = rows.index("{") + 1
+    nodes = int(next(row for row in rows if row.startswith("Length")).split()[1])
+    u = check.probes.values[: 4 * (nodes - 1) + 1, 0]
+    np.testing.assert_allclose(u * 4 * (nodes - 1), np.arange(4 * (nodes - 1) + 1), atol=1e-3)
+    np.testing.assert_allclose(
+        check.expected[: len(u) : 4, 0], [float(v) for v in rows[first : first + nodes]], rtol=1e-6
+    )
+
+    def through(path):
+        transform = ocio.FileTransform(src=str(path), interpolation=ocio.INTERP_LINEAR)
+        cpu = ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor()
+        pixels = np.ascontiguousarray(check.probes.values, dtype=np.float32)
+        cpu.applyRGB(pixels)
+        return Output(pixels.astype(np.float64))
+
+    assert judge(check, "ocio", through(file)).verdict == PASS
+    rows[first + 700] = f"{float(rows[first + 700]) * 1.001:.9g}"
+    broken = tmp_path / "n_log_to_linear.spi1d"
+    broken.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    outcome = judge(check, "ocio", through(broken))
+    assert outcome.verdict == FAIL and outcome.worst_input.startswith("LUT nodes and between[2800] ")

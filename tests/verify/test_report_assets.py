@@ -27,3 +27,14 @@ def test_the_fragment_filters_the_table_in_chromium(failing_report, tmp_path, fr
     assert shown == expected and expected
     assert f">{len(expected)} of {len(rows)} results shown<" in dom
     assert '<div id="filters">' in dom  # shown by the script
+
+
+def test_an_engine_matches_by_its_whole_name_or_family_not_a_prefix(failing_report, tmp_path):
+    """ "oci" names no engine nor family: no row is shown (it is offered as a choice, so the page
+    says what it filters by), where "ocio" shows both of its family's engines."""
+    result, path = failing_report
+    dom = chromium(tmp_path, "--dump-dom", f"{path.as_uri()}#engine=oci").stdout
+    rows = parsed(dom).rows
+    assert rows and all(hidden for *_, hidden in rows)
+    assert f">0 of {len(rows)} results shown<" in dom and '<option value="oci">oci</option>' in dom
+    assert {o.engine for o in result.outcomes} == {"ocio default", "ocio lossless"}
