@@ -69,6 +69,12 @@ def test_delta_e_itp_judges_light_whichever_display_shows_it(default_spec, narro
     np.testing.assert_allclose(delta_e_itp(large, codes[1][1], codes[1][0]), errors[1], rtol=1e-12)
 
 
+def test_dequantised_takes_off_half_a_step_and_no_more():
+    got = dequantised([0.5 + 0.4 / 65535, 0.5 - 2.0 / 65535], [0.5, 0.5], 1.0 / 65535)
+    assert got[0] == 0.5 and got[1] == pytest.approx(0.5 - 1.5 / 65535, abs=1e-15)
+    assert percentile_99([np.nan, 1.0, 2.0]) == pytest.approx(1.99)
+
+
 def test_dequantised_leaves_exact_values_and_takes_each_channels_own_step():
     actual = np.array([[0.5 + 3e-5, 0.5 - 3e-5, 0.25]])
     expected = np.array([[0.5, 0.5, 0.25]])

@@ -1,13 +1,11 @@
 """What verify checks: coverage from the spec; a space or view broken in the config is named
-(against the unbroken config); a baked table's steep rise carried as float32 rounding; metrics."""
+(against the unbroken config); a baked table's steep rise carried as float32 rounding."""
 
 from __future__ import annotations
 
-import numpy as np
 import PyOpenColorIO as ocio
 import pytest
 
-from generator.metrics import dequantised, percentile_99
 from generator.verify import checks
 from generator.verify.checks import FROM_REFERENCE, LUT, TO_REFERENCE, VIEW
 from generator.verify.run import verify
@@ -32,12 +30,6 @@ def test_every_view_is_checked_from_three_inputs(spec, built):
     sources = {c.src for c in views}
     assert sources == {"ACEScg", "ACEScct", spec.displays[0].name}
     assert len(views) == 3 * sum(len(d.views) for d in spec.displays)
-
-
-def test_dequantised_takes_off_half_a_step_and_no_more():
-    got = dequantised([0.5 + 0.4 / 65535, 0.5 - 2.0 / 65535], [0.5, 0.5], 1.0 / 65535)
-    assert got[0] == 0.5 and got[1] == pytest.approx(0.5 - 1.5 / 65535, abs=1e-15)
-    assert percentile_99([np.nan, 1.0, 2.0]) == pytest.approx(1.99)
 
 
 def test_a_table_rising_steeply_between_two_rows_verifies(tmp_path):
