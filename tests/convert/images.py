@@ -1,4 +1,4 @@
-"""Small frames for the convert tests, written with OpenImageIO."""
+"""Small frames for the convert tests, written with OpenImageIO, and the command run in-process."""
 
 from __future__ import annotations
 
@@ -66,3 +66,16 @@ def ocio_applied(config: Path, values: np.ndarray, src: str, dst: str = "", disp
     rgb = np.ascontiguousarray(values[..., :3], dtype=np.float32).reshape(-1, 3)
     proc.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS).applyRGB(rgb)
     return rgb.reshape((*values.shape[:-1], 3))
+
+
+def convert(capsys, *argv):
+    """``ocioforge convert`` with ``argv``, in this process: its exit code, standard output and error."""
+    from generator.cli import main
+
+    try:
+        main(["convert", *map(str, argv)])
+        code = 0
+    except SystemExit as exit_:
+        code = exit_.code
+    out, err = capsys.readouterr()
+    return code, out, err
