@@ -7,7 +7,7 @@ import sys
 
 import pytest
 
-from tests.cli.test_cli import run
+from tests.cli.conftest import run
 from tests.convert import images
 
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from generator.cli import main
 from generator.luts import aces_probes, pack_folder, probes
+from tests.cli.conftest import run
 
 SPEC = """
 colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]
@@ -19,17 +19,8 @@ size = 5
 file_name = "{source}_{display}_{gamut_map}_{size}"
 """
 
+
 NAME = "acescct_srgb_display_scale_5.clf"
-
-
-def run(capsys, *argv):
-    try:
-        main([str(a) for a in argv])
-        code = 0
-    except SystemExit as exit_:
-        code = exit_.code
-    out, err = capsys.readouterr()
-    return code, out, err
 
 
 @pytest.fixture

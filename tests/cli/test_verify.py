@@ -1,37 +1,18 @@
-"""ocioforge verify and ocioforge plot, driven in-process through click."""
+"""ocioforge verify: a built config's checks, their table, summary and report; bad input one line
+and exit status 2 before any check."""
 
 from __future__ import annotations
 
 import json
-import shutil
 
-import click
 import pytest
-from click.testing import CliRunner
 
 from generator.cli import main
-
-
-@pytest.fixture
-def config(build_config, tmp_path):
-    source = build_config((2, 1)).parent
-    shutil.copytree(source, tmp_path / source.name)
-    return tmp_path / source.name / "config.ocio"
-
-
-@click.command(context_settings={"ignore_unknown_options": True, "help_option_names": []})
-@click.argument("argv", nargs=-1, type=click.UNPROCESSED)
-def ocioforge(argv):
-    """The command line through its entry point, whose error handling is part of what is tested."""
-    main(list(argv))
-
-
-def run(command, *args):
-    return CliRunner().invoke(ocioforge, [command, *map(str, args)])
+from tests.cli.conftest import LONG, invoke, one_line, run
 
 
 def test_verify_prints_a_row_per_check_and_a_summary(config, tmp_path):
-    result = run(
+    result = invoke(
         "verify", config, "--engines", "ocio", "--quick", "--only", " -> ACES2065-1", "--report", tmp_path / "report"
     )
     assert result.exit_code == 0, result.output
@@ -50,7 +31,7 @@ def test_verify_fails_and_names_the_broken_lut(config):
     (config.parent / "luts" / "n_log_to_linear.spi1d").write_text(
         "Version 1\nFrom 0 1\nLength 2\nComponents 1\n{\n 0\n 1\n}\n"
     )
-    result = run("verify", config, "--engines", "ocio", "--quick", "--summary")
+    result = invoke("verify", config, "--engines", "ocio", "--quick", "--summary")
     assert result.exit_code == 1
     assert "FAIL: LUT file luts/n_log_to_linear.spi1d" in result.output
     assert "worst input" in result.output
@@ -66,66 +47,70 @@ def test_verify_fails_and_names_the_broken_lut(config):
     ],
 )
 def test_verify_bad_input_is_one_line_and_exit_2(config, args, message):
-    result = run("verify", *[a.format(config=config) for a in args])
+    result = invoke("verify", *[a.format(config=config) for a in args])
     assert result.exit_code == 2
     assert result.stderr.count("\n") == 1 and result.stderr.startswith("error: ") and message in result.stderr
 
 
 def test_verify_without_the_stored_spec_is_a_clear_error(config):
     (config.parent / "ocioforge-spec.json").unlink()
-    result = run("verify", config, "--engines", "ocio", "--quick")
+    result = invoke("verify", config, "--engines", "ocio", "--quick")
     assert result.exit_code == 2 and "no resolved spec here" in result.stderr
 
 
-def test_plot_draws_the_chromaticity_diagram(config, tmp_path):
-    result = run("plot", config, "-o", tmp_path / "diagram.png")
-    assert result.exit_code == 0, result.output
-    assert (tmp_path / "diagram.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+@pytest.mark.parametrize("only", ("", "  "))
+def test_verify_refuses_an_empty_only(capsys, build_config, only):
+    """An empty --only had run every check, as if not given."""
+    code, out, err = run(capsys, "verify", str(build_config((2, 1))), "--quick", "--only", only)
+    assert code == 2 and err.count("\n") == 1 and "--only" in err and "is empty" in err and out == "", err
 
 
-@pytest.mark.parametrize("suffix", ("svg", "pdf"))
-def test_plot_gives_the_same_bytes_every_time(config, tmp_path, suffix):
-    """No date and no random element ids: the same config plots to the same file (SVG and PDF
-    held their creation date, SVG random clip-path ids)."""
-    for name in ("a", "b"):
-        assert run("plot", config, "-o", tmp_path / f"{name}.{suffix}").exit_code == 0
-    assert (tmp_path / f"a.{suffix}").read_bytes() == (tmp_path / f"b.{suffix}").read_bytes()
-
-
-def test_plot_refuses_an_unknown_format_and_writes_nothing(config, tmp_path):
-    result = run("plot", config, "-o", tmp_path / "diagram.bmp")
-    assert result.exit_code == 2 and result.stderr.startswith("error: ")
-    assert not list(tmp_path.glob("diagram*"))
-
-
-@pytest.mark.parametrize(
-    "argv",
-    (
-        ["plot", "{config}", "-o", "{blocked}/diagram.png"],
-        [
-            "verify",
-            "{config}",
-            "--engines",
-            "ocio",
-            "--quick",
-            "--only",
-            " -> ACES2065-1",
-            "--summary",
-            "--report",
-            "{blocked}/report",
-        ],
-    ),
-)
-def test_an_unwritable_image_or_report_is_one_line_and_exit_2(config, tmp_path, capsys, argv):
+def test_an_unwritable_report_is_one_line_and_exit_2_before_the_run(config, tmp_path, capsys):
     """The path and the OS's reason, exit status 2 (not verify's 1 for failed checks)."""
     blocked = tmp_path / "blocked"
     blocked.write_bytes(b"")
-    with pytest.raises(SystemExit) as exited:
-        main([a.format(config=config, blocked=blocked) for a in argv])
-    out, err = capsys.readouterr()
-    assert exited.value.code == 2 and err.count("\n") == 1, err
+    argv = ["verify", config, "--engines", "ocio", "--quick", "--only", " -> ACES2065-1", "--summary"]
+    code, out, err = run(capsys, *argv, "--report", f"{blocked}/report")
+    assert code == 2 and err.count("\n") == 1, err
     assert err.startswith(f"error: {blocked}/") and err.endswith(": cannot write: Not a directory\n")
     assert "verify passed" not in out  # the report's folder is checked before the run
+
+
+VERIFY = ("verify", "{config}", "--engines", "ocio", "--quick", "--only", "ACEScct -> ACES2065-1", "--summary")
+
+
+def test_a_report_is_replaced_only_with_force_and_refused_before_the_run(config, tmp_path, capsys):
+    report = tmp_path / "report"
+    argv = [a.format(config=config) for a in VERIFY]
+    assert run(capsys, *argv, "--report", report)[0] == 0
+    (report / "summary.json").write_text("keep")
+    code, out, err = run(capsys, *argv, "--report", report)
+    assert one_line(code, err, "summary.json: exists; pass --force"), err
+    assert out == "" and (report / "summary.json").read_text() == "keep"
+    assert run(capsys, *argv, "--report", report, "--force")[0] == 0
+    assert (report / "summary.json").read_text().startswith("{")
+
+
+def test_a_report_is_written_whole_or_not_at_all(config, tmp_path, capsys):
+    """report.html a folder: refused before the run, and summary.json not written either."""
+    report = tmp_path / "report"
+    (report / "report.html").mkdir(parents=True)
+    code, out, err = run(capsys, *(a.format(config=config) for a in VERIFY), "--report", report, "--force")
+    assert one_line(code, err, "report.html: is a folder; allowed: ") and out == "", err
+    assert sorted(p.name for p in report.iterdir()) == ["report.html"]
+
+
+@pytest.mark.parametrize(
+    "argv, words",
+    [
+        (["verify", "{tmp}/" + LONG + "/config.ocio"], "File name too long"),
+        (["verify", "{config}", "--report", "{tmp}/" + LONG], "File name too long"),
+    ],
+)
+def test_a_path_too_long_is_one_line(config, looped_links, capsys, argv, words):
+    code, _, err = run(capsys, *(a.format(config=config, tmp=looped_links) for a in argv))
+    assert one_line(code, err, words), err
+    assert sorted(p.name for p in looped_links.iterdir()) == ["l1", "l2"]
 
 
 def test_verify_refuses_a_config_holding_what_its_spec_does_not(config):
@@ -140,7 +125,7 @@ def test_verify_refuses_a_config_holding_what_its_spec_does_not(config):
     )
     cfg.addColorSpace(pasted)
     config.write_text(cfg.serialize())
-    result = run("verify", config, "--engines", "ocio", "--quick")
+    result = invoke("verify", config, "--engines", "ocio", "--quick")
     assert result.exit_code == 2 and "holds 'Bogus Space'" in result.stderr and result.stderr.count("\n") == 1
 
 
@@ -161,7 +146,7 @@ def test_an_edited_stored_spec_is_one_line_and_exit_2(config, edit, words):
     data = json.loads(path.read_text())
     edit(data)
     path.write_text(json.dumps(data))
-    result = run("verify", config, "--engines", "ocio", "--quick")
+    result = invoke("verify", config, "--engines", "ocio", "--quick")
     assert result.exit_code == 2 and words in result.stderr and result.stderr.count("\n") == 1, result.stderr
 
 
@@ -170,7 +155,7 @@ def test_verify_reads_every_display_whatever_the_active_ones(config, monkeypatch
     holds every display and view its spec builds, and verify checks them all."""
     monkeypatch.setenv("OCIO_ACTIVE_DISPLAYS", "sRGB - Display")
     monkeypatch.setenv("OCIO_ACTIVE_VIEWS", "Colorimetric,Raw")
-    result = run(
+    result = invoke(
         "verify", config, "--engines", "ocio", "--quick", "--only", "Display P3 - Display / Scale", "--summary"
     )
     assert result.exit_code == 0, result.output
@@ -192,7 +177,7 @@ ONE_CHECK = ("--quick", "--only", "ACEScct -> ACES2065-1", "--summary")
 def test_an_engine_named_but_not_installed_fails_the_run(config, blender_missing):
     """Named in --engines, an engine that cannot run is not a pass (it had said "verify passed,
     not run: blender", exit 0); in the default list it is reported as not run."""
-    result = run("verify", config, "--engines", "ocio,Blender", *ONE_CHECK)
+    result = invoke("verify", config, "--engines", "ocio,Blender", *ONE_CHECK)
     assert result.exit_code == 1 and "verify FAILED" in result.output
     assert "not run (asked for by --engines): blender" in result.output
 
@@ -243,10 +228,10 @@ def test_verify_summary_leaves_each_explained_row_to_the_report(config, tmp_path
     """--summary prints the summary alone: the departures OCIO's default flags explain (dozens on
     the default config) are counted, and named in the table's run and in the report."""
     args = ("verify", config, "--engines", "ocio", "--quick", "--only", "-> ADX10")
-    full = run(*args)
+    full = invoke(*args)
     assert full.exit_code == 0, full.output
     assert "approx: from reference ACES2065-1 -> ADX10 [ocio default]" in full.output
-    short = run(*args, "--summary", "--report", tmp_path / "report")
+    short = invoke(*args, "--summary", "--report", tmp_path / "report")
     assert short.exit_code == 0, short.output
     assert not [line for line in short.output.splitlines() if line.startswith("approx:")]
     assert "explained by OCIO's default flags (each named without --summary, and in --report's files)" in short.output
