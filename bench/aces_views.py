@@ -6,6 +6,13 @@ ten-bit codes) and of the plain recipe public generators use (AP0 to AP1, an ACE
 shaper, a 65³ table of display codes sampled from the same reference), measured in one run
 on the same probe sets: ten-bit codes on SDR displays, ΔE ITP (BT.2124) on HDR ones; p99 and
 max per set; then each file's size and the bake time.
+
+Last, why a 65³ table cannot meet 1 code p99: the reference's own bend. For each probe, the
+largest gap between the view's codes at a colour and the mean of its codes a step either side
+along six random directions of the lattice's log2(AP1 + toe) axes, for steps of 1/4, 1/16
+and 1/64 stop. That gap is the error of a straight line between two points twice the step
+apart, at its middle: what a lattice with nodes that far apart pays between them, before
+any fitting.
 """
 
 from __future__ import annotations
@@ -105,5 +112,41 @@ def main() -> None:
         print(f"{name:<36} bake {seconds:.2f} s, file {size_mb:.1f} MB ({lat.size}³ table, as the plain recipe's)")
 
 
+#: Steps (stops of AP1) of the bend measurement, and its probes per set.
+BEND_STEPS, BEND_COUNT = (1 / 4, 1 / 16, 1 / 64), 4000
+
+
+def bend(name: str = "ACES 2.0 - SDR 100 nits (Rec.709)") -> None:
+    """Print the reference's midpoint gap per set and step (see the module's docstring)."""
+    spec = load(None)
+    view, display = views.catalogue()[name], {d.name: d for d in spec.displays}[DISPLAYS[name]]
+    t, lat = views.tables(view), aces_lattice.bake(view)
+    toe = lat.log.toe
+    node = float(lat.coordinate(1.0)) + np.array([0.0, 1.0 / (lat.size - 1)])
+    per_stop = 1.0 / float(np.diff(np.log2(lat.value(node) + toe))[0])
+
+    def codes(log):
+        ap1 = np.clip(np.exp2(log) - toe, 0.0, lat.upper)
+        return reference.display_xyz_encode(spec, display, views.evaluate(view, ap1 @ t.ap1_to_ap0.T))
+
+    rng = np.random.default_rng(1)
+    print(f"\n{name} on {display.name}: the reference's midpoint gap, 10-bit codes p99 / max")
+    print(f"(the 65³ table's nodes are 1/{per_stop:.1f} stop apart below AP1 64: a step of 1/{2 * per_stop:.1f})")
+    print(f"{'set':<9} " + " ".join(f"{f'step 1/{round(1 / d)} stop':>20}" for d in BEND_STEPS))
+    for set_name, aces in probe_sets(display, n=BEND_COUNT).items():
+        log = np.log2(np.clip(aces @ t.ap0_to_ap1.T, 0.0, lat.upper) + toe)
+        cells = []
+        for step in BEND_STEPS:
+            gap = np.zeros(len(log))
+            for _ in range(6):
+                way = rng.standard_normal(log.shape)
+                way *= step / np.linalg.norm(way, axis=1, keepdims=True)
+                middle = codes(log) - 0.5 * (codes(log + way) + codes(log - way))
+                gap = np.maximum(gap, np.abs(middle).max(axis=1) * 1023.0)
+            cells.append(f"{np.percentile(gap, 99):10.2f} / {gap.max():6.1f}")
+        print(f"{set_name:<9} " + " ".join(f"{c:>20}" for c in cells))
+
+
 if __name__ == "__main__":
     main()
+    bend()

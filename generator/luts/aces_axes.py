@@ -131,13 +131,13 @@ class ViewAxis:
         )
 
 
-def view_axes(view) -> tuple[LogAxis, ViewAxis, np.ndarray]:
+def view_axes(view, toe: float = ACES_TOE) -> tuple[LogAxis, ViewAxis, np.ndarray]:
     """The display layout's Log operator (a :class:`~generator.luts.axes.LogAxis` from 0 to the
-    view's clamp over :data:`ACES_BEND_ENTRIES` entries, 1.0 on one, toe near :data:`ACES_TOE`),
+    view's clamp over :data:`ACES_BEND_ENTRIES` entries, 1.0 on one, toe near ``toe``),
     the :class:`ViewAxis` of the same toe bending on an entry, and the 1D table between them
     (lattice coordinates at the entries, as written)."""
     upper, n = basis(view).upper, ACES_BEND_ENTRIES - 1
-    share = np.log2(1.0 / ACES_TOE + 1.0) / np.log2(upper / ACES_TOE + 1.0)
+    share = np.log2(1.0 / toe + 1.0) / np.log2(upper / toe + 1.0)
     log = LogAxis(ACES_BEND_ENTRIES, round(share * n), _toe_for(upper, round(share * n) / n))
     wanted = ViewAxis.layout(log.toe, upper)
     light = float(log.position(np.round(log.coordinate(wanted.light) * n) / n))

@@ -5,14 +5,16 @@ The view runs, in the config::
     Matrix (scene reference -> AP1) -> Range clamp [0, upper] -> this CLF -> Range [0, 1]
     -> Matrix (limiting RGB at the peak -> CIE XYZ)
 
-where the clamp is the view's own AP1 clamp (upper: the tone scale's forward limit) and
-the CLF holds a Log shaper (``log2(x + toe)`` per channel, exact in every OCIO), a 3D
-table (tetrahedral) of the rendering's limiting RGB over its peak, encoded by a mirrored
+where the clamp is the view's own AP1 clamp (upper: the tone scale's forward limit) and the
+CLF holds a Log shaper (``log2(x + toe)`` per channel, exact in every OCIO), a 1D table
+bending that axis (a third as dense per stop above AP1 64, :mod:`generator.luts.aces_axes`),
+a 3D table (tetrahedral) of the rendering's limiting RGB over its peak, encoded by a mirrored
 power with a linear toe (CLF's monCurve: sRGB's curve for SDR views), and the Exponent
-undoing that encoding. What is linear (the matrices) and what is a clamp stays outside the
-table, so the table holds the rendering unclamped; the toe keeps a channel crossing zero
-smooth, where a pure power's infinite slope was not (max 76 against 32 ten-bit codes on
-AP0 0..1). One file per view, whatever displays show it.
+undoing that encoding. The table's values are fitted by least squares to colours of the
+kinds bench/aces_views.py measures (:func:`fitted`). What is linear (the matrices) and what
+is a clamp stays outside the table, so the table holds the rendering unclamped; the toe keeps
+a channel crossing zero smooth, where a pure power's infinite slope was not (max 76 against 32
+ten-bit codes on AP0 0..1). One file per view, whatever displays show it.
 """
 
 from __future__ import annotations
@@ -22,18 +24,28 @@ from functools import lru_cache
 
 import numpy as np
 
+from generator.colorimetry.gamuts import gamuts
+from generator.colorimetry.matrices import channel_max
 from generator.colorimetry.transfer import PiecewisePower
-from generator.luts.fit import tetrahedra
+from generator.luts import aces_probes
+from generator.luts.aces_axes import view_axes
+from generator.luts.axes import LogAxis
+from generator.luts.fit import kept_nodes, reweighted_nodes, system_at, tetrahedra
+from generator.luts.lattice import preimages
 from generator.luts.solve import interpolate
+from generator.metrics import delta_e_itp_of_light
 from generator.rendering import views
 from generator.rendering.views import ACESView
 
 #: Nodes a side: the plain recipe's 65, which the bench compares with.
 ACES_LATTICE_SIZE = 65
 
-#: The Log shaper's toe (AP1 linear): the axis is log2(x + toe), so black sits on a node and
-#: the darkest decades keep nodes (bench/aces_views.py measured 2^-13 to 2^-10 alike).
-ACES_LATTICE_TOE = 2.0**-10
+#: The Log shaper's toe (AP1 linear) for SDR and HDR views: the axis is log2(x + toe), so black
+#: sits on a node. HDR views keep nodes in the darks PQ shows (docs/aces-views.md measures both).
+SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-10
+
+#: Colours per probe kind a view's table is fitted to (:func:`fitted`).
+VIEW_FIT_COUNT = 16384
 
 #: The table's output encoding (gamma, offset of CLF's monCurve): sRGB's curve for SDR views;
 #: for HDR views a steeper power, as PQ is, whose toe measured best in ΔE ITP (bench/aces_views.py).
@@ -46,13 +58,14 @@ CODE_STEPS = 65535.0
 
 @dataclass(frozen=True)
 class AcesLattice:
-    """A baked ACES 2.0 view: the table (n, n, n, 3) indexed [r, g, b] over the log axis of
-    AP1 in [0, ``upper``], holding the ``curve`` (gamma, offset) encoding of limiting RGB over
-    the peak."""
+    """A baked ACES 2.0 view: the ``log`` axis of AP1 in [0, ``upper``], the 1D ``bend`` table
+    (lattice coordinate at each of its entries, as written), and the table (n, n, n, 3)
+    indexed [r, g, b] holding the ``curve`` (gamma, offset) encoding of limiting RGB over the peak."""
 
     view: ACESView
     upper: float
-    toe: float
+    log: LogAxis
+    bend: np.ndarray
     curve: tuple[float, float]
     cube: np.ndarray
 
@@ -61,22 +74,21 @@ class AcesLattice:
         """Nodes along each axis of the cube."""
         return self.cube.shape[0]
 
-    @property
-    def span(self) -> float:
-        """log2 of the axis's range: the coordinate is (log2(x + toe) - log2(toe)) / span."""
-        return float(np.log2(self.upper + self.toe) - np.log2(self.toe))
+    def coordinate(self, ap1) -> np.ndarray:
+        """AP1 values (clamped to [0, ``upper``]) to the lattice coordinate in [0, 1], as OCIO
+        reads the file: the Log operator, then the 1D table's linear interpolation."""
+        u = self.log.coordinate(np.clip(np.asarray(ap1, dtype=np.float64), 0.0, self.upper))
+        return np.interp(u, np.linspace(0.0, 1.0, self.bend.size), self.bend)
+
+    def value(self, u) -> np.ndarray:
+        """Lattice coordinates back to AP1 (:meth:`coordinate`'s inverse)."""
+        return self.log.position(preimages_of(u, self.bend))
 
 
-def axis_coordinate(ap1, upper: float, toe: float) -> np.ndarray:
-    """Clamped AP1 values to the lattice coordinate in [0, 1]."""
-    span = np.log2(upper + toe) - np.log2(toe)
-    return (np.log2(np.clip(ap1, 0.0, upper) + toe) - np.log2(toe)) / span
-
-
-def axis_value(u, upper: float, toe: float) -> np.ndarray:
-    """A lattice coordinate back to AP1."""
-    span = np.log2(upper + toe) - np.log2(toe)
-    return np.exp2(np.asarray(u) * span + np.log2(toe)) - toe
+def preimages_of(u, bend: np.ndarray) -> np.ndarray:
+    """The Log operator's values the 1D table ``bend`` takes to coordinates ``u``."""
+    entries = np.linspace(0.0, 1.0, bend.size)
+    return np.interp(np.asarray(u, dtype=np.float64), bend, entries)
 
 
 def mon_decode(code, curve: tuple[float, float]) -> np.ndarray:
@@ -94,20 +106,58 @@ def mon_encode(linear, curve: tuple[float, float]) -> np.ndarray:
 
 @lru_cache(maxsize=32)
 def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
-    """The lattice of ACES 2.0 view ``view``, sampled from the float64 reference."""
-    t = views.tables(view)
-    curve = HDR_CURVE if view.is_hdr else SDR_CURVE
-    axis = axis_value(np.linspace(0.0, 1.0, size), upper(view), ACES_LATTICE_TOE)
+    """The lattice of ACES 2.0 view ``view``: sampled from the float64 reference, then fitted."""
+    curve, toe = (HDR_CURVE, HDR_TOE) if view.is_hdr else (SDR_CURVE, SDR_TOE)
+    log, _, bend = view_axes(view, toe)
+    axis = log.position(preimages(size, bend, (0.0, 1.0)))
     ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
-    rgb = views.output_rgb(view, ap1 @ t.ap1_to_ap0.T) / (view.render_peak / 100.0)
-    cube = np.round(mon_encode(rgb, curve) * CODE_STEPS) / CODE_STEPS
-    return AcesLattice(view, upper(view), ACES_LATTICE_TOE, curve, cube.reshape(size, size, size, 3))
+    lat = AcesLattice(view, upper(view), log, bend, curve, _encoded(view, ap1, curve).reshape(size, size, size, 3))
+    return AcesLattice(view, lat.upper, log, bend, curve, np.round(fitted(lat) * CODE_STEPS) / CODE_STEPS)
+
+
+def _encoded(view: ACESView, ap1, curve: tuple[float, float]) -> np.ndarray:
+    """The table's values of AP1 colours (m, 3): limiting RGB over the peak, encoded by ``curve``."""
+    rgb = views.output_rgb(view, ap1 @ views.tables(view).ap1_to_ap0.T) / (view.render_peak / 100.0)
+    return mon_encode(rgb, curve)
+
+
+def fitted(lat: AcesLattice) -> np.ndarray:
+    """``lat``'s table fitted by least squares (:func:`~generator.luts.fit.reweighted_nodes`) to
+    colours of the six kinds bench/aces_views.py measures, from another seed; greys and the
+    black cell keep their sampled values. A colour's error is in ten-bit codes of the encoded values for SDR views
+    (the display's codes where its primaries are the limiting ones), ΔE ITP for HDR ones."""
+    t = views.tables(lat.view)
+    colours = {}
+    for name, aces in aces_probes.sets_in(t.limit_to_xyz, aces_probes.TRAINING_SEED, VIEW_FIT_COUNT).items():
+        ap1 = np.clip(aces @ t.ap0_to_ap1.T, 0.0, lat.upper)
+        colours[name] = (lat.coordinate(ap1) * (lat.size - 1), _encoded(lat.view, ap1, lat.curve))
+    kept = kept_nodes(lat.size, None)
+    # The black cell keeps its sampled values, none below 0: fitted ones of either sign near 0
+    # cancel in float32, which a pure-power display's encoding magnifies (4e-4 in gamma 2.6).
+    kept.reshape((lat.size,) * 3)[:2, :2, :2] = True
+    system = system_at(lat.cube, colours, kept)
+    return reweighted_nodes(lat.cube, system, _error(lat), decimals=None)
+
+
+def _error(lat: AcesLattice):
+    """Per-colour error of encoded table values: ten-bit codes (SDR), ΔE ITP of the light (HDR)."""
+    if not lat.view.is_hdr:
+        return lambda actual, expected: channel_max(np.abs(actual - expected)) * 1023.0
+    t = views.tables(lat.view)
+    to_2020 = gamuts()["Rec.2020"].xyz_to_rgb @ t.limit_to_xyz * (lat.view.render_peak * t.display_scale)
+
+    def itp(actual, expected):
+        light = [np.clip(mon_decode(v, lat.curve), 0.0, None) @ to_2020.T for v in (actual, expected)]
+        with np.errstate(all="ignore"):
+            return np.nan_to_num(delta_e_itp_of_light(*light))
+
+    return itp
 
 
 def file_output(lat: AcesLattice, ap1) -> np.ndarray:
     """The file alone, in float64: AP1 (m, 3; clamped to [0, upper] as the config does before
     it) to limiting RGB over the peak, unclamped."""
-    u = axis_coordinate(np.asarray(ap1, dtype=np.float64), lat.upper, lat.toe)
+    u = lat.coordinate(ap1)
     nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (lat.size - 1)), lat.size)
     return mon_decode(interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T, lat.curve)
 
@@ -130,8 +180,8 @@ def to_xyz(view: ACESView) -> np.ndarray:
 
 
 def ocio_file(lat: AcesLattice) -> bytes:
-    """The CLF of the lattice, written by PyOpenColorIO: Log shaper, LUT3D (16-bit codes),
-    Exponent (monCurveMirrorFwd)."""
+    """The CLF of the lattice, written by PyOpenColorIO: Log shaper, 1D bend table, LUT3D
+    (16-bit codes), Exponent (monCurveMirrorFwd)."""
     import PyOpenColorIO as ocio
 
     from generator.luts import transforms  # with PyOpenColorIO, when a file is written
@@ -140,13 +190,14 @@ def ocio_file(lat: AcesLattice) -> bytes:
     # Written as 16-bit integer codes (OCIO keeps six digits, 1.5e-6 of the range, and values
     # beyond it): two thirds of the text of float32 values.
     cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
-    log, decode = transforms.log_shaper(lat.span, lat.toe), transforms.mon_curve(*lat.curve)
-    group = ocio.GroupTransform([log, cube, decode])
+    log, decode = transforms.log_shaper(lat.log.span, lat.log.toe), transforms.mon_curve(*lat.curve)
+    group = ocio.GroupTransform([log, transforms.lut1d(lat.bend), cube, decode])
     group.getFormatMetadata().setID(f"ocioforge:{file_name(lat.view)[:-4]}")
     group.getFormatMetadata().addChildElement(
         "Description",
         f"ocioforge ACES view LUT: {lat.view.name}; AP1 clamped to [0, {lat.upper:g}] to limiting "
-        f"RGB over the peak, {lat.size}^3 on a log2(x + {lat.toe:g}) axis, encoded by a monCurve of gamma "
+        f"RGB over the peak, {lat.size}^3 on a log2(x + {lat.log.toe:.6g}) axis bent by a 1D table, encoded by "
+        f"a monCurve of gamma "
         f"{lat.curve[0]:g} and offset {lat.curve[1]:g}, which the last operator undoes.",
     )
     return group.write("Academy/ASC Common LUT Format", ocio.Config.CreateRaw()).encode("utf-8")

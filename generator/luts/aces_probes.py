@@ -53,6 +53,11 @@ def _to_ap0(name: str) -> np.ndarray:
 
 def sets(display: Display, seed: int, count: int) -> dict[str, np.ndarray]:
     """The six sets of ``count`` ACES2065-1 colours each (the greys: a fixed ramp)."""
+    return sets_in(display.gamut.rgb_to_xyz, seed, count)
+
+
+def sets_in(rgb_to_xyz: np.ndarray, seed: int, count: int) -> dict[str, np.ndarray]:
+    """:func:`sets`, the in-gamut colours those of the gamut whose RGB to CIE XYZ matrix is ``rgb_to_xyz``."""
     rng = np.random.default_rng(seed)
     ap0 = gamuts()["AP0"]
     hue = rng.random((count, 3))
@@ -60,7 +65,7 @@ def sets(display: Display, seed: int, count: int) -> dict[str, np.ndarray]:
     edge = rng.random((count, 3))
     edge[np.arange(count), rng.integers(0, 3, count)] = 0.0
     edge /= edge.max(axis=1, keepdims=True)
-    in_gamut = rng.random((count, 3)) @ (np.linalg.inv(ap0.rgb_to_xyz) @ display.gamut.rgb_to_xyz).T
+    in_gamut = rng.random((count, 3)) @ (np.linalg.inv(ap0.rgb_to_xyz) @ rgb_to_xyz).T
     return {
         "in_gamut": in_gamut,
         "ap0": rng.random((count, 3)),

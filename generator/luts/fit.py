@@ -92,12 +92,12 @@ def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
     index = {
         name: coordinates(lat, np.ascontiguousarray(code.T)).T * (lat.size - 1) for name, (code, _) in colours.items()
     }
-    return _node_system(
-        lat.cube, {name: (index[name], expected) for name, (_, expected) in colours.items()}, _kept(lat.size, zero)
+    return system_at(
+        lat.cube, {name: (index[name], expected) for name, (_, expected) in colours.items()}, kept_nodes(lat.size, zero)
     )
 
 
-def _node_system(cube: np.ndarray, colours: dict, kept: np.ndarray) -> _System:
+def system_at(cube: np.ndarray, colours: dict, kept: np.ndarray) -> _System:
     """The fit's rows of ``colours`` (set name to (fractional node indices (m, 3), expected
     values)) on ``cube`` (n, n, n, 3): the unknowns are the nodes neither ``kept`` (flat mask)
     nor unreached by every colour."""
@@ -141,14 +141,17 @@ def reweighted_fit(lat: Lattice, colours: dict, zero: int | None, rtol: float | 
     )
 
 
-def reweighted_nodes(cube: np.ndarray, system: _System, error, rtol: float | None = None) -> np.ndarray:
+def reweighted_nodes(
+    cube: np.ndarray, system: _System, error, rtol: float | None = None, decimals: int | None = CUBE_DECIMALS
+) -> np.ndarray:
     """:func:`reweighted_fit` of ``cube``'s node values on a built ``system``, ``error``
-    giving per-colour errors (m,) of actual against expected values (m, 3)."""
+    giving per-colour errors (m,) of actual against expected values (m, 3); the values are
+    rounded to ``decimals`` (None: not rounded)."""
     base = {
         name: np.full(rows.stop - rows.start, FIT_IN_GAMUT_WEIGHT if name == "in_gamut" else 1.0)
         for name, rows in system.sets.items()
     }
-    fitted = _solved(cube, base, system, rtol)
+    fitted = _solved(cube, base, system, rtol, decimals)
     for _ in range(FIT_REWEIGHTS):
         actual = solve.interpolate(system.nodes, system.weights, np.ascontiguousarray(fitted.reshape(-1, 3).T))
         weights = {}
@@ -158,7 +161,7 @@ def reweighted_nodes(cube: np.ndarray, system: _System, error, rtol: float | Non
             u = np.minimum(error_ / max(_percentile_99(error_) if error_.size else 1.0, 1e-12), 2 * FIT_REWEIGHT_CUTOFF)
             scale = np.where(u > FIT_REWEIGHT_CUTOFF, FIT_REWEIGHT_TAIL, FIT_REWEIGHT_FLOOR + u**2)
             weights[name] = base[name] * scale
-        fitted = _solved(cube, weights, system, rtol)
+        fitted = _solved(cube, weights, system, rtol, decimals)
     return fitted
 
 
@@ -175,7 +178,7 @@ def _percentile_99(values: np.ndarray) -> float:
     return float(b - diff * (1 - t) if t >= 0.5 else a + diff * t)
 
 
-def _kept(size: int, zero: int | None) -> np.ndarray:
+def kept_nodes(size: int, zero: int | None) -> np.ndarray:
     """Flat mask of the nodes the fit keeps: the diagonal's, and with ``zero`` those of a zero channel."""
     kept = np.zeros(size**3, dtype=bool)
     kept[np.arange(size) * (size * size + size + 1)] = True
@@ -203,8 +206,10 @@ def fit(
     return _solved(lat.cube, weights, system or _system(lat, colours, zero), rtol)
 
 
-def _solved(cube: np.ndarray, weights: dict, system: _System, rtol: float | None = None) -> np.ndarray:
-    """:func:`fit` from ``cube``'s sampled values on a built ``system``."""
+def _solved(
+    cube: np.ndarray, weights: dict, system: _System, rtol: float | None = None, decimals: int | None = CUBE_DECIMALS
+) -> np.ndarray:
+    """:func:`fit` from ``cube``'s sampled values on a built ``system``, rounded to ``decimals``."""
     scale = np.sqrt(np.concatenate([weights[name] for name in system.sets]))
     free, columns, unknown = system.free * scale, system.columns, system.unknown
     count = int(np.count_nonzero(unknown))
@@ -223,7 +228,8 @@ def _solved(cube: np.ndarray, weights: dict, system: _System, rtol: float | None
     values = start.copy()
     rtol = FIT_RTOL if rtol is None else rtol  # read when called: FIT_RTOL is the one default
     values[:, unknown] = solve.conjugate_gradient(normal, right, start[:, unknown], diagonal, rtol * whole, FIT_MAXITER)
-    return numbers.rounded(values.T.reshape(cube.shape), CUBE_DECIMALS)
+    values = values.T.reshape(cube.shape)
+    return values if decimals is None else numbers.rounded(values, decimals)
 
 
 def _shaper_table(spec: Spec, source: ColourSpace, display: Display, size: int, shaper, domain) -> np.ndarray | None:

@@ -21,12 +21,13 @@ from generator import reference, tolerances
 from generator.colorimetry.curves import PQ_PEAK
 from generator.colorimetry.matrices import apply_matrix
 from generator.gamut.simple import desaturate
-from generator.luts import hsv_axes
+from generator.luts import aces_lattice, hsv_axes
 from generator.luts.evaluate import at_coordinates, coordinates, index_rounding
 from generator.luts.hsv import luminance_weights
 from generator.luts.view import view_lattice
 from generator.ocio.capabilities import HALF_DOMAIN, PQ_BUILTIN, curve_chain, pq_builtin_tables
 from generator.ocio.curves import curve_label
+from generator.rendering import views
 from generator.spec.schema import Display, Spec
 from generator.verify import paths
 
@@ -208,7 +209,44 @@ def view_allowance(spec: Spec, src, back, display, view, codes, expected, clip_e
         return float32_allowance(src, back, clip_encode, codes, shifted)
     if method in paths.lattice_defined():
         return lattice_allowance(spec, src, back, display, method, codes, shifted)
+    found = None if method is not None else reference.aces_view_of(display, view)
+    if found is not None and found.version == "2.0" and paths.aces_baked(spec, display, view):
+        return aces_file_allowance(spec, src, back, display, view, codes, expected, shifted)
     return mapped_allowance(src, back, display, view, codes, expected, shifted)
+
+
+def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, shifted=None) -> np.ndarray | None:
+    """For an ACES 2.0 view a 2.1 to 2.3 config runs from its baked file: the float32 shift of
+    the input carried into AP1, plus the file's Log operator's rounding near its toe
+    (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`), moved through the file over a box
+    (:data:`_BOX`) and encoded; then :func:`mapped_allowance`'s shift of the light after it.
+    Near black a pure-power display turns that rounding into codes."""
+    mapped = mapped_allowance(src, back, display, view, codes, expected, shifted)
+    if mapped is None:
+        return None
+    found = reference.aces_view_of(display, view)
+    lat = aces_lattice.bake(found)
+    u = tolerances.FLOAT32_UNIT_ROUNDOFF
+    ref, shift = shifted or float32_shift(src, back, codes)
+    to_ap1 = views.tables(found).ap0_to_ap1 @ reference.to_aces_matrix(spec)
+    to_xyz = aces_lattice.to_xyz(found)
+
+    def encoded(ap1):
+        light = np.clip(aces_lattice.file_output(lat, ap1.reshape(-1, 3)), 0.0, 1.0) @ to_xyz.T
+        return reference.display_xyz_encode(spec, display, light).reshape(ap1.shape)
+
+    with np.errstate(all="ignore"):
+        ap1 = np.nan_to_num(apply_matrix(to_ap1, ref))
+        reach = (
+            apply_matrix(np.abs(to_ap1 @ back), np.nan_to_num(shift))
+            + tolerances.FLOAT32_MATRIX_ROUNDINGS * u * np.abs(ap1)
+            + tolerances.ACES_LOG_ROUNDINGS * u * lat.log.toe
+        )
+        start = encoded(ap1)
+        box = np.zeros_like(start)
+        for step in _BOX:
+            box = np.maximum(box, np.abs(encoded(ap1 + step * reach) - start))
+    return mapped + np.where(np.isfinite(box), box, 0.0)
 
 
 def lattice_allowance(

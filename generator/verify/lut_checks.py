@@ -119,12 +119,12 @@ def aces_lut_checks(spec: Spec, sizes: Sizes) -> list[Check]:
     for view in baked_aces_views(spec):
         lat = aces_lattice.bake(view)
         halves = np.arange(2 * (lat.size - 1) + 1) / (2.0 * (lat.size - 1))
-        axis = aces_lattice.axis_value(halves, lat.upper, lat.toe)
+        axis = lat.value(halves)
         single = np.zeros((3, axis.size, 3))
         for channel in range(3):
             single[channel, :, channel] = axis
         rng = np.random.default_rng(21)
-        random = aces_lattice.axis_value(rng.random((sizes.random, 3)), lat.upper, lat.toe)
+        random = lat.value(rng.random((sizes.random, 3)))
         inputs = Probes(
             (
                 Family("AP1 greys on and between nodes", np.repeat(axis[:, None], 3, axis=1)),

@@ -50,7 +50,7 @@ def test_the_lattice_holds_the_reference_at_its_nodes():
     on the axis's nodes comes out as the view's within that step through the decoding."""
     view = views.catalogue()["ACES 2.0 - HDR 1000 nits (P3 D65)"]
     lat = aces_lattice.bake(view, 17)
-    ap1 = aces_lattice.axis_value(np.linspace(0.0, 1.0, 17), lat.upper, lat.toe)[:, None].repeat(3, 1)
+    ap1 = lat.value(np.linspace(0.0, 1.0, 17))[:, None].repeat(3, 1)
     aces = ap1 @ views.tables(view).ap1_to_ap0.T
     expected = aces_lattice.mon_encode(views.output_rgb(view, aces) / (view.peak / 100.0), lat.curve)
     diagonal = lat.cube[np.arange(17), np.arange(17), np.arange(17)]
