@@ -271,3 +271,28 @@ def test_a_malformed_source_date_epoch_is_one_line(capsys, monkeypatch, value):
     assert code == 2 and err.count("\n") == 1 and "SOURCE_DATE_EPOCH" in err, err
     monkeypatch.setenv("SOURCE_DATE_EPOCH", "1700000000")
     assert run(capsys, "info", "acescg")[0] == 0
+
+
+#: The commands, in the order the help lists them.
+COMMANDS = ("build", "init", "matrix", "bake", "pack", "verify", "plot", "info", "list", "convert")
+
+
+def test_no_command_prints_the_help_listing_every_command(capsys):
+    code, out, err = run(capsys)
+    listed = [line.split()[0] for line in out.split("Commands:\n")[1].splitlines() if line[:3].strip()]
+    assert code == 0 and err == "" and listed == list(COMMANDS), out
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_each_command_is_found_and_has_its_help(capsys, command):
+    code, out, err = run(capsys, command, "--help")
+    assert code == 0 and err == "" and out.startswith(f"Usage: ocioforge {command} "), out
+    assert "--help" in out
+
+
+def test_a_flag_given_twice_is_not_refused(tmp_path, capsys):
+    """Only an option taking a value is refused twice (the last had silently won); a flag says
+    the same thing again."""
+    (tmp_path / "show.toml").write_text("old")
+    code, _, err = run(capsys, "init", tmp_path / "show.toml", "--force", "--force")
+    assert code == 0 and (tmp_path / "show.toml").read_text().startswith("# ocioforge spec"), err

@@ -1,4 +1,5 @@
-"""ocioforge convert's arguments: bad input is one line, exit 2, and nothing written."""
+"""ocioforge convert: bad arguments are one line, exit 2, and nothing written; a verified run's
+frames and summary."""
 
 from __future__ import annotations
 
@@ -106,3 +107,61 @@ def test_start_up_imports_no_dask_and_no_image_library():
     )
     result = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=60)
     assert "--scheduler" in result.stdout and result.stdout.strip().splitlines()[-1] == "[]"
+
+
+def test_a_verified_run_writes_acescct_as_colour_science_encodes_it(tmp_path, capsys, build_config, plates):
+    import colour
+    import numpy as np
+
+    code, out, err = run(
+        capsys,
+        "convert",
+        str(plates / "s.####.exr"),
+        "--config",
+        str(build_config((2, 1))),
+        "--from",
+        "ACEScg",
+        "--to",
+        "ACEScct",
+        "--depth",
+        "float",
+        "--verify",
+        "--jobs",
+        "1",
+        "-o",
+        str(tmp_path / "out"),
+    )
+    assert code == 0 and out.count("\n") == 1, err
+    assert out.startswith("2 written, 0 skipped, 0 failed of 2 frames (") and "; verified 2: 0 depart, worst " in out
+    for frame in (1, 2):
+        written, spec = images.read(tmp_path / "out" / f"s.{frame:04d}.exr")
+        source, _ = images.read(plates / f"s.{frame:04d}.exr")
+        expected = colour.models.log_encoding_ACEScct(source[..., :3].astype(np.float64))
+        assert spec.format == "float" and np.allclose(written[..., :3], expected, rtol=0, atol=1e-6)
+        assert np.array_equal(written[..., 3], source[..., 3])
+
+
+def test_a_refused_scheduler_removes_only_the_folder_the_run_made(tmp_path, capsys, build_config, plates):
+    """An address Dask cannot use is refused at once: the output folder the run made is removed,
+    an empty one that was there is kept."""
+    kept = tmp_path / "kept"
+    kept.mkdir()
+    for out in (tmp_path / "made", kept):
+        code, stdout, err = run(
+            capsys,
+            "convert",
+            str(plates / "s.####.exr"),
+            "--from",
+            "ACEScg",
+            "--to",
+            "ACEScct",
+            "--config",
+            str(build_config((2, 1))),
+            "-o",
+            str(out),
+            "--scheduler",
+            "notascheme://x",
+        )
+        assert code == 2 and err.count("\n") == 1 and "--scheduler" in err and "cannot reach" in err, err
+        assert stdout == ""
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["kept"] and not any(kept.iterdir())

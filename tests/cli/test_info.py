@@ -106,3 +106,54 @@ def test_a_name_or_spec_that_is_not_there_is_one_line(capsys, tmp_path, monkeypa
     code, out, err = run(capsys, *argv)
     assert code == 2 and err.startswith("error: ") and err.count("\n") == 1 and words in err, err
     assert out == "" and list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize(
+    "name, encode",
+    [
+        ("ACEScct", "log_encoding_ACEScct"),
+        ("ARRI LogC4", "log_encoding_ARRILogC4"),
+        ("S-Log3 S-Gamut3", "log_encoding_SLog3"),
+        ("V-Log V-Gamut", "log_encoding_VLog"),
+    ],
+)
+def test_mid_grey_is_the_code_colour_science_encodes(capsys, name, encode):
+    import colour
+
+    code, out, _ = run(capsys, "info", name)
+    line = next(line for line in out.splitlines() if line.startswith("18% grey:"))
+    assert code == 0 and abs(float(line.split("code")[1]) - getattr(colour.models, encode)(0.18)) <= 5e-7, line
+
+
+@pytest.mark.parametrize("name, gamut", [("ARRI LogC4", "ARRI Wide Gamut 4"), ("S-Log3 S-Gamut3", "S-Gamut3")])
+def test_primaries_white_and_matrix_to_aces_are_colour_sciences(capsys, name, gamut):
+    """Printed to five decimals (chromaticities) and ten (the matrix, CAT02 as the camera's maker
+    adapts): colour-science's definitions of the gamut."""
+    import re
+
+    import colour
+
+    published = colour.RGB_COLOURSPACES[gamut]
+    code, out, err = run(capsys, "info", name)
+    lines = {line.split(":")[0]: line for line in out.splitlines() if ":" in line}
+    assert code == 0, err
+    primaries = [float(v) for v in re.findall(r"-?\d+\.\d+", lines["primaries"])]
+    white = [float(v) for v in re.findall(r"-?\d+\.\d+", lines["white"])]
+    assert np.allclose(np.reshape(primaries, (3, 2)), published.primaries, rtol=0, atol=5e-6)
+    assert np.allclose(white, published.whitepoint, rtol=0, atol=5e-6)
+    rows = out.split("to ACES2065-1 (CAT02, as its publisher):\n")[1].splitlines()[:3]
+    expected = colour.matrix_RGB_to_RGB(published, colour.RGB_COLOURSPACES["ACES2065-1"], "CAT02")
+    assert np.allclose([[float(v) for v in row.split()] for row in rows], expected, rtol=0, atol=1e-9)
+
+
+def test_a_data_space_has_no_gamut_and_no_transform_in_any_version(capsys):
+    from generator.spec.allowed import newest_ocio_version
+
+    code, out, err = run(capsys, "info", "raw")
+    lines = out.splitlines()
+    assert code == 0 and "name:      Raw" in lines and "encoding:  data" in lines, err
+    assert not [line for line in lines if line.startswith(("gamut:", "primaries:", "curve:", "18% grey:", "to "))]
+    versions = range(1, newest_ocio_version()[1] + 1)
+    assert [line for line in lines if line.startswith("OCIO ")] == [
+        f"OCIO 2.{m}: data (no transform)" for m in versions
+    ]

@@ -66,3 +66,15 @@ def test_a_file_output_in_no_folder_or_naming_one_is_refused_and_makes_nothing(
     code, _, err = run(capsys, "init", name)
     assert code == 2 and err.count("\n") == 1 and words in err, err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["gamuts"] and not any((tmp_path / "gamuts").iterdir())
+
+
+def test_force_replaces_a_spec_with_the_default_one_and_says_what_next(tmp_path, capsys):
+    from generator.spec.load import default_text
+
+    path = tmp_path / "show.toml"
+    path.write_text('name = "old"\n')
+    code, out, err = run(capsys, "init", path, "--force")
+    assert code == 0 and err == "", err
+    assert out == f"{path}: default spec written; edit it, then: ocioforge build {path} -o configs/NAME\n"
+    assert path.read_text(encoding="utf-8") == default_text()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["show.toml"]

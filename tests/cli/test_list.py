@@ -75,3 +75,44 @@ def test_a_spec_that_is_not_there_is_one_line(capsys, tmp_path, monkeypatch, arg
     code, out, err = run(capsys, *argv)
     assert code == 2 and err.startswith("error: ") and err.count("\n") == 1 and words in err, err
     assert out == ""
+
+
+def test_spaces_is_the_default_listing(capsys):
+    assert run(capsys, "list", "--spaces") == run(capsys, "list")
+
+
+def test_on_a_terminal_a_table_of_aligned_columns():
+    """On a terminal (not piped), a table: no tabs, each value under its column's header."""
+    import os
+    import pty
+    import re
+    import subprocess
+    import sys
+
+    from generator.colorimetry import library
+
+    primary, secondary = pty.openpty()
+    listing = subprocess.Popen(
+        [sys.executable, "-m", "generator", "list", "--displays"], stdout=secondary, stderr=subprocess.PIPE
+    )
+    os.close(secondary)
+    chunks = []
+    while True:
+        try:
+            chunk = os.read(primary, 4096)
+        except OSError:  # the terminal's other end closed: all is read
+            break
+        if not chunk:
+            break
+        chunks.append(chunk)
+    os.close(primary)
+    assert listing.wait(timeout=120) == 0, listing.stderr.read()
+    text = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", b"".join(chunks).decode("utf-8"))
+    lines = [line.rstrip() for line in text.replace("\r\n", "\n").splitlines() if line.strip()]
+    assert "\t" not in text and lines[0].split() == ["display", "gamut", "EOTF", "peak", "cd/m²", "aliases"]
+    at = {column: lines[0].index(column) for column in ("gamut", "EOTF")}
+    rows = {line[: at["gamut"]].strip(): line for line in lines[1:]}
+    assert sorted(rows) == sorted(d.name for d in library.DISPLAYS)
+    for display in library.DISPLAYS:
+        assert rows[display.name][at["gamut"] :].startswith(display.gamut + " ")
+        assert rows[display.name][at["EOTF"] :].startswith(display.eotf + " ")

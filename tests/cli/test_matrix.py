@@ -108,3 +108,83 @@ def test_bad_arguments_exit_2_with_one_line(tmp_path, capsys, monkeypatch, argv,
     code, out, err = run(capsys, *argv)
     assert code == 2 and err.startswith("error: ") and err.count("\n") == 1 and words in err, err
     assert out == "" and list(tmp_path.iterdir()) == []
+
+
+#: Each --cat and colour-science's name for the same chromatic adaptation transform.
+CATS = {
+    "Bradford": "Bradford",
+    "CAT02": "CAT02",
+    "CAT16": "CAT16",
+    "von Kries": "Von Kries",
+    "XYZ scaling": "XYZ Scaling",
+    "none": None,
+}
+
+
+@pytest.mark.parametrize("cat", sorted(CATS))
+def test_a_chosen_adaptation_gives_colour_sciences_matrix(capsys, cat):
+    """ACEScg (ACES white) to linear Rec.709 (D65) with each --cat, against colour-science's
+    conversion between its own definitions of the two spaces."""
+    import colour
+
+    spaces = colour.RGB_COLOURSPACES
+    code, out, err = run(capsys, "matrix", "ACEScg", "Linear Rec.709 (sRGB)", "--cat", cat, "--format", "json")
+    expected = colour.matrix_RGB_to_RGB(spaces["ACEScg"], spaces["ITU-R BT.709"], CATS[cat])
+    assert code == 0 and np.allclose(json.loads(out)["matrix"], expected, rtol=0, atol=1e-12), err
+
+
+@pytest.mark.parametrize(
+    "space, gamut",
+    [
+        ("ARRI LogC4", "ARRI Wide Gamut 4"),
+        ("S-Log3 S-Gamut3", "S-Gamut3"),
+        ("DaVinci Intermediate WideGamut", "DaVinci Wide Gamut"),
+    ],
+)
+def test_a_camera_gamut_reaches_aces_through_cat02_without_cat(capsys, space, gamut):
+    """Without --cat, ARRI's, Sony's and Blackmagic's gamuts reach ACES2065-1 through CAT02, the
+    adaptation behind their published matrices (the ACES studio config's for Blackmagic), not
+    the default Bradford, 4e-3 away."""
+    import colour
+
+    spaces = colour.RGB_COLOURSPACES
+    code, out, err = run(capsys, "matrix", space, "ACES2065-1", "--format", "json")
+    matrix = json.loads(out)["matrix"]
+    assert code == 0, err
+    assert np.allclose(
+        matrix, colour.matrix_RGB_to_RGB(spaces[gamut], spaces["ACES2065-1"], "CAT02"), rtol=0, atol=1e-9
+    )
+    assert not np.allclose(matrix, colour.matrix_RGB_to_RGB(spaces[gamut], spaces["ACES2065-1"], "Bradford"), atol=1e-3)
+
+
+def test_the_ocio_snippet_loads_in_opencolorio_as_the_same_matrix(capsys):
+    """The snippet pasted as a colour space's transform: OpenColorIO reads the matrix printed as
+    json, and applies it to column vectors (red goes to the first column)."""
+    import PyOpenColorIO as ocio
+
+    expected = np.array(json.loads(run(capsys, "matrix", "ACEScg", "lin_rec709", "--format", "json")[1])["matrix"])
+    code, snippet, err = run(capsys, "matrix", "ACEScg", "lin_rec709", "--format", "ocio")
+    assert code == 0 and snippet.count("\n") == 1, err
+    config = ocio.Config.CreateFromStream(
+        "ocio_profile_version: 2.1\nroles:\n  default: reference\ncolorspaces:\n"
+        "  - !<ColorSpace>\n    name: reference\n"
+        f"  - !<ColorSpace>\n    name: matrix\n    to_scene_reference: {snippet}"
+    )
+    loaded = np.reshape(
+        config.getColorSpace("matrix").getTransform(ocio.COLORSPACE_DIR_TO_REFERENCE).getMatrix(), (4, 4)
+    )
+    assert np.allclose(loaded[:3, :3], expected, rtol=0, atol=1e-14)
+    assert np.array_equal(loaded[3], [0, 0, 0, 1]) and np.array_equal(loaded[:3, 3], [0, 0, 0])
+    red = config.getProcessor("matrix", "reference").getDefaultCPUProcessor().applyRGB([1.0, 0.0, 0.0])
+    assert np.allclose(red, expected[:, 0], rtol=1e-6, atol=0)
+
+
+def test_the_nuke_node_holds_the_matrix_to_ten_digits_named_by_aliases(capsys):
+    import re
+
+    expected = json.loads(run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "json")[1])["matrix"]
+    code, node, err = run(capsys, "matrix", "ARRI LogC4", "ACEScg", "--format", "nuke")
+    rows = re.findall(r"^ +\{([^{}]+)\}$", node, re.MULTILINE)
+    assert code == 0 and node.startswith("ColorMatrix {\n matrix {\n") and len(rows) == 3, err
+    assert np.allclose([[float(v) for v in row.split()] for row in rows], expected, rtol=1e-9, atol=1e-12)
+    assert node.endswith("\n name arri_logc4_to_lin_ap1\n}\n")

@@ -239,3 +239,24 @@ def test_verify_summary_leaves_each_explained_row_to_the_report(config, tmp_path
     assert "approx: from reference ACES2065-1 -&gt; ADX10 [ocio default]" in page
     results = json.loads((tmp_path / "report" / "summary.json").read_text())["results"]
     assert any(r["verdict"] == "approx" and "OPTIMIZATION_" in r["note"] for r in results)
+
+
+def test_an_engine_named_twice_in_any_case_runs_once_and_the_report_files_are_named(build_config, tmp_path, capsys):
+    report = tmp_path / "report"
+    code, out, err = run(
+        capsys,
+        "verify",
+        build_config((2, 1)),
+        "--engines",
+        " OCIO ,ocio",
+        "--quick",
+        "--only",
+        "ACEScct -> ACES2065-1",
+        "--summary",
+        "--report",
+        report,
+    )
+    assert code == 0, err
+    engines = [engine["name"] for engine in json.loads((report / "summary.json").read_text())["engines"]]
+    assert sorted(engines) == ["ocio default", "ocio lossless"]
+    assert sorted(out.splitlines()[-2:]) == [f"wrote {report / 'report.html'}", f"wrote {report / 'summary.json'}"]
