@@ -61,6 +61,8 @@ def apply_lut3d(lut: Lut3D, rgb, interpolation: str = "linear") -> np.ndarray:
 
     rgb = np.asarray(rgb, dtype=np.float64)
     low, high = lut.domain
-    unit = (np.clip(np.nan_to_num(rgb, nan=0.0), low, high) - low) / (high - low)
+    # scaled onto the lattice first, as OCIO does: a NaN lands on the domain's minimum
+    with np.errstate(invalid="ignore"):
+        unit = np.clip(np.nan_to_num((rgb - low) / (high - low), nan=0.0), 0.0, 1.0)
     interpolate = table_interpolation_tetrahedral if interpolation == "tetrahedral" else table_interpolation_trilinear
     return interpolate(unit, lut.table)

@@ -65,6 +65,18 @@ def test_a_lut_applies_as_ocio_applies_it(tmp_path, name, domain, interpolation)
     np.testing.assert_allclose(ours, through_ocio(path, rgb, interpolation), rtol=0, atol=OCIO_ABSOLUTE)
 
 
+def test_nan_lands_on_the_domain_minimum_as_in_ocio(tmp_path):
+    """OCIO scales a value onto the lattice before it meets a NaN: with DOMAIN_MIN -0.5 a NaN
+    channel reads as -0.5, not as 0."""
+    path = write(tmp_path, "wide.cube", ((-0.5, -0.5, -0.5), (1.5, 1.5, 1.5)))[0]
+    lut = read_lut3d(path)
+    nan = np.array([[np.nan, 0.5, 1.0]])
+    for interpolation in ("linear", "tetrahedral"):
+        minimum = apply_lut3d(lut, [[-0.5, 0.5, 1.0]], interpolation)
+        assert np.array_equal(apply_lut3d(lut, nan, interpolation), minimum)
+        np.testing.assert_allclose(minimum, through_ocio(path, nan, interpolation), rtol=0, atol=OCIO_ABSOLUTE)
+
+
 def test_the_lattice_nodes_give_the_table_and_nan_is_zero_as_in_ocio(tmp_path):
     path = write(tmp_path, "grade.spi3d", size=5)[0]
     lut = read_lut3d(path)
