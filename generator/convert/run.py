@@ -106,12 +106,12 @@ def _on_cluster(plan, sources, report, scheduler, fail_fast) -> list[FrameResult
     try:  # only here: a local run never imports Dask
         from distributed import Client, as_completed
     except ImportError:
-        raise SchedulerError("--scheduler needs Dask: pip install 'ocioforge[dask]'") from None
+        raise SchedulerError("it needs Dask: pip install 'ocioforge[dask]'") from None
     try:
         client = Client(scheduler, timeout=CONNECT_SECONDS)
     except (OSError, TimeoutError, ValueError) as error:
         raise SchedulerError(
-            f"--scheduler {scheduler}: cannot reach it ({error}); allowed: the address of a "
+            f"cannot reach it ({error}); allowed: the address of a "
             "running Dask scheduler, such as tcp://host:8786"
         ) from None
     out = []

@@ -95,6 +95,7 @@ def test_an_unreachable_scheduler_is_refused(tmp_path, capsys, build_config, pla
         "tcp://127.0.0.1:9",
     )
     assert code == 2 and err.count("\n") == 1 and "--scheduler" in err and "cannot reach" in err
+    assert err.count("--scheduler") == 1 and "cannot reach it (" in err, err  # the option named once
     assert not (tmp_path / "out").exists()
 
 
