@@ -20,7 +20,6 @@ The LogCamera curves are in :mod:`generator.colorimetry.camera_logs`.
 
 from __future__ import annotations
 
-from functools import wraps
 from types import MappingProxyType
 
 import numpy as np
@@ -55,17 +54,23 @@ from generator.colorimetry.transfer import (
 HALF_MAX = 65504.0
 
 
-def _colour_models(name: str, **kwargs):
+class _ColourModel:
     """colour.models.<name> with ``kwargs``; colour-science is imported at the first call,
-    not with this module (it takes a second to import)."""
+    not with this module (it takes a second to import). A class, not a closure, so that a
+    curve pickles (verify builds checks in a forked worker)."""
 
-    def call(values):
+    def __init__(self, name: str, **kwargs):
+        self.name, self.kwargs = name, kwargs
+
+    def __call__(self, values):
         import colour.models
 
-        return getattr(colour.models, name)(values, **kwargs)
+        return getattr(colour.models, self.name)(values, **self.kwargs)
 
-    call.__name__ = call.__qualname__ = name
-    return call
+
+def _colour_models(name: str, **kwargs) -> _ColourModel:
+    """:class:`_ColourModel` of colour.models.<name> with ``kwargs``."""
+    return _ColourModel(name, **kwargs)
 
 
 #: Where SMPTE ST 2084 is defined: codes 0 to 1, light 0 to 10000 cd/m² (100 in units of 100 cd/m²).
@@ -86,16 +91,22 @@ def _pq_encode(linear):
     return _colour_models("eotf_inverse_ST2084")(np.clip(np.asarray(linear, dtype=np.float64), 0.0, PQ_PEAK) * 100.0)
 
 
-def _quiet(fn):
-    """``fn`` with floating-point warnings off: colour-science evaluates every
-    branch of a piecewise curve and discards the invalid ones with np.where."""
+class _Quiet:
+    """``fn`` with floating-point warnings off: colour-science evaluates every branch of a
+    piecewise curve and discards the invalid ones with np.where. A class, so it pickles."""
 
-    @wraps(fn)
-    def quiet(values):
+    def __init__(self, fn):
+        self.fn = fn
+        self.__doc__ = fn.__doc__
+
+    def __call__(self, values):
         with np.errstate(all="ignore"):
-            return fn(values)
+            return self.fn(values)
 
-    return quiet
+
+def _quiet(fn) -> _Quiet:
+    """:class:`_Quiet` of ``fn``."""
+    return _Quiet(fn)
 
 
 def _function(name: str, decode, encode, domain=None, discontinuities=()) -> Function:

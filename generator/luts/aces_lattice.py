@@ -77,8 +77,12 @@ class AcesLattice:
     def coordinate(self, ap1) -> np.ndarray:
         """AP1 values (clamped to [0, ``upper``]) to the lattice coordinate in [0, 1], as OCIO
         reads the file: the Log operator, then the 1D table's linear interpolation."""
-        u = self.log.coordinate(np.clip(np.asarray(ap1, dtype=np.float64), 0.0, self.upper))
-        return np.interp(u, np.linspace(0.0, 1.0, self.bend.size), self.bend)
+        position = self.log.coordinate(np.clip(np.asarray(ap1, dtype=np.float64), 0.0, self.upper))
+        position *= self.bend.size - 1
+        # the entries are uniform over [0, 1]: the one below is found by arithmetic, not a search
+        entry = np.clip(np.nan_to_num(position).astype(np.int64), 0, self.bend.size - 2)  # NaN stays NaN below
+        low = self.bend[entry]
+        return low + (position - entry) * (self.bend[entry + 1] - low)
 
     def value(self, u) -> np.ndarray:
         """Lattice coordinates back to AP1 (:meth:`coordinate`'s inverse)."""

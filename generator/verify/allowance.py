@@ -218,9 +218,10 @@ def view_allowance(spec: Spec, src, back, display, view, codes, expected, clip_e
 def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, shifted=None) -> np.ndarray | None:
     """For an ACES 2.0 view a 2.1 to 2.3 config runs from its baked file: the float32 shift of
     the input carried into AP1, plus the file's Log operator's rounding near its toe
-    (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`), moved through the file over a box
-    (:data:`_BOX`) and encoded; then :func:`mapped_allowance`'s shift of the light after it.
-    Near black a pure-power display turns that rounding into codes."""
+    (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`), moved through the file one channel at a
+    time either way and encoded, summed over the channels (to first order a bound); then
+    :func:`mapped_allowance`'s shift of the light after it. Near black a pure-power display
+    turns that rounding into codes."""
     mapped = mapped_allowance(src, back, display, view, codes, expected, shifted)
     if mapped is None:
         return None
@@ -232,21 +233,23 @@ def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, s
     to_xyz = aces_lattice.to_xyz(found)
 
     def encoded(ap1):
-        light = np.clip(aces_lattice.file_output(lat, ap1.reshape(-1, 3)), 0.0, 1.0) @ to_xyz.T
-        return reference.display_xyz_encode(spec, display, light).reshape(ap1.shape)
+        light = np.clip(aces_lattice.file_output(lat, ap1), 0.0, 1.0) @ to_xyz.T
+        return reference.display_xyz_encode(spec, display, light)
 
     with np.errstate(all="ignore"):
-        ap1 = np.nan_to_num(apply_matrix(to_ap1, ref))
+        ap1 = np.nan_to_num(apply_matrix(to_ap1, ref)).reshape(-1, 3)
         reach = (
-            apply_matrix(np.abs(to_ap1 @ back), np.nan_to_num(shift))
+            apply_matrix(np.abs(to_ap1 @ back), np.nan_to_num(shift)).reshape(-1, 3)
             + tolerances.FLOAT32_MATRIX_ROUNDINGS * u * np.abs(ap1)
             + tolerances.ACES_LOG_ROUNDINGS * u * lat.log.toe
         )
-        start = encoded(ap1)
-        box = np.zeros_like(start)
-        for step in _BOX:
-            box = np.maximum(box, np.abs(encoded(ap1 + step * reach) - start))
-    return mapped + np.where(np.isfinite(box), box, 0.0)
+        start = np.nan_to_num(np.asarray(expected, dtype=np.float64).reshape(-1, 3))
+        moved = np.zeros_like(start)
+        for channel in range(3):
+            step = np.zeros_like(ap1)
+            step[:, channel] = reach[:, channel]
+            moved += np.maximum(np.abs(encoded(ap1 + step) - start), np.abs(encoded(ap1 - step) - start))
+    return mapped + np.where(np.isfinite(moved), moved, 0.0).reshape(np.shape(mapped))
 
 
 def lattice_allowance(
