@@ -111,8 +111,7 @@ def _on_cluster(plan, sources, report, scheduler, fail_fast) -> list[FrameResult
         client = Client(scheduler, timeout=CONNECT_SECONDS)
     except (OSError, TimeoutError, ValueError) as error:
         raise SchedulerError(
-            f"cannot reach it ({error}); allowed: the address of a "
-            "running Dask scheduler, such as tcp://host:8786"
+            f"cannot reach it ({error}); allowed: the address of a running Dask scheduler, such as tcp://host:8786"
         ) from None
     out = []
     with client:

@@ -45,5 +45,3 @@ def test_axis_inverts(default_spec):
     x = np.concatenate([-np.logspace(-5, np.log10(16), 40), np.logspace(-5, np.log10(32), 40)])
     np.testing.assert_allclose(axis.position(axis.index(x)), x, rtol=1e-9, atol=1e-14)
     assert np.all(np.diff(axis.index(np.sort(x))) > 0)
-
-

@@ -93,5 +93,3 @@ def test_each_space_decodes_with_its_own_curve(slugging_alike):
 
 def test_library_curves_slug_apart():
     assert len({slug(name) for name in CURVES}) == len(CURVES)
-
-
