@@ -237,26 +237,6 @@ def test_a_failed_bake_leaves_no_file(tmp_path, monkeypatch):
     assert result.exit_code != 0 and list(tmp_path.iterdir()) == []
 
 
-def test_a_failed_write_leaves_no_file(tmp_path, monkeypatch):
-    from generator import files as writer
-    from generator.luts import bake
-
-    files = {tmp_path / "a.spi3d": b"1", tmp_path / "a.spi1d": b"2"}
-    real_replace = writer.os.replace
-    calls = []
-
-    def failing(src, dst):
-        calls.append(dst)
-        if len(calls) == 1:
-            raise OSError("no space")
-        real_replace(src, dst)
-
-    monkeypatch.setattr(writer.os, "replace", failing)
-    with pytest.raises(writer.CannotWrite, match="a.spi3d: cannot write: no space"):
-        bake.write(files)
-    assert list(tmp_path.iterdir()) == []
-
-
 def test_an_unwritable_output_is_one_line_and_exit_2(tmp_path, bake_exits):
     """A folder where the LUT file should go cannot be replaced, for any user: the path and the
     OS's reason on one line, exit status 2, the folder and its contents untouched."""

@@ -182,15 +182,6 @@ def test_an_engine_named_but_not_installed_fails_the_run(config, blender_missing
     assert "not run (asked for by --engines): blender" in result.output
 
 
-def test_an_engine_of_the_default_list_not_installed_is_reported_as_not_run(config, blender_missing):
-    from generator.verify.run import verify as verify_config
-
-    default = verify_config(config, ("ocio", "blender"), density="quick", only="ACEScct -> ACES2065-1")
-    named = verify_config(config, ("ocio", "blender"), density="quick", only="ACEScct -> ACES2065-1", strict=True)
-    assert default.passed and default.missing == ["blender"]
-    assert not named.passed
-
-
 def test_verify_takes_a_builds_folder_for_its_config(config, capsys, tmp_path):
     from generator.cli import main
 

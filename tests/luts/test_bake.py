@@ -295,3 +295,22 @@ def test_a_scale_clf_at_its_smallest_size_is_exact(default_spec, tmp_path):
         default_spec, req.source, req.display, "scale", probes.ocio_apply(_transform(_write(tmp_path, req))), count=1024
     )
     assert max(f.maximum for f in figures.values()) <= tolerances.LUT_CLF_EXACT_CODES
+
+
+def test_a_failed_write_leaves_no_file(tmp_path, monkeypatch):
+    from generator import files as writer
+
+    files = {tmp_path / "a.spi3d": b"1", tmp_path / "a.spi1d": b"2"}
+    real_replace = writer.os.replace
+    calls = []
+
+    def failing(src, dst):
+        calls.append(dst)
+        if len(calls) == 1:
+            raise OSError("no space")
+        real_replace(src, dst)
+
+    monkeypatch.setattr(writer.os, "replace", failing)
+    with pytest.raises(writer.CannotWrite, match="a.spi3d: cannot write: no space"):
+        bake.write(files)
+    assert list(tmp_path.iterdir()) == []

@@ -120,3 +120,18 @@ def test_a_run_passes_when_something_was_compared_nothing_failed_and_strict_ever
     assert _verification([passed, not_run], [ran, absent, extra]).missing == ["ocioconvert"]
     assert not _verification([passed, not_run], [ran, absent], strict=True).passed
     assert _verification([passed], [ran, extra], strict=True).passed
+
+
+def test_an_engine_of_the_default_list_not_installed_is_reported_as_not_run(build_config, monkeypatch):
+    """Blender absent (and not on CI, where any engine missing fails the run): not run by
+    default, a failure when named (strict)."""
+    from generator.verify import run as verify_run
+    from generator.verify.blender import BlenderEngine
+
+    monkeypatch.setattr(BlenderEngine, "missing", lambda self, config: "blender is not installed")
+    monkeypatch.setattr(verify_run, "ON_CI", False)
+    config = build_config((2, 1))
+    default = verify_run.verify(config, ("ocio", "blender"), density="quick", only="ACEScct -> ACES2065-1")
+    named = verify_run.verify(config, ("ocio", "blender"), density="quick", only="ACEScct -> ACES2065-1", strict=True)
+    assert default.passed and default.missing == ["blender"]
+    assert not named.passed
