@@ -35,13 +35,14 @@ def main():
     loaded, status = {}, {}
     for job in request["jobs"]:
         try:
-            if job["input"] not in loaded:
-                image = bpy.data.images.load(job["input"])
+            key = (job["input"], job["src"])  # one image per file and colour space: a second space is its own
+            if key not in loaded:
+                image = bpy.data.images.load(job["input"], check_existing=False)
                 image.colorspace_settings.name = job["src"]
-                loaded[job["input"]] = image
+                loaded[key] = image
             scene.display_settings.display_device = job["display"]
             scene.view_settings.view_transform = job["view"]
-            loaded[job["input"]].save_render(job["output"], scene=scene)
+            loaded[key].save_render(job["output"], scene=scene)
             status[job["output"]] = "ok"
         except Exception as error:  # Blender raises TypeError / RuntimeError with a message
             status[job["output"]] = f"{type(error).__name__}: {error}"

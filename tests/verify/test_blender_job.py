@@ -5,6 +5,8 @@ exposure or curve), and each job's status written, a job Blender refuses failing
 from __future__ import annotations
 
 import json
+import os
+import subprocess
 
 import numpy as np
 import OpenImageIO as oiio
@@ -12,6 +14,8 @@ import PyOpenColorIO as ocio
 
 from generator import tolerances
 from generator.verify import images
+from generator.verify.blender import SCRIPT
+from tests.conftest import require_program
 
 
 def _request(workdir) -> tuple[list[dict], dict]:
@@ -57,3 +61,19 @@ def test_a_render_is_the_view_transform_alone(build_config, blender_run):
         assert step == tolerances.UINT16_STEP
         departure = np.abs(rendered[finite] - np.clip(pixels, 0.0, 1.0))
         assert np.median(departure) <= 0.5 * step and departure.max() <= 8 * step, (job, departure.max() / step)
+
+
+def test_a_file_loaded_again_in_another_space_is_an_image_of_its_own(build_config, blender_run, tmp_path):
+    """Two jobs on one probe file: the second, in a space the config lacks, fails on its own
+    account, not passing on the image the first one loaded."""
+    first = _request(blender_run[2])[0][0]
+    outputs = [tmp_path / "first.png", tmp_path / "second.png"]
+    jobs = [dict(first, output=str(outputs[0])), dict(first, src="No Such Space", output=str(outputs[1]))]
+    request, status = tmp_path / "jobs.json", tmp_path / "status.json"
+    request.write_text(json.dumps({"jobs": jobs, "status": str(status)}), encoding="utf-8")
+    command = [require_program("blender"), "-b", "--factory-startup", "--python", str(SCRIPT), "--", str(request)]
+    env = {**os.environ, "OCIO": str(build_config((2, 1)))}
+    subprocess.run(command, env=env, capture_output=True, check=False, timeout=300)
+    result = json.loads(status.read_text(encoding="utf-8"))
+    assert result[str(outputs[0])] == "ok"
+    assert 'enum "No Such Space" not found' in result[str(outputs[1])]
