@@ -1,8 +1,9 @@
 """Probe colours: what the verifier feeds every engine, each family named.
 
 Code families sample one colour space's encoding directly: neutral ramps over
-its code range, a 3D lattice offset by half a cell (so no probe sits on a node
-of a LUT an engine may build), random codes, and for a baked curve its LUT's
+its code range, a 3D lattice at the centres of n equal cells (between the nodes
+of an (n+1)-node LUT; the centre code 0.5 of an odd n is a node of 17-, 33- and
+65-node LUTs), random codes, and for a baked curve its LUT's
 nodes and the points between them. Scene families are colours given in the
 scene reference, encoded into whichever space a check starts from: the
 ColorChecker computed from reflectance spectra (ISO 17321-1) under D65 and
