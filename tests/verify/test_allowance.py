@@ -14,6 +14,7 @@ from generator.verify.allowance import (
     builtin_encoding_allowance,
     float32_allowance,
     pq_table_departure,
+    view_allowance,
     with_encoding,
 )
 from generator.verify.check import VIEW
@@ -180,3 +181,29 @@ def test_only_an_encoding_ocio_tabulates_adds_to_the_allowance(spec):
     np.testing.assert_array_equal(with_encoding(None, spec, pq, codes), encoding)
     assert builtin_encoding_allowance(spec, srgb, codes) is None
     assert with_encoding(base, spec, srgb, codes) is base and with_encoding(base, spec, pq, None) is base
+
+
+def test_the_baked_aces_allowance_bounds_what_ocio_departs_by_near_black(build_config, spec):
+    """ACES2065-1 near black through the baked ACES 2.0 SDR view on Gamma 2.6, lossless: OCIO's
+    float32 sum of AP1 and the Log operator's toe cannot resolve 1e-9, which the pure power
+    turns into codes over the tolerance; the allowance holds every departure, tightly (the
+    largest reaches a tenth of it or more)."""
+    display = next(d for d in spec.displays if d.name == "Gamma 2.6 P3-D65 - Display")
+    view = "ACES 2.0 - SDR 100 nits (Rec.709)"
+    ends = paths.LazyEndpoints(spec)
+    src, target = ends["ACES2065-1"], ends[display.name]
+    rng = np.random.default_rng(9)
+    count = 3000
+    aces = rng.random((count, 3)) * 10.0 ** rng.uniform(-10.0, -5.0, (count, 1))
+    aces[np.arange(count), rng.integers(0, 3, count)] = 0.0
+    aces = aces.astype(np.float32).astype(np.float64)
+    expected = paths.aces_view_function(spec, display, view)(src.linear(aces) @ src.matrix.T)
+    allowance = view_allowance(spec, src, target.matrix, display, view, aces, expected, target.encode)
+    cfg = ocio.Config.CreateFromFile(str(build_config((2, 1))))
+    processor = cfg.getProcessor(src.name, display.name, view, ocio.TRANSFORM_DIR_FORWARD)
+    pixels = np.ascontiguousarray(aces, dtype=np.float32)
+    processor.getOptimizedCPUProcessor(ocio.OPTIMIZATION_LOSSLESS).applyRGB(pixels)
+    departure = np.abs(pixels - expected)
+    assert departure.max() > tolerances.ANALYTIC_RELATIVE * tolerances.RELATIVE_FLOOR  # needed: over the tolerance
+    assert np.all(departure <= allowance), np.max(departure - allowance)
+    assert np.max(departure / np.maximum(allowance, 1e-12)) >= 0.1
