@@ -2,8 +2,13 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
+import signal
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import pytest
 
@@ -67,3 +72,39 @@ def test_a_pool_never_used_starts_no_worker_and_a_closed_one_starts_anew():
         assert pool.result("b", _where, 2)[0] == 2
     finally:
         pool.close()
+
+
+#: A process that forks a worker, has it write its pid and wait, then waits itself.
+ORPHANING = """
+import os, sys, time
+from generator.luts.pool import Pool
+
+def wait(path):
+    with open(path, "w") as handle:
+        handle.write(str(os.getpid()))
+    time.sleep(600)
+
+pool = Pool(1)
+pool.submit("w", wait, sys.argv[1])
+time.sleep(600)
+"""
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="the parent's death reaches a worker on Linux")
+def test_a_worker_ends_when_the_process_that_forked_it_is_killed(tmp_path):
+    """A build killed outright (SIGKILL) runs no clean-up: its workers must not wait forever."""
+    marker = tmp_path / "worker.pid"
+    parent = subprocess.Popen([sys.executable, "-c", ORPHANING, str(marker)])
+    deadline = time.monotonic() + 60
+    while not (marker.is_file() and marker.read_text()) and time.monotonic() < deadline:
+        time.sleep(0.02)
+    worker = int(marker.read_text())
+    parent.send_signal(signal.SIGKILL)
+    parent.wait()
+    deadline = time.monotonic() + 10
+    while Path(f"/proc/{worker}").exists() and time.monotonic() < deadline:
+        time.sleep(0.02)
+        with contextlib.suppress(ChildProcessError):
+            os.waitpid(worker, os.WNOHANG)  # not ours to reap: init reaps it
+    status = Path(f"/proc/{worker}/stat")
+    assert not status.exists() or status.read_text().split()[2] == "Z", "the worker outlived its parent"
