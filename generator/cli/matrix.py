@@ -40,8 +40,10 @@ def _ocio_snippet(matrix) -> str:
 
 
 def _node_name(space) -> str:
-    """The space's (or display's) first alias usable as a node name (letters, digits, underscores)."""
-    return next((a for a in space.aliases if a.replace("_", "").isalnum()), slug(space.name))
+    """The space's (or display's) first alias usable in a Nuke node name (ASCII letters, digits and
+    underscores, not starting with a digit), else its name's slug, an underscore before a digit."""
+    name = next((a for a in space.aliases if a.isascii() and a.isidentifier()), slug(space.name))
+    return f"_{name}" if name[:1].isdigit() else name
 
 
 @dataclass(frozen=True)

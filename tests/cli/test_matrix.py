@@ -188,3 +188,20 @@ def test_the_nuke_node_holds_the_matrix_to_ten_digits_named_by_aliases(capsys):
     assert code == 0 and node.startswith("ColorMatrix {\n matrix {\n") and len(rows) == 3, err
     assert np.allclose([[float(v) for v in row.split()] for row in rows], expected, rtol=1e-9, atol=1e-12)
     assert node.endswith("\n name arri_logc4_to_lin_ap1\n}\n")
+
+
+def test_a_nuke_node_name_is_ascii_and_starts_with_no_digit(tmp_path, capsys):
+    """Nuke names nodes with ASCII letters, digits and underscores, not starting with a digit: an
+    alias with an accent is passed over, and a name starting with a digit gets an underscore."""
+    (tmp_path / "show.toml").write_text(
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[custom_space]]\nname = "709 Caméra"\naliases = ["caméra"]\n'
+        'primaries = [[0.64, 0.33], [0.30, 0.60], [0.15, 0.06]]\nwhite = "D65"\n',
+        encoding="utf-8",
+    )
+    code, node, err = run(
+        capsys, "matrix", "709 Caméra", "ACEScg", "--spec", str(tmp_path / "show.toml"), "--format", "nuke"
+    )
+    name = next(line.split()[1] for line in node.splitlines() if line.strip().startswith("name "))
+    assert code == 0 and name == "_709_camera_to_" + name.split("_to_")[1], (node, err)
+    assert name.isascii() and name.isidentifier()
