@@ -185,12 +185,30 @@ def shaper_table(lat: Lattice) -> np.ndarray:
 
 
 def preimages(size: int, shaper: np.ndarray | None, domain: tuple[float, float]) -> np.ndarray:
-    """Input values landing exactly on each node: the inverse of the written table."""
+    """Input values landing exactly on each node: the inverse of the written table.
+
+    The table (non-decreasing, its entries uniform over ``domain``) is read by linear
+    interpolation. A coordinate a flat run of the table takes (repeated values, as where a
+    shaper is clamped at either end) lands on the run's first entry; any other lies strictly
+    inside one rising segment, from the last entry of a run to the next entry, and has a single
+    preimage there. Coordinates beyond the table's values land where it first reaches its end."""
     u = np.arange(size, dtype=np.float64) / (size - 1)
-    entries = np.linspace(domain[0], domain[1], shaper.size if shaper is not None else 2)
     table = shaper if shaper is not None else np.array([0.0, 1.0])
-    increasing = np.concatenate([[True], np.diff(table) > 0])  # drop flat runs: keep the first entry of each
-    return np.interp(u, table[increasing], entries[increasing])
+    return _table_preimages(u, table, np.linspace(domain[0], domain[1], table.size))
+
+
+def _table_preimages(u: np.ndarray, table: np.ndarray, entries: np.ndarray) -> np.ndarray:
+    """Where the piecewise-linear curve through (``entries``, ``table``) takes the values ``u``
+    (``table`` non-decreasing, ``entries`` increasing): :func:`preimages`'s reading, with
+    np.interp's arithmetic on each rising segment (np.interp itself cannot take a flat run's
+    two ends, one x value twice, as breakpoints)."""
+    u = np.clip(u, table[0], table[-1])
+    above = np.searchsorted(table, u, side="left")  # first entry at or above u: a run's first
+    exact = table[above] == u
+    below = np.where(exact, above, above - 1)  # else strictly below u: the last entry of its run
+    rise = np.where(exact, 1.0, table[above] - table[below])  # never 0 off the table's values
+    slope = (entries[above] - entries[below]) / rise
+    return slope * (u - table[below]) + entries[below]
 
 
 def coordinates(lat: Lattice, code) -> np.ndarray:

@@ -119,6 +119,35 @@ def test_preimages_of_a_table_clamped_at_its_top_are_where_a_reader_finds_the_no
     assert values[-1] == pytest.approx(np.linspace(*domain, shaper.size)[-3], abs=1e-15)
 
 
+#: Float64 rounding of a preimage read back through the table: a few roundings of values up to 1.
+FLOAT64_READ_BACK = 4 * np.finfo(np.float64).eps
+
+
+@pytest.mark.parametrize(
+    "shaper, first_of_runs",
+    [
+        (np.array([0.0, 0.0, 0.0, 0.2, 0.5, 1.0]), {0.0: 0}),  # flat run at the start
+        (np.array([0.0, 0.2, 0.5, 1.0, 1.0, 1.0]), {1.0: 3}),  # at the end
+        (np.array([0.0, 0.0, 0.3, 0.3, 0.3, 0.7, 1.0, 1.0]), {0.0: 0, 0.3: 2, 1.0: 6}),  # both, and between
+    ],
+)
+def test_preimages_of_a_table_with_flat_runs_are_read_back_to_the_nodes(shaper, first_of_runs):
+    """A coordinate just above a flat run lies on the segment rising from the run's last entry,
+    not its first: a reader interpolating the uniform entries takes every preimage back to its
+    node, and a run's own value lands on the run's first entry."""
+    domain = (-0.5, 3.0)
+    entries = np.linspace(*domain, shaper.size)
+    size = 41
+    values = lattice.preimages(size, shaper, domain)
+    u = np.arange(size) / (size - 1)
+    np.testing.assert_allclose(np.interp(values, entries, shaper), u, rtol=0, atol=FLOAT64_READ_BACK)
+    lat = lattice.Lattice(None, None, "clip", None, None, None, domain, shaper, np.zeros((2, 2, 2, 3)))
+    np.testing.assert_allclose(lattice.coordinates(lat, values), u, rtol=0, atol=FLOAT64_READ_BACK)
+    assert np.all(np.diff(values) > 0)
+    for value, entry in first_of_runs.items():
+        assert values[np.isclose(u, value, rtol=0, atol=1e-15)] == pytest.approx(entries[entry], abs=1e-15)
+
+
 def test_a_grid_is_red_major(default_spec):
     axis = np.array([0.0, 0.5, 2.0])
     expected = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1)
