@@ -3,10 +3,15 @@ errors were measured, and a table row per file with the figures measured on it.
 
 The text is assembled from blocks: a block about a format or a gamut mapping is included
 when the pack holds such files, so that the default pack's README (the repository's luts/)
-is what it was when one function wrote it.
+is what it was when one function wrote it. Every sentence about a format is said only of a
+pack holding files of that format.
 """
 
 from __future__ import annotations
+
+from pathlib import Path
+
+from generator.luts.bake import FORMATS
 
 TITLE = """# ocioforge standalone LUTs
 
@@ -51,7 +56,14 @@ CLF_NOTE = """* `.clf`: Academy/ASC Common LUT Format v3, 32-bit float: the sour
 
 PREFER_CLF = """Prefer the `.clf` wherever the host reads CLF: a `.cube` holds no matrix, so its
 lattice, in the source's own axes, interpolates across the display's clipping
-planes, and its errors (below) are three orders of magnitude larger. A linear
+planes, and its errors (below) are three orders of magnitude larger. """
+
+#: :data:`PREFER_CLF` for a pack without CLF files.
+CUBE_AXES = """A `.cube` holds no matrix: its lattice, in the source's own axes, interpolates
+across the display's clipping planes. """
+
+#: A linear source's `.cube` near black, after :data:`PREFER_CLF` or :data:`CUBE_AXES`.
+CUBE_BLACK = """A linear
 source's `.cube` is also coarse near black: its shaper table, uniform in linear
 values, steps by 1/{shaper_steps} of its range (1e-3 of the peak), and a grey
 darker than that is interpolated between black and that step, linearly in light:
@@ -72,23 +84,35 @@ largest channel's difference times 1023; Rec.2100-PQ: ΔE ITP (ITU-R BT.2124).
 set p99" is the largest of the four sets' 99th percentiles (above the p99 of all
 probes pooled), "All probes max" the largest error of all four sets, and "All
 probes max, default flags" the same read with OCIO's default optimisation, as most
-hosts run it: its fast approximations of pow, log and exp (measured: pow within
-a relative 7e-6, log2 within 1.5e-5) move a CLF's decoding curve and its Log
-operator, most where they meet a pure-power display's steep toe (the ARRI LogC4
-rows below); a `.cube` holds only tables and reads the same either way.
+hosts run it{flags}.
 
 These are the largest errors on the probes, not bounds over the gamut: random
 colours seldom have a display channel at or near 0, and colours on those faces
-and edges of the display's RGB cube err more. On an SDR `.cube` between
-different gamuts that is tens of ten-bit codes more than its in-gamut figure
-below; on a CLF for a pure-power display (Rec.1886, Gamma 2.6), up to a few codes
-where a display channel is exactly 0, and with OCIO's default flags black itself
-from a log source, whose black their fast exp decodes to a little above 0 (ARRI
-LogC4: 1.9 codes on Gamma 2.6; exactly 0 read as written).
+and edges of the display's RGB cube err more.{faces}
 
 | File | Source | Destination | Method | Size | In-gamut probes max | Worst set p99 | All probes max | All probes max, default flags | Unit | Worst set p99, trilinear |
 | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |
 """
+
+#: What OCIO's default flags do to a CLF, after "as most hosts run it".
+CLF_FLAGS = """: its fast approximations of pow, log and exp (measured: pow within
+a relative 7e-6, log2 within 1.5e-5) move a CLF's decoding curve and its Log
+operator, most where they meet a pure-power display's steep toe (the ARRI LogC4
+rows below)"""
+
+#: The same of files holding tables alone (``{files}``: their suffixes), after :data:`CLF_FLAGS` or alone.
+TABLE_FLAGS = "{lead} a {files} holds only tables and reads the same either way"
+
+#: How much more colours on the display cube's faces err in files holding tables alone.
+TABLE_FACES = """ On an SDR {files} between
+different gamuts that is tens of ten-bit codes more than its in-gamut figure
+below"""
+
+#: The same in a CLF, after :data:`TABLE_FACES` ("; on") or alone ("On", "that is").
+CLF_FACES = """{lead} a CLF for a pure-power display (Rec.1886, Gamma 2.6){that} up to a few codes
+where a display channel is exactly 0, and with OCIO's default flags black itself
+from a log source, whose black their fast exp decodes to a little above 0 (ARRI
+LogC4: 1.9 codes on Gamma 2.6; exactly 0 read as written)"""
 
 ACES_HEAD = """
 ## ACES 2.0 views
@@ -157,26 +181,68 @@ def joined_sizes(sizes) -> str:
     return "³ or ".join(str(s) for s in sorted(set(sizes)))
 
 
+def table_suffixes(formats) -> str:
+    """The suffixes of the ``formats`` whose files hold tables alone (no matrix), as the text
+    names them, each in backquotes, joined by "or" (.cube or .spi3d); empty for none."""
+    suffixes = dict.fromkeys(FORMATS[f].suffix for f in formats if not FORMATS[f].matrix)
+    return " or ".join(f"`{s}`" for s in suffixes)
+
+
+def errors(formats, ocio: str, count: int) -> str:
+    """The errors' text and the table's header, with the sentences of the ``formats`` present."""
+    clf, tables = "clf" in formats, table_suffixes(formats)
+    flags = CLF_FLAGS if clf else ""
+    faces = ""
+    if tables:
+        flags += TABLE_FLAGS.format(lead=";" if clf else ":", files=tables)
+        faces = TABLE_FACES.format(files=tables)
+    if clf:
+        faces += CLF_FACES.format(lead="; on" if tables else "\nOn", that="," if tables else " that is")
+    return ERRORS.format(ocio=ocio, count=count, flags=flags, faces=faces + "." if faces else "")
+
+
 def gamut_head(methods, formats, cube_sizes, clf_sizes, **figures) -> str:
     """The gamut-mapped files' section, up to its table's header: ``methods`` and ``formats``
-    those of the files, in the pack's order; ``figures`` fill the errors' text."""
+    those of the files, in the pack's order; ``figures`` fill the errors' text. A sentence
+    about a format is there only when ``formats`` holds it."""
     text = INTRO + "".join(f"Gamut mapping: **{m}** " + METHOD_NOTES[m] for m in methods)
-    if "resolve_cube" in formats:
-        text += CUBE_NOTE.format(cube_size=joined_sizes(cube_sizes))
+    notes = [CUBE_NOTE.format(cube_size=joined_sizes(cube_sizes))] if "resolve_cube" in formats else []
     if "clf" in formats:
-        text += CLF_NOTE.format(clf_size=joined_sizes(clf_sizes))
-    others = "".join(OTHER_NOTES[f] for f in formats if f in OTHER_NOTES)
-    text += others + ("\n" if others else "")
+        notes.append(CLF_NOTE.format(clf_size=joined_sizes(clf_sizes)).rstrip("\n") + "\n")
+    notes += [OTHER_NOTES[f] for f in formats if f in OTHER_NOTES]
+    text += "".join(notes) + "\n"  # one list, then a blank line
     if "resolve_cube" in formats:
-        text += PREFER_CLF.format(shaper_steps=figures["shaper_steps"])
-    return text + ERRORS.format(ocio=figures["ocio"], count=figures["count"])
+        text += (PREFER_CLF if "clf" in formats else CUBE_AXES) + CUBE_BLACK.format(
+            shaper_steps=figures["shaper_steps"]
+        )
+    return text + errors(formats, figures["ocio"], figures["count"])
+
+
+def format_notes(text: str, suffixes) -> str:
+    """``text`` without the notes of formats whose files are absent: a line starting
+    ``* `.suffix``` and the indented lines after it, for a suffix not in ``suffixes``."""
+    kept, keep = [], True
+    for line in text.splitlines(keepends=True):
+        if line.startswith("* `."):
+            keep = line[len("* `") :].split("`")[0] in suffixes
+        elif not line.startswith("  "):
+            keep = True
+        if keep:
+            kept.append(line)
+    return "".join(kept)
+
+
+def row_suffix(row: str) -> str:
+    """The suffix of the file a README row names in its first cell."""
+    return Path(row.split("|")[1].strip()).suffix
 
 
 def readme(gamut: str, gamut_rows: list[str], aces: str, aces_rows: list[str]) -> str:
-    """The whole README: the title, then each section that has rows."""
+    """The whole README: the title, then each section that has rows; the ACES section (its head
+    ``aces`` as :data:`ACES_HEAD` gives it) without the notes of formats none of its rows have."""
     text = TITLE
     if gamut_rows:
         text += gamut + "".join(gamut_rows)
     if aces_rows:
-        text += aces + "".join(aces_rows)
+        text += format_notes(aces, {row_suffix(r) for r in aces_rows}) + "".join(aces_rows)
     return text
