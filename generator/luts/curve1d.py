@@ -92,10 +92,12 @@ def _lut_errors(curve, domain, size: int, jumps=()) -> tuple[float, float]:
     return worst[0], worst[1]
 
 
-def _smallest(curve, jumps) -> tuple[int, float]:
+def _smallest(curve, jumps, limit: int = MAX_SIZE) -> tuple[int, float]:
+    """The smallest size from MIN_SIZE doubling to ``limit`` meeting the bound, with its error
+    (``limit`` and its error when none does)."""
     size = MIN_SIZE
     while (error := max(_lut_errors(curve, (0.0, 1.0), size + 1, jumps))) > tolerances.BAKED_CURVE_RELATIVE / 2:
-        if size >= MAX_SIZE:
+        if size >= limit:
             break
         size *= 2
     return size, error
@@ -130,8 +132,13 @@ def bake_curve(name: str, curve, domain) -> BakedCurve:
         error = max(_lut_errors(shaped, (0.0, 1.0), rows + 1, jumps))
         candidates.append((error > tolerances.BAKED_CURVE_RELATIVE / 2, False, rows, error, -1, shaped))
     for k in SHAPER_EXPONENTS:
+        # rows within bound win over any shaper, and a shaper only wins at a size no larger than
+        # the best within bound so far: search no further than that
+        passing = [c[2] for c in candidates if not c[0]]
+        if any(not c[0] and not c[1] for c in candidates):
+            break
         shaped = _Shaped(curve, (lo, hi), k)
-        size, error = _smallest(shaped, tuple(j ** (1.0 / k) for j in jumps))
+        size, error = _smallest(shaped, tuple(j ** (1.0 / k) for j in jumps), min(passing, default=MAX_SIZE))
         candidates.append(
             (error > tolerances.BAKED_CURVE_RELATIVE / 2, True, size, error, SHAPER_EXPONENTS.index(k), shaped)
         )

@@ -130,3 +130,30 @@ def test_a_curve_over_another_domain_is_sampled_over_it():
     baked = bake_curve("Wide", curve, curve.domain)
     assert baked.domain == (-0.25, 1.5) and baked.shaper == 1.0
     np.testing.assert_allclose(baked.values, 2.0 * np.linspace(-0.25, 1.5, len(baked.values)), rtol=1e-7)
+
+
+def test_the_search_stops_at_the_best_size_and_chooses_as_a_search_of_every_size(default_spec):
+    """A shaper is searched no further than the smallest size within bound found so far, and not
+    at all after rows within bound: every curve the default 2.1 build bakes gets the LUT that
+    searching every shaper to MAX_SIZE picks."""
+    from generator.luts import curve1d
+    from generator.ocio.curves import is_baked
+
+    bound = tolerances.BAKED_CURVE_RELATIVE / 2
+    owners = [(s.curve_name, s.curve) for s in default_spec.colour_spaces if not (s.is_data or s.special)]
+    baked = {name: curve for name, curve in owners if is_baked(name, curve, (2, 1))}
+    assert len(baked) >= 5
+    for name, curve in baked.items():
+        lo, hi = curve.domain
+        jumps = tuple((j - lo) / (hi - lo) for j in getattr(curve, "discontinuities", ()))
+        everything = []
+        rows = curve1d._row_intervals(curve, (lo, hi))
+        if rows:
+            error = max(curve1d._lut_errors(curve1d._Shaped(curve, (lo, hi), 1.0), (0.0, 1.0), rows + 1, jumps))
+            everything.append((error > bound, False, rows, error, -1, 1.0))
+        for index, k in enumerate(curve1d.SHAPER_EXPONENTS):
+            size, error = curve1d._smallest(curve1d._Shaped(curve, (lo, hi), k), tuple(j ** (1.0 / k) for j in jumps))
+            everything.append((error > bound, True, size, error, index, k))
+        *_, size, error, _, shaper = min(everything)
+        chosen = bake_curve(name, curve, (lo, hi))
+        assert (len(chosen.values) - 1, chosen.shaper, chosen.max_relative_error) == (size, shaper, error), name
