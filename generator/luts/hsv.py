@@ -128,11 +128,6 @@ def apply(lat: HsvLattice, values: np.ndarray, weight_bits: int | None = None) -
     return np.stack([kappa_to_hue(mapped[:, 0], weights), mapped[:, 1], np.clip(mapped[:, 2], 0.0, 1.0)], axis=-1)
 
 
-def _significant(values: np.ndarray, digits: int) -> np.ndarray:
-    """``values`` rounded to ``digits`` significant digits (as text, which numpy cannot vectorise)."""
-    return np.array([float(f"{v:.{digits}g}") for v in values.ravel().tolist()]).reshape(values.shape)
-
-
 def hsv_clf(lat: HsvLattice, identifier: str, description: str) -> bytes:
     """The CLF of ``lat``, written by OCIO (:mod:`generator.luts.clf`): Matrix (hue back from the
     shared table's ``H / 6``), LUT1D (hue to ``kappa``; the other coordinates pass), LUT3D
@@ -140,7 +135,7 @@ def hsv_clf(lat: HsvLattice, identifier: str, description: str) -> bytes:
     steps = [
         transforms.matrix_transform(np.diag([SHARED_SCALE, 1.0, 1.0])),
         transforms.lut1d(numbers.rounded(lat.pre, HSV_TABLE_DECIMALS)),
-        transforms.lut3d(_significant(lat.cube, HSV_DIGITS), ocio.INTERP_LINEAR),
+        transforms.lut3d(numbers.significant(lat.cube, HSV_DIGITS), ocio.INTERP_LINEAR),
         transforms.lut1d(numbers.rounded(lat.post, HSV_TABLE_DECIMALS)),
     ]
     return clf_file(steps, identifier, description)
@@ -151,7 +146,7 @@ def shared_steps() -> list:
     then one half-domain LUT1D (:func:`shared_table`)."""
     matrix = transforms.matrix_transform(np.diag([1.0, -1.0, 1.0]), offset=[0.0, 2.0, 0.0])
     matrix.setFileOutputBitDepth(ocio.BIT_DEPTH_F16)  # the LUT1D after it reads half floats
-    return [matrix, transforms.lut1d(_significant(shared_table(), HSV_DIGITS), half_domain=True)]
+    return [matrix, transforms.lut1d(numbers.significant(shared_table(), HSV_DIGITS), half_domain=True)]
 
 
 @lru_cache(maxsize=1)

@@ -48,3 +48,26 @@ def test_a_number_is_text_that_reads_back_to_the_same_float():
         assert float(numbers.number(value)) == value
     assert numbers.number(0.0) == numbers.number(-0.0) == "0"
     assert numbers.number(-0.0078125) == "-0.0078125"
+
+
+@pytest.mark.parametrize("digits", [1, 3, 6, 9])
+def test_significant_rounds_as_pythons_text_does(digits):
+    """Every magnitude and sign, zeros, halves, powers of ten and non-finite values: the same
+    doubles, and signs, as ``float(f"{v:.{digits}g}")``."""
+    rng = np.random.default_rng(digits)
+    values = np.concatenate(
+        [
+            rng.normal(size=20000) * 10.0 ** rng.integers(-30, 30, 20000),
+            rng.integers(0, 2**20, 5000) / 2.0**12,  # exact binary fractions: ties of the text
+            10.0 ** np.arange(-20, 21),
+            [0.0, -0.0, 0.5, -2.5, 1.0000000005, 999999999.5, 9.9999999995, 5e-324, np.nan, np.inf, -np.inf],
+        ]
+    )
+    got = numbers.significant(values, digits)
+    text = np.array([float(f"{v:.{digits}g}") for v in values.tolist()])
+    assert np.array_equal(got, text, equal_nan=True) and np.array_equal(np.signbit(got), np.signbit(text))
+
+
+def test_significant_refuses_more_digits_than_its_margin_holds():
+    with pytest.raises(ValueError, match="10 significant digits; allowed: 1 to 9"):
+        numbers.significant([1.0], 10)
