@@ -36,20 +36,32 @@ def delta_e_itp(display, code_a, code_b) -> np.ndarray:
     Both are decoded with the display's EOTF to light in cd/m², taken to BT.2020
     linear RGB through CIE XYZ, then to ICtCp (ITU-R BT.2100, PQ).
     """
+    return delta_e_of_ictcp(ictcp_of_codes(display, code_a), ictcp_of_codes(display, code_b))
+
+
+def ictcp_of_codes(display, code) -> np.ndarray:
+    """ICtCp (ITU-R BT.2100, PQ) of a display's code values, as :func:`delta_e_itp` compares them."""
     to_2020 = rgb_to_rgb(display.gamut, gamuts()["Rec.2020"], "none")
-    light = [
-        np.einsum("ij,...j->...i", to_2020, reference.display_decode(display, code) * 100.0)
-        for code in (code_a, code_b)
-    ]
-    return delta_e_itp_of_light(*light)
+    return ictcp_of_light(np.einsum("ij,...j->...i", to_2020, reference.display_decode(display, code) * 100.0))
+
+
+def ictcp_of_light(rgb) -> np.ndarray:
+    """ICtCp (ITU-R BT.2100, PQ) of BT.2020 linear RGB light in cd/m²."""
+    import colour
+
+    return np.asarray(colour.RGB_to_ICtCp(rgb), dtype=np.float64)
+
+
+def delta_e_of_ictcp(ictcp_a, ictcp_b) -> np.ndarray:
+    """ΔE ITP (ITU-R BT.2124) between two sets of ICtCp coordinates."""
+    import colour
+
+    return np.asarray(colour.delta_E(ictcp_a, ictcp_b, method="ITP"), dtype=np.float64)
 
 
 def delta_e_itp_of_light(rgb_a, rgb_b) -> np.ndarray:
     """ΔE ITP (ITU-R BT.2124) between two sets of BT.2020 linear RGB light in cd/m²."""
-    import colour
-
-    ictcp = [colour.RGB_to_ICtCp(rgb) for rgb in (rgb_a, rgb_b)]
-    return np.asarray(colour.delta_E(ictcp[0], ictcp[1], method="ITP"), dtype=np.float64)
+    return delta_e_of_ictcp(ictcp_of_light(rgb_a), ictcp_of_light(rgb_b))
 
 
 def dequantised(actual, expected, step: float | np.ndarray) -> np.ndarray:

@@ -21,12 +21,20 @@ Non-finite input policy (the NaN / ±Inf probes), for every generated config:
 
 from __future__ import annotations
 
+import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from generator import tolerances
-from generator.metrics import colour_relative_error, delta_e_itp, dequantised, percentile_99, relative_error
+from generator.metrics import (
+    colour_relative_error,
+    delta_e_of_ictcp,
+    dequantised,
+    ictcp_of_codes,
+    percentile_99,
+    relative_error,
+)
 from generator.verify import paths
 from generator.verify.check import CODES, COLOUR, ITP, Check, display_code_limit
 
@@ -66,6 +74,19 @@ class Outcome:
     step: float = 0.0
 
 
+#: ICtCp of a check's compared reference values, by file step: every engine's output is judged
+#: against the same values, and decoding them to ICtCp is most of a ΔE ITP judgement.
+_REFERENCE_ICTCP: weakref.WeakKeyDictionary[Check, dict[float, np.ndarray]] = weakref.WeakKeyDictionary()
+
+
+def _reference_ictcp(check: Check, safe: np.ndarray, step: float) -> np.ndarray:
+    """ICtCp of ``safe``, the reference values ``check`` compares for files of ``step``."""
+    by_step = _REFERENCE_ICTCP.setdefault(check, {})
+    if step not in by_step:
+        by_step[step] = ictcp_of_codes(check.target, safe)
+    return by_step[step]
+
+
 def sample_errors(check: Check, actual: np.ndarray, step: float) -> tuple[np.ndarray, int]:
     """Per-sample errors in the check's metric (NaN where not compared) and the undefined count."""
     expected = check.expected
@@ -82,7 +103,7 @@ def sample_errors(check: Check, actual: np.ndarray, step: float) -> tuple[np.nda
     with np.errstate(all="ignore"):
         got = dequantised(np.where(compared[:, None], actual, 0.0), safe, slack)
         if check.metric == ITP:
-            errors = delta_e_itp(check.target, got, safe)
+            errors = delta_e_of_ictcp(ictcp_of_codes(check.target, got), _reference_ictcp(check, safe, step))
         elif check.metric == CODES:
             errors = np.max(np.abs(got - safe), axis=-1) * 1023.0
         elif check.metric == COLOUR:

@@ -9,7 +9,7 @@ import pytest
 
 from generator import tolerances
 from generator.verify import paths, probes
-from generator.verify.check import CODES, COLOUR, LUT, TO_REFERENCE, VIEW, Check
+from generator.verify.check import CODES, COLOUR, ITP, LUT, TO_REFERENCE, VIEW, Check
 from generator.verify.judge import FAIL, PASS, Output, judge, policy_violations
 
 RAMP = probes.Family("ramp", np.repeat(np.linspace(0.0, 1.0, 11)[:, None], 3, axis=1))
@@ -163,3 +163,23 @@ def test_a_data_output_passes_non_finite_values_through():
     zeroed = np.where(np.isnan(NON_FINITE.values), 0.0, NON_FINITE.values)
     outcome = judge(check, "e", Output(zeroed))
     assert outcome.verdict == FAIL and outcome.violations == 4  # the NaN samples: three channels and all
+
+
+def test_an_itp_judgement_is_the_metrics_delta_e_whatever_file_step_came_first(default_spec):
+    """The reference's ICtCp is kept per check and file step: a 16-bit file judged after a float
+    output (and a float output after it) is judged as :func:`delta_e_itp` judges it alone."""
+    from generator.metrics import delta_e_itp, dequantised
+
+    display = next(d for d in default_spec.displays if d.eotf_name == "HLG")  # its EOTF goes on above 1
+    expected = INPUTS.values * 0.8 + 0.3  # to 1.1: a 16-bit file's reference is clipped to 1
+    check = Check(
+        VIEW, "HLG / v", "A", probes=INPUTS, expected=expected, output=paths.DISPLAY, target=display, metric=ITP
+    )
+    off = expected + np.linspace(0.0, 2e-3, expected.size).reshape(expected.shape)
+    worst = []
+    for step in (0.0, tolerances.UINT16_STEP, 0.0):
+        reference = np.clip(expected, 0.0, 1.0) if step else expected
+        alone = delta_e_itp(display, dequantised(off, reference, step), reference)
+        worst.append(judge(check, "e", Output(off, step=step)).worst)
+        assert worst[-1] == pytest.approx(float(np.max(alone)), rel=1e-12)
+    assert worst[0] == worst[2] != worst[1]
