@@ -94,7 +94,7 @@ def main() -> None:
     for name, display_name in DISPLAYS.items():
         view, display = views.catalogue()[name], shown[display_name]
         started = time.perf_counter()
-        lat = aces_lattice.bake.__wrapped__(view)
+        lat = aces_lattice.baked(view)
         seconds = time.perf_counter() - started
         plain = plain_recipe(spec, display, view)
         unit = "ΔE ITP" if display.is_hdr else "10-bit codes"

@@ -19,8 +19,9 @@ ten-bit codes on AP0 0..1). One file per view, whatever displays show it.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from functools import lru_cache
+from typing import TypeVar
 
 import numpy as np
 
@@ -32,10 +33,13 @@ from generator.luts.aces_axes import view_axes
 from generator.luts.axes import LogAxis
 from generator.luts.fit import kept_nodes, reweighted_nodes, system_at, tetrahedra
 from generator.luts.lattice import preimages
+from generator.luts.pool import Pool
 from generator.luts.solve import interpolate
 from generator.metrics import delta_e_itp_of_light
 from generator.rendering import views
 from generator.rendering.views import ACESView
+
+T = TypeVar("T")
 
 #: Nodes a side: the plain recipe's 65, which the bench compares with.
 ACES_LATTICE_SIZE = 65
@@ -108,9 +112,41 @@ def mon_encode(linear, curve: tuple[float, float]) -> np.ndarray:
     return np.sign(linear) * PiecewisePower(*curve).encode(np.abs(linear))
 
 
-@lru_cache(maxsize=32)
 def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
-    """The lattice of ACES 2.0 view ``view``: sampled from the float64 reference, then fitted."""
+    """The lattice of ACES 2.0 view ``view``: sampled from the float64 reference, then fitted
+    (kept: this process bakes each view once)."""
+    key = (view, size)
+    if key not in _BAKED:
+        _keep(key, baked(view, size))
+    return _BAKED[key]
+
+
+#: The lattices this process baked or adopted (:func:`bake_all`), by (view, size); the oldest go first.
+_BAKED: dict[tuple[ACESView, int], AcesLattice] = {}
+_BAKED_MAX = 32
+
+
+def _keep(key: tuple[ACESView, int], lat: AcesLattice) -> None:
+    _BAKED[key] = lat
+    while len(_BAKED) > _BAKED_MAX:
+        _BAKED.pop(next(iter(_BAKED)))
+
+
+def bake_all(views, meanwhile: Callable[[], T]) -> T:
+    """:func:`bake` each of ``views`` not baked yet, in worker processes, kept here; ``meanwhile()``
+    runs here as they bake, and its result is returned."""
+    missing = [v for v in dict.fromkeys(views) if (v, ACES_LATTICE_SIZE) not in _BAKED]
+    with Pool() as pool:
+        for view in missing:
+            pool.submit(view, baked, view)
+        out = meanwhile()
+        for view in missing:
+            _keep((view, ACES_LATTICE_SIZE), pool.result(view, baked, view))
+    return out
+
+
+def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
+    """The lattice of ACES 2.0 view ``view`` baked now (:func:`bake` keeps it)."""
     curve, toe = (HDR_CURVE, HDR_TOE) if view.is_hdr else (SDR_CURVE, SDR_TOE)
     log, _, bend = view_axes(view, toe)
     axis = log.position(preimages(size, bend, (0.0, 1.0)))

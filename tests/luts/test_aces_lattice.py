@@ -74,3 +74,15 @@ def test_the_encoding_is_clfs_moncurve_both_ways():
     out = codes.copy()
     ocio.Config.CreateRaw().getProcessor(transform).getDefaultCPUProcessor().applyRGB(out)
     assert np.allclose(out, aces_lattice.mon_decode(codes, aces_lattice.SDR_CURVE), rtol=OCIO_POWER_RELATIVE, atol=1e-7)
+
+
+def test_bake_all_keeps_each_views_lattice_as_bake_makes_it():
+    """Baked side by side in workers, each lattice is the one a bake here makes, kept so that
+    :func:`bake` returns it; what ran meanwhile comes back."""
+    chosen = [views.catalogue()[n] for n in ("ACES 2.0 - SDR 100 nits (P3 D65)", "ACES 2.0 - HDR 500 nits (P3 D65)")]
+    assert aces_lattice.bake_all(chosen, lambda: "meanwhile") == "meanwhile"
+    for view in chosen:
+        kept = aces_lattice.bake(view)
+        assert kept is aces_lattice.bake(view)
+        np.testing.assert_array_equal(kept.cube, aces_lattice.baked(view).cube)
+        np.testing.assert_array_equal(kept.bend, aces_lattice.baked(view).bend)
