@@ -74,7 +74,7 @@ def main() -> int:
                 ]
                 print(f"{run.name:<24} {run.seconds:>8.2f}  " + "; ".join(figures))
             print(
-                f"{'  ' + family + ' wall time':<24} {wall:>8.2f}  (checks built in {result.timings['checks']:.2f} s; "
+                f"{'  ' + family + ' wall time':<24} {wall:>8.2f}  (checks built, in-process engines run beside, in {result.timings['checks']:.2f} s; "
                 f"{len(result.failures)} failing)"
             )
             if family == "ocio":

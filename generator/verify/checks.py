@@ -10,14 +10,17 @@ The record itself, its kinds and metrics are :mod:`generator.verify.check`'s.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import partial
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
 from generator import reference, tolerances
+from generator.luts import aces_lattice
 from generator.luts.pool import Pool
 from generator.metrics import colour_relative_error
+from generator.ocio.emit import baked_aces_views
 from generator.spec.schema import Display, Spec
 from generator.verify import lut_checks, paths, probes
 from generator.verify.allowance import (
@@ -44,6 +47,8 @@ from generator.verify.check import (
     judging,
 )
 from generator.verify.probes import Family, Probes, Sizes
+
+R = TypeVar("R")
 
 #: Every endpoint of a spec by name (:func:`generator.verify.paths.endpoints`).
 Ends = dict[str, paths.Endpoint]
@@ -413,24 +418,36 @@ def _view_conversion(spec: Spec, ends: Ends, source, inputs: Probes, display: st
     )
 
 
-#: What :func:`build_checks` hands its forked worker: (spec, endpoints, scene families, sizes).
+#: What :func:`build_and_run` hands its forked worker: (spec, endpoints, scene families, sizes, then).
 #: Endpoints hold closures, which do not pickle: the worker finds them here, as they were when forked.
 _BUILDING: list[tuple] = []
 
 
-def _views_of(index: int) -> list[Check]:
-    """:func:`view_checks` of ``_BUILDING[index]`` (in a forked worker)."""
-    spec, ends, scene, sizes = _BUILDING[index]
-    return view_checks(spec, ends, scene, sizes)
+def _views_of(index: int) -> tuple[list[Check], Any]:
+    """:func:`view_checks` of ``_BUILDING[index]`` and what its ``then`` made of them (in a forked
+    worker; one result, so that what ``then`` returns refers to these very checks)."""
+    spec, ends, scene, sizes, then = _BUILDING[index]
+    views = view_checks(spec, ends, scene, sizes)
+    return views, None if then is None else then(views)
 
 
 def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
+    """All checks for the config built from ``spec``, of the given ``kinds`` (:func:`build_and_run`)."""
+    return build_and_run(spec, density, kinds)[0]
+
+
+def build_and_run(
+    spec: Spec, density: str = "full", kinds=KINDS, then: Callable[[list[Check]], R] | None = None
+) -> tuple[list[Check], list[R]]:
     """All checks for the config built from ``spec``, of the given ``kinds``: the view checks in
-    a forked worker while this process builds the others (half the time on two cores)."""
+    a forked worker while this process builds the others (half the time on two cores); and
+    ``then`` of each part where it was built, as soon as it is (the worker's part: its result
+    comes back with its checks), this process's part first; no result without ``then``."""
     sizes = probes.SIZES[density]
-    ends = paths.endpoints(spec)
-    scene = probes.scene_families(spec, sizes)
-    job = (spec, ends, scene, sizes)
+    ends, scene = aces_lattice.bake_all(
+        baked_aces_views(spec), lambda: (paths.endpoints(spec), probes.scene_families(spec, sizes))
+    )
+    job = (spec, ends, scene, sizes, then)
     _BUILDING.append(job)
     index = len(_BUILDING) - 1
     try:
@@ -447,6 +464,10 @@ def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
                 if LUT in kinds
                 else []
             )
-            return out + (pool.result("views", _views_of, index) if VIEW in kinds else []) + luts
+            results = [] if then is None else [then(out + luts)]
+            views, made = pool.result("views", _views_of, index) if VIEW in kinds else ([], None)
+            if then is not None and VIEW in kinds:
+                results.append(made)
+            return out + views + luts, results
     finally:
         _BUILDING[:] = [j for j in _BUILDING if j is not job]

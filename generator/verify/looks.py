@@ -210,11 +210,17 @@ def with_looks(spec: Spec, checks: list[Check], context: dict[str, str], density
     one, and the looks' own checks added (with the VIEW kind asked for)."""
     if not spec.looks:
         return checks
-    carrying = {(d.name, v) for d in spec.displays for v, _ in d.looks}
-    kept = [c for c in checks if not (c.kind == VIEW and (c.display, c.view) in carrying)]
+    kept = [c for c in checks if plain_kept(spec, c)]
     if VIEW not in kinds:
         return kept
     return [*kept, *view_look_checks(spec, context, density), *look_checks(spec, context, density)]
+
+
+def plain_kept(spec: Spec, check: Check) -> bool:
+    """Whether :func:`with_looks` keeps ``check``: all but a view's plain check where the view applies looks."""
+    return not (
+        check.kind == VIEW and (check.display, check.view) in {(d.name, v) for d in spec.displays for v, _ in d.looks}
+    )
 
 
 def look_differences(cfg, spec: Spec, lut_folder: str) -> list[str]:

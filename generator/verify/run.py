@@ -13,6 +13,7 @@ import tempfile
 import time
 from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -25,7 +26,7 @@ from generator.spec.schema import Spec, SpecError
 from generator.verify import looks
 from generator.verify.blender import BlenderEngine
 from generator.verify.check import KINDS, Check
-from generator.verify.checks import build_checks
+from generator.verify.checks import build_and_run
 from generator.verify.declarations import differences
 from generator.verify.engines import (
     IN_PROCESS,
@@ -245,6 +246,34 @@ def run_engine(engine, config: Path, spec: Spec, checks: list[Check], workdir: P
     return EngineRun(engine.name, engine.version(), time.perf_counter() - started), outcomes
 
 
+def in_process(config: Path, spec: Spec, checks: list[Check], workdir: Path) -> list[tuple[EngineRun, list[Outcome]]]:
+    """:func:`run_engine` of each in-process engine on ``checks``, in turn (they share OCIO's file
+    cache and each check's reference), the default-flags failures the flags explain named so."""
+    runs = [run_engine(engine, config, spec, checks, workdir) for engine in IN_PROCESS]
+    explained = iter(_explained(config, [o for _, found in runs for o in found]))
+    return [(run, [next(explained) for _ in found]) for run, found in runs]
+
+
+def _in_process_on(
+    config: Path, spec: Spec, only: str, workdir: Path, part: list[Check]
+) -> list[tuple[EngineRun, list[Outcome]]]:
+    """:func:`in_process` on the checks of ``part`` a verification keeps: those whose title holds
+    ``only``, but a view's plain check where the view applies looks (a look-aware one replaces it)."""
+    return in_process(config, spec, [c for c in part if only in c.title and looks.plain_kept(spec, c)], workdir)
+
+
+def _merged(parts: list[list[tuple[EngineRun, list[Outcome]]]], checks: list[Check]) -> list[tuple[EngineRun, list]]:
+    """Each in-process engine's runs on parts of ``checks`` as one: the time summed, the
+    outcomes in the order of ``checks``."""
+    order = {id(check): i for i, check in enumerate(checks)}
+    merged = []
+    for position in range(len(IN_PROCESS)):
+        runs = [part[position][0] for part in parts]
+        outcomes = sorted((o for part in parts for o in part[position][1]), key=lambda o: order[id(o.check)])
+        merged.append((replace(runs[0], seconds=sum(r.seconds for r in runs)), outcomes))
+    return merged
+
+
 def _in_process_for_hosts(config: Path, spec: Spec, outcomes: list[Outcome], workdir: Path) -> list[Outcome]:
     """When hosts ran without the in-process engines, those engines' outcomes on the checks a
     host failed, so that the failures OCIO's default flags explain are named as such (they
@@ -331,28 +360,37 @@ def _verify_in_context(
     unknown = [e for e in engines if e not in registry]
     if unknown:
         raise SpecError("--engines", ",".join(unknown), f"unknown engine; allowed: {', '.join(registry)}")
-    checks = [
-        c for c in looks.with_looks(spec, build_checks(spec, density, kinds), values, density, kinds) if only in c.title
-    ]
-    if only and not checks:
-        raise SpecError(
-            "--only",
-            only,
-            "matches no check title (titles are 'SPACE -> SPACE', "
-            "'DISPLAY / VIEW from SPACE' and LUT file paths such as 'luts/NAME.clf')",
-        )
-    timings = {"checks": time.perf_counter() - started}
-    runs, outcomes = [], []
-    tmp = tempfile.mkdtemp(prefix="ocioforge-verify-", dir=workdir)
+    tmp = Path(tempfile.mkdtemp(prefix="ocioforge-verify-", dir=workdir))
     try:
+        # The in-process engines run on each part of the checks where it is built, as soon as it is.
+        run_on = partial(_in_process_on, config, spec, only, tmp)
+        built, parts = build_and_run(
+            spec, density, kinds, run_on if any(registry[f] == IN_PROCESS for f in engines) else None
+        )
+        checks = [c for c in looks.with_looks(spec, built, values, density, kinds) if only in c.title]
+        if only and not checks:
+            raise SpecError(
+                "--only",
+                only,
+                "matches no check title (titles are 'SPACE -> SPACE', "
+                "'DISPLAY / VIEW from SPACE' and LUT file paths such as 'luts/NAME.clf')",
+            )
+        timings = {"checks": time.perf_counter() - started}
+        runs: list[EngineRun] = []
+        outcomes: list[Outcome] = []
         for family in engines:
-            for engine in registry[family]:
-                run, found = run_engine(engine, config, spec, checks, Path(tmp))
+            if registry[family] == IN_PROCESS:
+                ran = {id(c) for c in built}
+                parts.append(in_process(config, spec, [c for c in checks if id(c) not in ran], tmp))  # the looks'
+                family_runs = _merged(parts, checks)
+            else:
+                family_runs = [run_engine(engine, config, spec, checks, tmp) for engine in registry[family]]
+            for run, found in family_runs:
                 runs.append(run)
                 outcomes += found
-        extra = _in_process_for_hosts(config, spec, outcomes, Path(tmp))
+        extra = _in_process_for_hosts(config, spec, outcomes, tmp)
     finally:
-        _remove(Path(tmp))
+        _remove(tmp)
     explainers = {e.name: e.explain for family in engines for e in registry[family] if hasattr(e, "explain")}
     outcomes = [_engine_explained(config, o, explainers) for o in _explained(config, outcomes, extra)]
     return Verification(

@@ -135,3 +135,22 @@ def test_an_engine_of_the_default_list_not_installed_is_reported_as_not_run(buil
     named = verify_run.verify(config, ("ocio", "blender"), density="quick", only="ACEScct -> ACES2065-1", strict=True)
     assert default.passed and default.missing == ["blender"]
     assert not named.passed
+
+
+def test_the_in_process_engines_run_beside_the_checks_as_a_serial_run_would(config_copy, tmp_path):
+    """Each in-process engine's outcomes, gathered from the forked worker's part and this
+    process's, hold the run's very checks, in their order, once each; their verdicts and
+    figures are those of one serial run of the engines on the same checks."""
+    from generator.verify.run import IN_PROCESS, in_process
+
+    result = verify(config_copy, ("ocio",), density="quick")
+    for engine in IN_PROCESS:
+        checks = [o.check for o in result.outcomes if o.engine == engine.name]
+        assert len(checks) == len(result.checks) and all(a is b for a, b in zip(checks, result.checks))
+    config, spec = load(config_copy)
+    serial = [o for _, found in in_process(config, spec, list(result.checks), tmp_path) for o in found]
+
+    def rows(outcomes):
+        return [(o.engine, o.check.title, o.verdict, o.worst, o.p99, o.note) for o in outcomes]
+
+    assert rows(serial) == rows(result.outcomes)
