@@ -10,6 +10,7 @@ The record itself, its kinds and metrics are :mod:`generator.verify.check`'s.
 
 from __future__ import annotations
 
+import multiprocessing
 from collections.abc import Callable
 from functools import partial
 from typing import Any, TypeVar
@@ -246,65 +247,81 @@ def view_sources(spec: Spec, ends: Ends) -> list[paths.Endpoint]:
 
 
 def view_checks(spec: Spec, ends: Ends, scene: tuple[Family, ...], sizes: Sizes) -> list[Check]:
-    """Every display/view from each of :func:`view_sources`. Each source's probes are decoded
-    once; an ACES view's rendering (:func:`paths.aces_stage`) is evaluated once per source and
-    shared by the displays showing it, as is the float32 shift of a display's linear values
-    by its views."""
+    """Every display/view from each of :func:`view_sources` (:func:`one_view_checks` of each unit)."""
+    sources, kept = view_inputs(spec, ends, scene, sizes), dict[tuple, np.ndarray]()
+    return [c for display, view in view_units(spec) for c in one_view_checks(spec, ends, sources, display, view, kept)]
+
+
+def view_units(spec: Spec) -> list[tuple[Display, str]]:
+    """Every (display, view) of ``spec``, in config order: the unit view checks are built in."""
+    return [(display, view) for display in spec.displays for view in display.views]
+
+
+def view_inputs(spec: Spec, ends: Ends, scene: tuple[Family, ...], sizes: Sizes) -> list[tuple]:
+    """Each of :func:`view_sources` with its probes and their decoding (None where it has none),
+    decoded once for every display."""
     out = []
-    sources = []
     for src in view_sources(spec, ends):
         inputs = input_probes(src, scene, sizes)
-        sources.append((src, inputs, None if src.decode is None else _read_only(evaluate(src.decode, inputs.values))))
-    rendered = {}
-    for display in spec.displays:
-        back, clip = ends[display.name].matrix, ends[display.name].encode
-        shifts = {}
-        for view in display.views:
-            stage = None if view == paths.RAW else paths.aces_stage(spec, display, view)
-            fn = None if view == paths.RAW or stage is not None else paths.view_function(spec, display, view)
-            for src, inputs, decoded in sources:
-                title = f"{display.name} / {view}"
-                common: dict[str, Any] = dict(probes=inputs, display=display.name, view=view)
-                if view == paths.RAW:
-                    out.append(Check(VIEW, title, src.name, output=paths.DATA, expected=inputs.values.copy(), **common))
-                    continue
-                if decoded is None or (stage is None and fn is None):
-                    expected, problem = None, f"the reference evaluation has no evaluation of the view {view!r}"
-                elif stage is not None:
-                    key = (stage[0], src.name)
-                    if key not in rendered:
-                        rendered[key] = _read_only(evaluate(stage[1], decoded))
-                    expected, problem = (
-                        evaluate(partial(reference.display_xyz_encode, spec, display), rendered[key]),
-                        "",
-                    )
-                else:
-                    expected, problem = evaluate(fn, decoded), ""
-                shifted = None
-                if expected is not None and src.matrix is not None and src.linear is not None:
-                    if src.name not in shifts:
-                        shifts[src.name] = float32_shift(src, back, inputs.values)
-                    shifted = shifts[src.name]
-                allowance = with_encoding(
-                    view_allowance(spec, src, back, display, view, inputs.values, expected, clip, shifted),
-                    spec,
-                    display,
-                    expected,
-                )
-                out.append(
-                    Check(
-                        VIEW,
-                        title,
-                        src.name,
-                        output=paths.DISPLAY,
-                        expected=expected,
-                        problem=problem,
-                        allowance=allowance,
-                        keep=_keep(src, None, display, inputs.values, expected),
-                        **common,
-                        **judging(None, display, None, view),
-                    )
-                )
+        out.append((src, inputs, None if src.decode is None else _read_only(evaluate(src.decode, inputs.values))))
+    return out
+
+
+def one_view_checks(
+    spec: Spec, ends: Ends, sources: list[tuple], display: Display, view: str, kept: dict
+) -> list[Check]:
+    """``display``'s ``view`` from each of ``sources`` (:func:`view_inputs`). An ACES view's
+    rendering (:func:`paths.aces_stage`) is evaluated once per source, and the float32 shift of
+    a display's linear values once per display and source: both are kept in ``kept`` for the
+    other views and displays sharing them."""
+    out = []
+    back, clip = ends[display.name].matrix, ends[display.name].encode
+    stage = None if view == paths.RAW else paths.aces_stage(spec, display, view)
+    fn = None if view == paths.RAW or stage is not None else paths.view_function(spec, display, view)
+    for src, inputs, decoded in sources:
+        title = f"{display.name} / {view}"
+        common: dict[str, Any] = dict(probes=inputs, display=display.name, view=view)
+        if view == paths.RAW:
+            out.append(Check(VIEW, title, src.name, output=paths.DATA, expected=inputs.values.copy(), **common))
+            continue
+        if decoded is None or (stage is None and fn is None):
+            expected, problem = None, f"the reference evaluation has no evaluation of the view {view!r}"
+        elif stage is not None:
+            key = ("rendered", stage[0], src.name)
+            if key not in kept:
+                kept[key] = _read_only(evaluate(stage[1], decoded))
+            expected, problem = (
+                evaluate(partial(reference.display_xyz_encode, spec, display), kept[key]),
+                "",
+            )
+        else:
+            expected, problem = evaluate(fn, decoded), ""
+        shifted = None
+        if expected is not None and src.matrix is not None and src.linear is not None:
+            shift_key = ("shift", display.name, src.name)
+            if shift_key not in kept:
+                kept[shift_key] = float32_shift(src, back, inputs.values)
+            shifted = kept[shift_key]
+        allowance = with_encoding(
+            view_allowance(spec, src, back, display, view, inputs.values, expected, clip, shifted),
+            spec,
+            display,
+            expected,
+        )
+        out.append(
+            Check(
+                VIEW,
+                title,
+                src.name,
+                output=paths.DISPLAY,
+                expected=expected,
+                problem=problem,
+                allowance=allowance,
+                keep=_keep(src, None, display, inputs.values, expected),
+                **common,
+                **judging(None, display, None, view),
+            )
+        )
     return out
 
 
@@ -418,17 +435,34 @@ def _view_conversion(spec: Spec, ends: Ends, source, inputs: Probes, display: st
     )
 
 
-#: What :func:`build_and_run` hands its forked worker: (spec, endpoints, scene families, sizes, then).
-#: Endpoints hold closures, which do not pickle: the worker finds them here, as they were when forked.
+#: What :func:`build_and_run` hands its forked worker: (spec, endpoints, scene families, sizes,
+#: then, claims). Endpoints hold closures, which do not pickle: the worker finds them here, as
+#: they were when forked.
 _BUILDING: list[tuple] = []
 
 
-def _views_of(index: int) -> tuple[list[Check], Any]:
-    """:func:`view_checks` of ``_BUILDING[index]`` and what its ``then`` made of them (in a forked
-    worker; one result, so that what ``then`` returns refers to these very checks)."""
-    spec, ends, scene, sizes, then = _BUILDING[index]
-    views = view_checks(spec, ends, scene, sizes)
-    return views, None if then is None else then(views)
+def _claim(claims, first: bool) -> int | None:
+    """The next view unit (:func:`view_units`) not yet claimed, from the first (the worker) or the last (this process)
+    of the shared range ``claims`` [next first, end); None when they have met."""
+    with claims.get_lock():
+        start, end = claims[0], claims[1]
+        if start >= end:
+            return None
+        claims[0 if first else 1] = start + 1 if first else end - 1
+        return start if first else end - 1
+
+
+def _claimed_views(index: int, first: bool) -> tuple[dict[int, list[Check]], list]:
+    """The view checks of each view unit (:func:`view_units`) claimed in turn (:func:`_claim`), by
+    unit, and what ``then`` made of each unit's as soon as it was built."""
+    spec, ends, scene, sizes, then, claims = _BUILDING[index]
+    units, sources, kept, views, made = view_units(spec), None, dict[tuple, Any](), dict[int, list[Check]](), []
+    while (u := _claim(claims, first)) is not None:
+        sources = sources or view_inputs(spec, ends, scene, sizes)
+        views[u] = one_view_checks(spec, ends, sources, *units[u], kept)
+        if then is not None:
+            made.append(then(views[u]))
+    return views, made
 
 
 def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
@@ -439,21 +473,21 @@ def build_checks(spec: Spec, density: str = "full", kinds=KINDS) -> list[Check]:
 def build_and_run(
     spec: Spec, density: str = "full", kinds=KINDS, then: Callable[[list[Check]], R] | None = None
 ) -> tuple[list[Check], list[R]]:
-    """All checks for the config built from ``spec``, of the given ``kinds``: the view checks in
-    a forked worker while this process builds the others (half the time on two cores); and
-    ``then`` of each part where it was built, as soon as it is (the worker's part: its result
-    comes back with its checks), this process's part first; no result without ``then``."""
+    """All checks for the config built from ``spec``, of the given ``kinds``, and ``then`` of each
+    part as soon as it is built, where it was built (no result without ``then``). A forked worker
+    builds the view checks view by view (:func:`view_units`) from the first, while this process builds the
+    others, then takes units from the last until they meet: both cores stay busy to the end."""
     sizes = probes.SIZES[density]
     ends, scene = aces_lattice.bake_all(
         baked_aces_views(spec), lambda: (paths.endpoints(spec), probes.scene_families(spec, sizes))
     )
-    job = (spec, ends, scene, sizes, then)
+    claims = multiprocessing.get_context("fork").Array("i", [0, len(view_units(spec)) if VIEW in kinds else 0])
+    job = (spec, ends, scene, sizes, then, claims)
     _BUILDING.append(job)
     index = len(_BUILDING) - 1
     try:
         with Pool(1) as pool:
-            if VIEW in kinds:
-                pool.submit("views", _views_of, index)
+            pool.submit("views", _claimed_views, index, True)
             out = []
             if TO_REFERENCE in kinds or FROM_REFERENCE in kinds:
                 out += [c for c in space_checks(spec, ends, scene, sizes) if c.kind in kinds]
@@ -465,9 +499,9 @@ def build_and_run(
                 else []
             )
             results = [] if then is None else [then(out + luts)]
-            views, made = pool.result("views", _views_of, index) if VIEW in kinds else ([], None)
-            if then is not None and VIEW in kinds:
-                results.append(made)
-            return out + views + luts, results
+            here, made_here = _claimed_views(index, False)
+            there, made_there = pool.result("views", _claimed_views, index, True)
+            views = {**here, **there}
+            return out + [c for u in sorted(views) for c in views[u]] + luts, results + made_here + made_there
     finally:
         _BUILDING[:] = [j for j in _BUILDING if j is not job]

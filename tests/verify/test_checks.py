@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import PyOpenColorIO as ocio
 import pytest
 
@@ -117,3 +118,33 @@ def test_a_wrong_view_transform_fails_every_colorimetric_view(config_copy):
     displays = ocio.Config.CreateFromFile(str(config_copy)).getDisplays()
     assert {f"{d} / Colorimetric" for d in displays} <= failing
     assert all(" / " in item for item in failing)
+
+
+def test_the_view_checks_are_those_of_one_process_whoever_built_each(spec, monkeypatch):
+    """The forked worker builds views from the first, this process from the last, until they
+    meet (here the worker stops after two): together, in config order, the checks one process
+    builds alone, with the same values."""
+    from generator.verify import paths, probes
+
+    claim = checks._claim
+    monkeypatch.setattr(
+        checks, "_claim", lambda claims, first: None if first and claims[0] >= 2 else claim(claims, first)
+    )
+    built = checks.build_checks(spec, "quick", kinds=(VIEW,))
+    sizes = probes.SIZES["quick"]
+    alone = checks.view_checks(spec, paths.endpoints(spec), probes.scene_families(spec, sizes), sizes)
+    views = [c for c in built if c.kind == VIEW]
+    assert [(c.title, c.src) for c in views] == [(c.title, c.src) for c in alone]
+    for a, b in zip(views, alone):
+        for field in ("expected", "allowance", "keep"):
+            x, y = getattr(a, field), getattr(b, field)
+            assert (x is None and y is None) or np.array_equal(x, y, equal_nan=True), (a.title, a.src, field)
+
+
+def test_claims_from_both_ends_meet_once():
+    """Each unit is claimed once, from the first or the last, whichever comes first."""
+    import multiprocessing
+
+    claims = multiprocessing.get_context("fork").Array("i", [0, 7])
+    got = [checks._claim(claims, first) for first in (True, False, False, True, True, False, True, False, True)]
+    assert got == [0, 6, 5, 1, 2, 4, 3, None, None]
