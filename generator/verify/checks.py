@@ -410,29 +410,12 @@ def _view_conversion(spec: Spec, ends: Ends, source, inputs: Probes, display: st
             problem="the stored spec has no such colour space or display",
             **common,
         )
-    if view == paths.RAW or source.output == paths.DATA:
+    if source.output == paths.DATA:
         return Check(
             VIEW, f"{display} / {view}", source.name, output=paths.DATA, expected=inputs.values.copy(), **common
         )
-    fn = paths.view_function(spec, target, view)
-    through = None if fn is None or source.decode is None else (lambda v: fn(source.decode(v)))
-    expected, problem = _expected(through, inputs.values, f"evaluation of the view {view!r}")
-    back, clip = ends[display].matrix, ends[display].encode
-    allowance = with_encoding(
-        view_allowance(spec, source, back, target, view, inputs.values, expected, clip), spec, target, expected
-    )
-    return Check(
-        VIEW,
-        f"{display} / {view}",
-        source.name,
-        output=paths.DISPLAY,
-        expected=expected,
-        problem=problem,
-        allowance=allowance,
-        keep=_keep(source, None, target, inputs.values, expected),
-        **common,
-        **judging(None, target, None, view),
-    )
+    decoded = None if source.decode is None else evaluate(source.decode, inputs.values)
+    return one_view_checks(spec, ends, [(source, inputs, decoded)], target, view, {})[0]
 
 
 #: What :func:`build_and_run` hands its forked worker: (spec, endpoints, scene families, sizes,

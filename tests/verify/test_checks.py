@@ -148,3 +148,26 @@ def test_claims_from_both_ends_meet_once():
     claims = multiprocessing.get_context("fork").Array("i", [0, 7])
     got = [checks._claim(claims, first) for first in (True, False, False, True, True, False, True, False, True)]
     assert got == [0, 6, 5, 1, 2, 4, 3, None, None]
+
+
+def test_a_conversion_through_a_view_is_judged_as_verify_judges_the_view(spec, built):
+    """``convert``'s check of a frame through a view (:func:`checks.conversion_check`) is verify's
+    own check of that view from that source: the same expectation, allowance, samples kept,
+    metric and tolerance (every seventh view check of the default config, ACES views among them)."""
+    from generator.verify import paths
+
+    ends = paths.endpoints(spec)
+    views = [c for c in built if c.kind == VIEW][::7]
+    assert any(c.view.startswith("ACES 2.0") for c in views) and any(c.view.startswith("ACES 1.") for c in views)
+    for check in views:
+        again = checks.conversion_check(spec, ends, check.probes, check.src, display=check.display, view=check.view)
+        assert (again.title, again.output, again.metric, again.tolerance, again.problem) == (
+            check.title,
+            check.output,
+            check.metric,
+            check.tolerance,
+            check.problem,
+        )
+        for field in ("expected", "allowance", "keep"):
+            x, y = getattr(again, field), getattr(check, field)
+            assert (x is None and y is None) or np.array_equal(x, y, equal_nan=True), (check.title, check.src, field)
