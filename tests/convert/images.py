@@ -79,3 +79,9 @@ def convert(capsys, *argv):
         code = exit_.code
     out, err = capsys.readouterr()
     return code, out, err
+
+
+def cg_to_cct(source, config, out, jobs) -> tuple:
+    """``convert``'s arguments for ``source`` from ACEScg to ACEScct through ``config``, into
+    ``out``, with ``jobs`` workers: what most conversion tests run."""
+    return (source, "--config", config, "--from", "ACEScg", "--to", "ACEScct", "-o", out, "--jobs", jobs)

@@ -28,19 +28,7 @@ def test_output_is_pyopencolorio_on_the_same_pixels(tmp_path, capsys, config):
 
 def test_skip_existing_resumes_and_force_replaces(tmp_path, capsys, config):
     images.sequence(tmp_path / "in", "s", range(1, 4))
-    args = (
-        tmp_path / "in" / "s.####.exr",
-        "--config",
-        config,
-        "--from",
-        "ACEScg",
-        "--to",
-        "ACEScct",
-        "-o",
-        tmp_path / "out",
-        "--jobs",
-        1,
-    )
+    args = images.cg_to_cct(tmp_path / "in" / "s.####.exr", config, tmp_path / "out", 1)
     assert convert(capsys, *args, "--frames", "1-2")[0] == 0
     before = (tmp_path / "out" / "s.0001.exr").stat().st_mtime_ns
     code, out, _ = convert(capsys, *args, "--skip-existing")
@@ -84,17 +72,7 @@ def test_sigkill_leaves_no_partial_frame_under_a_final_name(tmp_path, config):
         "-m",
         "generator",
         "convert",
-        str(folder / "s.####.exr"),
-        "--config",
-        str(config),
-        "--from",
-        "ACEScg",
-        "--to",
-        "ACEScct",
-        "-o",
-        str(tmp_path / "out"),
-        "--jobs",
-        "2",
+        *images.cg_to_cct(str(folder / "s.####.exr"), str(config), str(tmp_path / "out"), "2"),
     ]
     process = subprocess.Popen(args, start_new_session=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 120

@@ -45,17 +45,7 @@ def test_windows_tiles_metadata_and_parts_are_kept(tmp_path, capsys, config):
     out.close()
     code, stdout, _ = convert(
         capsys,
-        path,
-        "--config",
-        config,
-        "--from",
-        "ACEScg",
-        "--to",
-        "ACEScct",
-        "-o",
-        tmp_path / "out",
-        "--jobs",
-        1,
+        *images.cg_to_cct(path, config, tmp_path / "out", 1),
         "--verify",
         "--memory",
         1,

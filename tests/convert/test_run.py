@@ -99,34 +99,14 @@ def test_corrupt_and_truncated_frames_fail_alone(tmp_path, capsys, config):
     frames[2].write_bytes(b"not an image at all" * 10)  # corrupt
     code, out, _ = convert(
         capsys,
-        tmp_path / "in" / "s.####.exr",
-        "--config",
-        config,
-        "--from",
-        "ACEScg",
-        "--to",
-        "ACEScct",
-        "-o",
-        tmp_path / "out",
-        "--jobs",
-        2,
+        *images.cg_to_cct(tmp_path / "in" / "s.####.exr", config, tmp_path / "out", 2),
     )
     assert code == 1
     assert "FAILED" in out and "s.0002.exr" in out and "s.0003.exr" in out and "2 written" in out and "2 failed" in out
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == ["s.0001.exr", "s.0004.exr"]
     code, out, _ = convert(
         capsys,
-        tmp_path / "in" / "s.####.exr",
-        "--config",
-        config,
-        "--from",
-        "ACEScg",
-        "--to",
-        "ACEScct",
-        "-o",
-        tmp_path / "out2",
-        "--jobs",
-        1,
+        *images.cg_to_cct(tmp_path / "in" / "s.####.exr", config, tmp_path / "out2", 1),
         "--fail-fast",
     )
     assert code == 1 and "1 written" in out and "1 failed" in out and "2 not run" in out
