@@ -73,16 +73,33 @@ def _fitted(lat: Lattice, colours: dict, decimals: int) -> np.ndarray:
 
 
 def display_lattice(
-    spec: Spec, source: ColourSpace, display: Display, view, size: int, decimals: int = CUBE_DECIMALS
+    spec: Spec,
+    source: ColourSpace,
+    display: Display,
+    view,
+    size: int,
+    decimals: int = CUBE_DECIMALS,
+    values: np.ndarray | None = None,
 ) -> Lattice:
     """The display layout (a CLF): decoding and the matrix to the basis exact, the Log operator of
     :func:`view_axes` and its Range (the view's clamp), its 1D table, a lattice of fitted display
-    codes; or, where the view's last clamp is the display's (:func:`light_before_clamp`), of
-    the display's codes of the light before that clamp, which a 1D table of two entries
-    after the lattice applies exactly (the clamp bends the codes where the lattice cannot). The
-    lattice's values are written with ``decimals`` decimals."""
+    codes (``values``, else :func:`display_values`); or, where the view's last clamp is the
+    display's (:func:`light_before_clamp`), of the display's codes of the light before that
+    clamp, which a 1D table of two entries after the lattice applies exactly (the clamp bends
+    the codes where the lattice cannot)."""
     log, _, table = view_axes(view)
     matrix = settled(basis_matrix(spec, source, view))
+    before = light_before_clamp(spec, display, view)
+    post = None if before is None else unclamped_codes(display, *before)[0]
+    cube = display_values(spec, display, view, size, decimals) if values is None else values
+    return Lattice(source, display, view.name, source.curve, matrix, log, (0.0, 1.0), table, cube, post, decimals)
+
+
+def display_values(spec: Spec, display: Display, view, size: int, decimals: int = CUBE_DECIMALS) -> np.ndarray:
+    """The display layout's lattice values (size, size, size, 3), written with ``decimals``
+    decimals: the same for every source, as the layout's lattice starts at the view's basis.
+    Sampled at the nodes, then fitted to the training colours taken to the basis directly."""
+    log, _, table = view_axes(view)
     nodes = grid(log.position(preimages(size, table, (0.0, 1.0)))).reshape(-1, 3)
     to_aces = np.linalg.inv(basis(view).from_aces)
     before = light_before_clamp(spec, display, view)
@@ -90,26 +107,15 @@ def display_lattice(
         post, values = None, lambda ref: reference.aces_view(spec, display, view.name, ref)
     else:
         post, values = unclamped_codes(display, *before)
-    ref = reference.apply_matrix(np.linalg.inv(reference.to_aces_matrix(spec)) @ to_aces, nodes)
-    cube = numbers.rounded(values(ref), CUBE_DECIMALS).reshape(size, size, size, 3)
-    lat = Lattice(source, display, view.name, source.curve, matrix, log, (0.0, 1.0), table, cube, post)
+    from_aces = np.linalg.inv(reference.to_aces_matrix(spec))
+    cube = numbers.rounded(values(reference.apply_matrix(from_aces @ to_aces, nodes)), CUBE_DECIMALS)
+    lat = Lattice(None, display, view.name, None, None, log, (0.0, 1.0), table, cube.reshape(size, size, size, 3), post)
     colours = {}
-    for name, (code, expected) in _training(spec, source, display, view).items():
-        target = expected if post is None else values(reference.to_reference(spec, source, code))
-        colours[name] = (_log_coordinate(lat, code), target)
-    return Lattice(
-        source,
-        display,
-        view.name,
-        source.curve,
-        matrix,
-        log,
-        (0.0, 1.0),
-        table,
-        _fitted(lat, colours, decimals),
-        post,
-        decimals,
-    )
+    for name, aces in aces_probes.sets(display, aces_probes.TRAINING_SEED, ACES_FIT_COUNT).items():
+        with np.errstate(all="ignore"):
+            coordinate = log.coordinate(reference.apply_matrix(basis(view).from_aces, aces))
+        colours[name] = (coordinate, values(reference.apply_matrix(from_aces, aces)))
+    return _fitted(lat, colours, decimals)
 
 
 def light_before_clamp(spec: Spec, display: Display, view):

@@ -158,14 +158,29 @@ def plan(spec: Spec, where: str | None = None) -> list[Item]:
     return items
 
 
-def _lattice(item: Item):
-    """The lattice ``item`` holds: the bake's, an ACES view's with the table's decimals and entries."""
+def _decimals(item: Item) -> int:
+    return CUBE_DECIMALS if item.decimals is None else item.decimals
+
+
+def shared_key(item: Item) -> tuple | None:
+    """What an ACES view's display-layout CLF shares with the pack's others from other sources:
+    its lattice values (:func:`aces_bake.display_values`) are the same for every source.
+    None for a file whose lattice is its own."""
+    req = item.req
+    if req.view is None or req.fmt != "clf" or req.shaper != "auto":
+        return None
+    return (req.display.name, req.view.name, req.size, _decimals(item))
+
+
+def _lattice(item: Item, values: np.ndarray | None = None):
+    """The lattice ``item`` holds: the bake's, an ACES view's with the table's decimals and
+    entries (a display layout's with lattice ``values`` if given, see :func:`shared_key`)."""
     req = item.req
     if req.view is None:
         return bake.build_lattice(req)
-    decimals = CUBE_DECIMALS if item.decimals is None else item.decimals
-    if req.fmt == "clf" and req.shaper == "auto":
-        return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size, decimals)
+    decimals = _decimals(item)
+    if shared_key(item) is not None:
+        return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size, decimals, values)
     shaper = "none" if not bake.FORMATS[req.fmt].shaper else req.shaper
     return aces_bake.source_lattice(
         req.spec, req.source, req.display, req.view, req.size, shaper, decimals, item.shaper_entries
@@ -227,12 +242,15 @@ def _aces_view(req: bake.Request) -> ACESView:
 
 def _aces_figures(req: bake.Request, paths: list[Path]) -> dict:
     """Set name to (p99, max) of the file read through OCIO (default flags, tetrahedral) on
-    :mod:`generator.luts.aces_probes`' sets, against the reference."""
+    :mod:`generator.luts.aces_probes`' sets, against the reference; a set the source's codes
+    hold no colour of is left out."""
     view = _aces_view(req)
     apply = _apply(_transform(paths, "tetrahedral"), "OPTIMIZATION_DEFAULT")
     out = {}
     for name, aces in aces_probes.sets(req.display, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT).items():
         code, expected = aces_probes.in_source(req.spec, req.source, req.display, view.name, aces)
+        if not len(code):  # a bounded source (sRGB's codes) holds no bright colour
+            continue
         error = probes.errors(req.display, apply(code), expected)[0]
         out[name] = (float(np.percentile(error, 99)), float(error.max()))
     return out
@@ -240,16 +258,19 @@ def _aces_figures(req: bake.Request, paths: list[Path]) -> dict:
 
 def _aces_row(name: str, req: bake.Request, figures: dict) -> str:
     unit = "ΔE ITP" if req.display.is_hdr else "10-bit codes"
-    cells = " | ".join(f"{figures[kind][0]:.2f} / {figures[kind][1]:.1f}" for kind in aces_probes.SETS)
+    cells = " | ".join(
+        f"{figures[kind][0]:.2f} / {figures[kind][1]:.1f}" if kind in figures else "none held"
+        for kind in aces_probes.SETS
+    )
     view = _aces_view(req).name
     return f"| {name} | {req.source.name} | {view} | {req.display.name} | {req.size}³ | {cells} | {unit} |\n"
 
 
-def bake_item(item: Item, folder: Path) -> tuple[tuple[str, ...], str]:
-    """Bake ``item`` into ``folder`` and measure the file written; returns the names written and
-    its README row."""
+def bake_item(item: Item, folder: Path, values: np.ndarray | None = None) -> tuple[tuple[str, ...], str]:
+    """Bake ``item`` into ``folder`` (with shared lattice ``values``, see :func:`shared_key`) and
+    measure the file written; returns the names written and its README row."""
     req = item.req
-    files = bake.lattice_files(req, _lattice(item))
+    files = bake.lattice_files(req, _lattice(item, values))
     paths = [folder / (item.name if not suffix else Path(item.name).with_suffix(suffix).name) for suffix in files]
     for path, data in zip(paths, files.values()):
         path.write_bytes(data)
@@ -265,25 +286,47 @@ def bake_item(item: Item, folder: Path) -> tuple[tuple[str, ...], str]:
 _PACKING: list[list[Item]] = []
 
 
-def _worker(index: int, folder: str) -> tuple[tuple[str, ...], str]:
-    return bake_item(_PACKING[-1][index], Path(folder))
+def _worker(index: int, folder: str, values: np.ndarray | None = None) -> tuple[tuple[str, ...], str]:
+    return bake_item(_PACKING[-1][index], Path(folder), values)
+
+
+def _values_worker(index: int) -> np.ndarray:
+    req = _PACKING[-1][index].req
+    return aces_bake.display_values(req.spec, req.display, req.view, req.size, _decimals(_PACKING[-1][index]))
 
 
 def bake_all(
     items: list[Item], folder: Path, progress: Callable[[int, int], None] | None = None, workers: int | None = None
 ) -> list[tuple[tuple[str, ...], str]]:
-    """Bake every item into ``folder`` in forked workers, the ACES views (heaviest) first;
-    returns each one's names and row in ``items``' order, calling ``progress(done, total)`` as they are."""
+    """Bake every item into ``folder`` in forked workers, returning each one's names and row in
+    ``items``' order and calling ``progress(done, total)`` as they are. The lattice values files
+    share (:func:`shared_key`) are fitted first, once each; then the ACES views (heaviest),
+    the rest, and last the files waiting on shared values."""
     _PACKING.append(items)
     try:
         with Pool(workers) as pool:
+            first: dict[tuple, int] = {}
+            for index, item in enumerate(items):
+                key = shared_key(item)
+                if key is not None:
+                    first.setdefault(key, index)
+            for key, index in first.items():
+                pool.submit(key, _values_worker, index)
             for index in sorted(range(len(items)), key=lambda i: items[i].req.view is None):
-                pool.submit(index, _worker, index, str(folder))
+                if shared_key(items[index]) is None:
+                    pool.submit(index, _worker, index, str(folder))
             if progress is not None:
                 progress(0, len(items))
+            shared = {key: pool.result(key, _values_worker, index) for key, index in first.items()}
+            arguments = {}
+            for index, item in enumerate(items):
+                key = shared_key(item)
+                arguments[index] = (index, str(folder)) if key is None else (index, str(folder), shared[key])
+                if key is not None:
+                    pool.submit(index, _worker, *arguments[index])
             out = []
             for index in range(len(items)):
-                out.append(pool.result(index, _worker, index, str(folder)))
+                out.append(pool.result(index, _worker, *arguments[index]))
                 if progress is not None:
                     progress(index + 1, len(items))
             return out

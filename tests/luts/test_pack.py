@@ -95,6 +95,29 @@ def test_pack_is_reproducible_and_measured(tmp_path, few_probes):
     assert "9³ lattice" in readme and "5³ lattice" in readme and "256-entry 1D shaper" in readme
 
 
+def test_aces_clfs_of_several_sources_share_one_fit(tmp_path, few_probes):
+    """An ACES view's display-layout CLFs from several sources share their lattice values, fitted
+    once: each file is what baking its item alone writes. A kind of colour a source cannot hold
+    is named so in its row."""
+    spec = small_spec(SMALL.replace('sources = ["ACEScct"]', 'sources = ["ACEScct", "sRGB Encoded Rec.709 (sRGB)"]'))
+    items = [item for item in pack.plan(spec) if item.req.view is not None]
+    keys = [pack.shared_key(item) for item in items]
+    shared = [key for key in keys if key is not None]
+    assert len(shared) == 2 and len(set(shared)) == 1 and keys.count(None) == 2  # the .cube files
+    rows = [row for _, row in pack.bake_all(items, tmp_path, workers=2)]
+    # sRGB's codes hold no bright colour: the row says so (measuring the empty set failed)
+    assert ["none held" in row for row in rows] == [item.req.source.name != "ACEScct" for item in items]
+    alone = tmp_path / "alone"
+    alone.mkdir()
+    for item in items:
+        names, _ = pack.bake_item(item, alone)
+        for name in names:
+            assert (tmp_path / name).read_bytes() == (alone / name).read_bytes(), name
+    clfs = [item.req for item, key in zip(items, keys) if key is not None]
+    cubes = [pack.aces_bake.display_lattice(spec, r.source, r.display, r.view, 7, 4) for r in clfs]
+    assert np.array_equal(cubes[0].cube, cubes[1].cube) and not np.array_equal(cubes[0].matrix, cubes[1].matrix)
+
+
 def bad(text: str) -> SpecError:
     with pytest.raises(SpecError) as caught:
         pack.plan(small_spec(SMALL + text))
