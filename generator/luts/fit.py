@@ -220,10 +220,22 @@ def _solved(
     right = solve.accumulate(columns, free, residual, count) + FIT_REGULARISATION * start[:, unknown]
     # The stopping rule is relative to the whole right-hand side, unreached free nodes included.
     whole = np.sqrt(np.einsum("ck,ck->c", right, right) + system.rest)
-    diagonal = np.bincount(columns.ravel(), weights=(free**2).ravel(), minlength=count) + FIT_REGULARISATION
+    size = cube.shape[0]
+    # A^T A's bands cost a pass over the nodes a product, A itself a pass over the colours.
+    if system.nodes.shape[1] >= size**3:
+        matrix = solve.bands(system.nodes, free, size)
+        diagonal = matrix[0][unknown] + FIT_REGULARISATION
+        every = np.zeros((3, size**3))
 
-    def normal(v):
-        return solve.accumulate(columns, free, solve.interpolate(columns, free, v), count) + FIT_REGULARISATION * v
+        def normal(v):
+            every[:, unknown] = v
+            return solve.banded(matrix, size, every)[:, unknown] + FIT_REGULARISATION * v
+
+    else:
+        diagonal = np.bincount(columns.ravel(), weights=(free**2).ravel(), minlength=count) + FIT_REGULARISATION
+
+        def normal(v):
+            return solve.accumulate(columns, free, solve.interpolate(columns, free, v), count) + FIT_REGULARISATION * v
 
     values = start.copy()
     rtol = FIT_RTOL if rtol is None else rtol  # read when called: FIT_RTOL is the one default

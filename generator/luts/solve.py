@@ -5,9 +5,12 @@ row: the node numbers ``nodes`` and ``weights`` of the colour's tetrahedron,
 each of shape (4, m) (corner-major: gathering and summing one corner at a
 time keeps memory access sequential). It is never formed: :func:`interpolate`
 computes ``A v`` by gathering, :func:`accumulate` computes ``A^T r`` by
-summing into the nodes. :func:`conjugate_gradient` solves the normal
-equations for several right-hand sides at once (the three channels, one per
-row of a (c, k) array), each on its own.
+summing into the nodes. The normal matrix ``A^T A`` of a lattice's colours is
+banded (:func:`bands`): the corners of a tetrahedron differ by one of seven
+offsets, so it is held as eight bands and :func:`banded` applies it in a
+small fraction of the time ``A`` takes. :func:`conjugate_gradient` solves the
+normal equations for several right-hand sides at once (the three channels, one
+per row of a (c, k) array), each on its own.
 """
 
 from __future__ import annotations
@@ -29,6 +32,38 @@ def accumulate(nodes: np.ndarray, weights: np.ndarray, rows: np.ndarray, size: i
     """``A^T r`` per channel: per-row values ``rows`` (c, m) summed into ``size`` nodes, shape (c, size)."""
     flat = nodes.ravel()
     return np.stack([np.bincount(flat, weights=(weights * row).ravel(), minlength=size) for row in rows])
+
+
+def offsets(size: int) -> np.ndarray:
+    """The node-number differences of two corners of a tetrahedron in a size³ lattice, 0 first:
+    the steps along one, two or three axes ([r, g, b] order, b fastest)."""
+    return np.array([r * size * size + g * size + b for r in (0, 1) for g in (0, 1) for b in (0, 1)])
+
+
+def bands(nodes: np.ndarray, weights: np.ndarray, size: int) -> np.ndarray:
+    """``A^T A`` of the rows ``nodes``, ``weights`` (4, m; node numbers ascending along each
+    tetrahedron's corners, as :func:`generator.luts.fit.tetrahedra` gives them) in a size³
+    lattice: band ``k`` (8, size³) holds the entries ``[i, i + offsets(size)[k]]``."""
+    steps = offsets(size)
+    band = np.zeros(steps[-1] + 1, dtype=np.int64)  # band of each difference (a lookup, not a search)
+    band[steps] = np.arange(steps.size)
+    keys, values = [], []
+    for a in range(nodes.shape[0]):
+        for b in range(a, nodes.shape[0]):
+            keys.append(nodes[a] * steps.size + band[nodes[b] - nodes[a]])
+            values.append(weights[a] * weights[b])
+    flat = np.bincount(np.concatenate(keys), weights=np.concatenate(values), minlength=steps.size * size**3)
+    return np.ascontiguousarray(flat.reshape(size**3, steps.size).T)
+
+
+def banded(matrix: np.ndarray, size: int, values: np.ndarray) -> np.ndarray:
+    """The symmetric matrix of :func:`bands` ``matrix`` applied to node ``values`` (c, size³)."""
+    out = matrix[0] * values
+    for band, step in zip(matrix[1:], offsets(size)[1:]):
+        upper = band[:-step]
+        out[:, :-step] += upper * values[:, step:]
+        out[:, step:] += upper * values[:, :-step]
+    return out
 
 
 def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:

@@ -44,3 +44,15 @@ def test_conjugate_gradient_solves_each_system_to_its_own_tolerance():
     solved = solve.conjugate_gradient(lambda v: v @ system, right, start, np.diag(system).copy(), tolerance, 500)
     assert np.linalg.norm(solved[0] @ system - right[0]) < tolerance[0]
     assert np.array_equal(solved[1], start[1])
+
+
+def test_bands_are_the_normal_matrix():
+    """The banded normal matrix applies A^T A, extrapolating rows (fractions beyond the cell) included."""
+    rng = np.random.default_rng(RNG_SEED)
+    for size in (2, 3, 5):
+        index = rng.uniform(-0.3, size - 0.7, (3, 300))
+        nodes, weights = fitting.tetrahedra(np.ascontiguousarray(index), size)
+        matrix = _dense(nodes, weights, size)
+        values = rng.random((3, size**3))
+        banded = solve.banded(solve.bands(nodes, weights, size), size, values)
+        assert np.allclose(banded, values @ (matrix.T @ matrix), rtol=0, atol=1e-10), size
