@@ -10,7 +10,10 @@ from chromaticities.
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import ParamSpec
 
 import numpy as np
 
@@ -77,6 +80,26 @@ def xy_to_XYZ(xy) -> np.ndarray:
     return np.stack([x / y, np.ones_like(x), (1.0 - x - y) / y], axis=-1)
 
 
+_P = ParamSpec("_P")
+
+
+def _remembered(derive: Callable[_P, np.ndarray]) -> Callable[_P, np.ndarray]:
+    """``derive`` computed once per hashable arguments (chromaticities as tuples): a pack or a
+    verify derives the same few matrices thousands of times. Each call gets its own copy;
+    arguments that do not hash (arrays, lists) are derived anew."""
+    cached: Callable[..., np.ndarray] = functools.lru_cache(maxsize=1024)(derive)
+
+    @functools.wraps(derive)
+    def matrix(*args: _P.args, **kwargs: _P.kwargs) -> np.ndarray:
+        try:
+            return cached(*args, **kwargs).copy()
+        except TypeError:  # unhashable arguments
+            return derive(*args, **kwargs)
+
+    return matrix
+
+
+@_remembered
 def normalised_primary_matrix(primaries, whitepoint) -> np.ndarray:
     """RGB -> XYZ matrix of a gamut (SMPTE RP 177-1993, equation 3.3).
 
@@ -89,6 +112,7 @@ def normalised_primary_matrix(primaries, whitepoint) -> np.ndarray:
     return columns * scale[np.newaxis, :]
 
 
+@_remembered
 def adaptation_matrix(source_white, target_white, cat: str = "Bradford") -> np.ndarray:
     """XYZ -> XYZ chromatic adaptation from ``source_white`` to ``target_white`` (xy).
 

@@ -166,3 +166,21 @@ def test_von_kries_of_tristimulus_whites_is_colour_sciences():
     source, target = np.array([0.9505, 1.0, 1.089]), np.array([0.95047, 0.99999, 1.08883])
     theirs = matrix_chromatic_adaptation_VonKries(source, target, transform="CAT02")
     assert np.array_equal(von_kries(source, target, "CAT02"), theirs)
+
+
+def test_remembered_matrices_are_each_callers_own():
+    """Derived once per chromaticities, a matrix changed by one caller is not what the next gets;
+    lists and arrays (unhashable) are derived too, to the same values."""
+    primaries, white = ((0.64, 0.33), (0.30, 0.60), (0.15, 0.06)), (0.3127, 0.3290)
+    first = normalised_primary_matrix(primaries, white)
+    first[0, 0] = 99.0
+    again = normalised_primary_matrix(primaries, white)
+    assert again[0, 0] != 99.0
+    assert np.array_equal(again, normalised_primary_matrix(np.array(primaries), list(white)))
+    adapted = adaptation_matrix(white, (0.32168, 0.33767), "CAT02")
+    adapted[:] = 0.0
+    assert np.array_equal(
+        adaptation_matrix(white, (0.32168, 0.33767), cat="CAT02"),
+        adaptation_matrix(list(white), [0.32168, 0.33767], "CAT02"),
+    )
+    assert adaptation_matrix(white, (0.32168, 0.33767), "CAT02").any()
