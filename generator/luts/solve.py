@@ -45,15 +45,18 @@ def bands(nodes: np.ndarray, weights: np.ndarray, size: int) -> np.ndarray:
     tetrahedron's corners, as :func:`generator.luts.fit.tetrahedra` gives them) in a size³
     lattice: band ``k`` (8, size³) holds the entries ``[i, i + offsets(size)[k]]``."""
     steps = offsets(size)
-    band = np.zeros(steps[-1] + 1, dtype=np.int64)  # band of each difference (a lookup, not a search)
+    band = np.zeros(steps[-1] + 1, dtype=np.intp)  # band of each difference (a lookup, not a search)
     band[steps] = np.arange(steps.size)
-    keys, values = [], []
-    for a in range(nodes.shape[0]):
-        for b in range(a, nodes.shape[0]):
-            keys.append(nodes[a] * steps.size + band[nodes[b] - nodes[a]])
-            values.append(weights[a] * weights[b])
-    flat = np.bincount(np.concatenate(keys), weights=np.concatenate(values), minlength=steps.size * size**3)
-    return np.ascontiguousarray(flat.reshape(size**3, steps.size).T)
+    pairs = [(a, b) for a in range(nodes.shape[0]) for b in range(a + 1, nodes.shape[0])]
+    keys, values = np.empty((len(pairs), nodes.shape[1]), dtype=np.intp), np.empty((len(pairs), nodes.shape[1]))
+    for row, (a, b) in enumerate(pairs):
+        np.take(band, nodes[b] - nodes[a], out=keys[row])
+        keys[row] += nodes[a] * steps.size
+        np.multiply(weights[a], weights[b], out=values[row])
+    flat = np.bincount(keys.ravel(), weights=values.ravel(), minlength=steps.size * size**3)
+    out = np.ascontiguousarray(flat.reshape(size**3, steps.size).T)
+    out[0] = np.bincount(nodes.ravel(), weights=(weights * weights).ravel(), minlength=size**3)
+    return out
 
 
 def banded(matrix: np.ndarray, size: int, values: np.ndarray) -> np.ndarray:
