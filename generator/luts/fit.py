@@ -52,15 +52,28 @@ def tetrahedra(index: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
     indices ``index`` (3, m), ``[r, g, b]`` order, axis- and corner-major. The path from the cell's first corner steps along the axes by decreasing
     fraction (equal fractions in axis order); elementwise over the three axes (reductions
     along an axis of three are slow in numpy, see :func:`~generator.colorimetry.matrices.channel_max`)."""
-    base = np.clip(np.floor(index).astype(np.int64), 0, size - 2)
+    base = np.floor(index).astype(np.int64)
+    np.clip(base, 0, size - 2, out=base)
     r, g, b = index - base
-    high, low = np.maximum(np.maximum(r, g), b), np.minimum(np.minimum(r, g), b)
-    middle = np.maximum(np.minimum(r, g), np.minimum(np.maximum(r, g), b))
+    nodes, weights = np.empty((4, *r.shape), dtype=np.int64), np.empty((4, *r.shape))  # filled in place
+    upper, lower = np.maximum(r, g), np.minimum(r, g)
+    high, low = np.maximum(upper, b), np.minimum(lower, b)
+    middle = np.maximum(lower, np.minimum(upper, b))
+    np.subtract(1.0, high, out=weights[0])
+    np.subtract(high, middle, out=weights[1])
+    np.subtract(middle, low, out=weights[2])
+    weights[3] = low
     first = np.where(r == high, size * size, np.where(g == high, size, 1))  # the first of equal largest
     last = np.where(b == low, 1, np.where(g == low, size, size * size))  # the last of equal smallest
-    origin = (base[0] * size + base[1]) * size + base[2]
-    far = origin + (size * size + size + 1)
-    return np.stack([origin, origin + first, far - last, far]), np.stack([1.0 - high, high - middle, middle - low, low])
+    origin = nodes[0]
+    np.multiply(base[0], size, out=origin)
+    origin += base[1]
+    origin *= size
+    origin += base[2]
+    np.add(origin, first, out=nodes[1])
+    np.add(origin, size * size + size + 1, out=nodes[3])
+    np.subtract(nodes[3], last, out=nodes[2])
+    return nodes, weights
 
 
 @dataclass(frozen=True, eq=False)
