@@ -10,7 +10,7 @@ import numpy as np
 
 from generator import reference, tolerances
 from generator.colorimetry.gamuts import gamuts
-from generator.colorimetry.matrices import rgb_to_rgb
+from generator.colorimetry.matrices import channel_max, rgb_to_rgb
 
 
 def relative_error(actual, expected) -> np.ndarray:
@@ -26,8 +26,8 @@ def colour_relative_error(actual, expected) -> np.ndarray:
     keeps 24 bits of the largest value of a triplet, so a channel far smaller than its
     neighbours cannot be held to a tighter relative bound after a matrix."""
     expected = np.asarray(expected, dtype=np.float64)
-    scale = np.maximum(np.max(np.abs(expected), axis=-1, keepdims=True), tolerances.RELATIVE_FLOOR)
-    return np.max(np.abs(np.asarray(actual, dtype=np.float64) - expected) / scale, axis=-1)
+    scale = np.maximum(channel_max(np.abs(expected)), tolerances.RELATIVE_FLOOR)[..., None]
+    return channel_max(np.abs(np.asarray(actual, dtype=np.float64) - expected) / scale)
 
 
 def delta_e_itp(display, code_a, code_b) -> np.ndarray:

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from generator import tolerances
+from generator.colorimetry.matrices import channel_max
 from generator.metrics import (
     colour_relative_error,
     delta_e_of_ictcp,
@@ -87,6 +88,12 @@ def _reference_ictcp(check: Check, safe: np.ndarray, step: float) -> np.ndarray:
     return by_step[step]
 
 
+def _finite(rgb: np.ndarray) -> np.ndarray:
+    """Whether each colour (n, 3) is finite in every channel, channel by channel (numpy reduces
+    over an axis of three many times slower)."""
+    return np.isfinite(rgb[:, 0]) & np.isfinite(rgb[:, 1]) & np.isfinite(rgb[:, 2])
+
+
 def sample_errors(check: Check, actual: np.ndarray, step: float) -> tuple[np.ndarray, int]:
     """Per-sample errors in the check's metric (NaN where not compared) and the undefined count."""
     expected = check.expected
@@ -94,7 +101,7 @@ def sample_errors(check: Check, actual: np.ndarray, step: float) -> tuple[np.nda
         raise ValueError(f"{check.title}: the reference evaluation gave nothing to compare")
     if step:
         expected = np.clip(expected, 0.0, 1.0)
-    compared = check.probes.finite & np.all(np.isfinite(expected), axis=-1)
+    compared = check.probes.finite & _finite(expected)
     undefined = int(np.sum(check.probes.finite & ~compared))
     if check.keep is not None:
         compared &= check.keep
@@ -105,12 +112,12 @@ def sample_errors(check: Check, actual: np.ndarray, step: float) -> tuple[np.nda
         if check.metric == ITP:
             errors = delta_e_of_ictcp(ictcp_of_codes(check.target, got), _reference_ictcp(check, safe, step))
         elif check.metric == CODES:
-            errors = np.max(np.abs(got - safe), axis=-1) * 1023.0
+            errors = channel_max(np.abs(got - safe)) * 1023.0
         elif check.metric == COLOUR:
             errors = colour_relative_error(got, safe) / check.scale
         else:
-            errors = np.max(relative_error(got, safe), axis=-1)
-    errors = np.where(np.all(np.isfinite(actual), axis=-1), errors, np.inf)
+            errors = channel_max(relative_error(got, safe))
+    errors = np.where(_finite(actual), errors, np.inf)
     return np.where(compared, errors, np.nan), undefined
 
 
