@@ -212,9 +212,12 @@ def _apply(transform, optimization: str):
     return apply
 
 
-def _measure(req: bake.Request, paths: list[Path], interpolation="tetrahedral", optimization="OPTIMIZATION_LOSSLESS"):
+def _measure(
+    req: bake.Request, paths: list[Path], sets: dict, interpolation="tetrahedral", optimization="OPTIMIZATION_LOSSLESS"
+):
+    """The file's figures on :func:`probes.reference_sets`' ``sets``, read as OCIO reads it."""
     apply = _apply(_transform(paths, interpolation), optimization)
-    return probes.measure(req.spec, req.source, req.display, req.method, apply)
+    return probes.figures(*probes.errors_on(req.display, sets, apply))
 
 
 def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: dict | None) -> str:
@@ -276,9 +279,10 @@ def bake_item(item: Item, folder: Path, values: np.ndarray | None = None) -> tup
         path.write_bytes(data)
     if req.view is not None:
         return tuple(p.name for p in paths), _aces_row(item.name, req, _aces_figures(req, paths))
-    trilinear = _measure(req, paths, "trilinear") if req.fmt != "clf" else None
-    default = _measure(req, paths, optimization="OPTIMIZATION_DEFAULT")
-    return tuple(p.name for p in paths), _row(item.name, req, _measure(req, paths), default, trilinear)
+    sets = probes.reference_sets(req.spec, req.source, req.display, req.method)  # one reference, three readings
+    trilinear = _measure(req, paths, sets, "trilinear") if req.fmt != "clf" else None
+    default = _measure(req, paths, sets, optimization="OPTIMIZATION_DEFAULT")
+    return tuple(p.name for p in paths), _row(item.name, req, _measure(req, paths, sets), default, trilinear)
 
 
 #: The items a pack's forked workers bake (a spec holds functions, which do not pickle: the

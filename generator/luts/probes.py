@@ -164,21 +164,20 @@ def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
     return channel_max(np.abs(actual - expected)) * 1023.0, "10-bit codes"
 
 
-def set_errors(
+def reference_sets(
     spec: Spec,
     source: ColourSpace | None,
     display: Display,
     method: str,
-    apply,
     gamut_source: ColourSpace | None = None,
     count: int = COUNT,
-) -> tuple[dict[str, np.ndarray], str]:
-    """Per-colour errors of ``apply`` (source code values (n, 3) -> display code values)
-    on every set, and their unit. ``source`` None means the input is scene-reference
-    linear RGB. A set with no colours (no out-of-gamut colours when the source gamut
-    is the display's, no over-range ones a bounded source holds) is left out."""
+) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Each set's input values (source code values; ``source`` None: scene-reference linear RGB)
+    and the reference's display code values for them. A set with no colours (no out-of-gamut
+    colours when the source gamut is the display's, no over-range ones a bounded source holds)
+    is left out."""
     space = source or spec.reference
-    result, unit = {}, ""
+    out = {}
     for name, ref in probes(spec, space, display, count, gamut_source).items():
         code = ref if source is None else reference.from_reference(spec, source, ref)
         if source is not None:
@@ -190,8 +189,36 @@ def set_errors(
             expected = reference.mapped_view(
                 spec, display, method, ref, reference.method_params(spec, method, None, source, display)
             )
+        out[name] = (code, expected)
+    return out
+
+
+def errors_on(display: Display, sets: dict, apply) -> tuple[dict[str, np.ndarray], str]:
+    """Per-colour errors of ``apply`` (input values (n, 3) -> display code values) on
+    :func:`reference_sets`' ``sets``, and their unit ("" without a set)."""
+    result, unit = {}, ""
+    for name, (code, expected) in sets.items():
         result[name], unit = errors(display, apply(code), expected)
     return result, unit
+
+
+def set_errors(
+    spec: Spec,
+    source: ColourSpace | None,
+    display: Display,
+    method: str,
+    apply,
+    gamut_source: ColourSpace | None = None,
+    count: int = COUNT,
+) -> tuple[dict[str, np.ndarray], str]:
+    """Per-colour errors of ``apply`` (source code values (n, 3) -> display code values)
+    on every set of :func:`reference_sets`, and their unit."""
+    return errors_on(display, reference_sets(spec, source, display, method, gamut_source, count), apply)
+
+
+def figures(sets: dict[str, np.ndarray], unit: str) -> dict[str, Figures]:
+    """Largest error and p99 of each set's per-colour errors."""
+    return {name: Figures(float(e.max()), float(np.percentile(e, 99)), unit) for name, e in sets.items()}
 
 
 def measure(
@@ -204,8 +231,7 @@ def measure(
     count: int = COUNT,
 ) -> dict[str, Figures]:
     """Figures of ``apply`` on every set (see :func:`set_errors`)."""
-    sets, unit = set_errors(spec, source, display, method, apply, gamut_source, count)
-    return {name: Figures(float(e.max()), float(np.percentile(e, 99)), unit) for name, e in sets.items()}
+    return figures(*set_errors(spec, source, display, method, apply, gamut_source, count))
 
 
 def ocio_apply(transform, interpolation=None, search_path: str = "", optimization: str = "OPTIMIZATION_DEFAULT"):
