@@ -136,7 +136,9 @@ def _measure(spec, req, path: Path, method: str, interpolation, optimization: st
     from generator.luts import probes
 
     apply = probes.ocio_apply(ocio.FileTransform(str(path), interpolation=interpolation), optimization=optimization)
-    return _figures(probes.set_errors(spec, req.source, req.display, method, apply)[0])
+    return _figures(
+        probes.errors_on(req.display, probes.reference_sets(spec, req.source, req.display, method), apply)[0]
+    )
 
 
 def clamped_cube(path: Path, out: Path) -> Path:

@@ -309,23 +309,21 @@ def bake_all(
     _PACKING.append(items)
     try:
         with Pool(workers) as pool:
+            keys = [shared_key(item) for item in items]
             first: dict[tuple, int] = {}
-            for index, item in enumerate(items):
-                key = shared_key(item)
+            for index, key in enumerate(keys):
                 if key is not None:
                     first.setdefault(key, index)
             for key, index in first.items():
                 pool.submit(key, _values_worker, index)
             for index in sorted(range(len(items)), key=lambda i: items[i].req.view is None):
-                if shared_key(items[index]) is None:
+                if keys[index] is None:
                     pool.submit(index, _worker, index, str(folder))
             if progress is not None:
                 progress(0, len(items))
             shared = {key: pool.result(key, _values_worker, index) for key, index in first.items()}
-            arguments = {}
-            for index, item in enumerate(items):
-                key = shared_key(item)
-                arguments[index] = (index, str(folder)) if key is None else (index, str(folder), shared[key])
+            arguments = [(i, str(folder)) if k is None else (i, str(folder), shared[k]) for i, k in enumerate(keys)]
+            for index, key in enumerate(keys):
                 if key is not None:
                     pool.submit(index, _worker, *arguments[index])
             out = []

@@ -202,20 +202,6 @@ def errors_on(display: Display, sets: dict, apply) -> tuple[dict[str, np.ndarray
     return result, unit
 
 
-def set_errors(
-    spec: Spec,
-    source: ColourSpace | None,
-    display: Display,
-    method: str,
-    apply,
-    gamut_source: ColourSpace | None = None,
-    count: int = COUNT,
-) -> tuple[dict[str, np.ndarray], str]:
-    """Per-colour errors of ``apply`` (source code values (n, 3) -> display code values)
-    on every set of :func:`reference_sets`, and their unit."""
-    return errors_on(display, reference_sets(spec, source, display, method, gamut_source, count), apply)
-
-
 def figures(sets: dict[str, np.ndarray], unit: str) -> dict[str, Figures]:
     """Largest error and p99 of each set's per-colour errors."""
     return {name: Figures(float(e.max()), float(np.percentile(e, 99)), unit) for name, e in sets.items()}
@@ -230,8 +216,9 @@ def measure(
     gamut_source: ColourSpace | None = None,
     count: int = COUNT,
 ) -> dict[str, Figures]:
-    """Figures of ``apply`` on every set (see :func:`set_errors`)."""
-    return figures(*set_errors(spec, source, display, method, apply, gamut_source, count))
+    """Figures of ``apply`` (source code values (n, 3) -> display code values) on every set of
+    :func:`reference_sets`."""
+    return figures(*errors_on(display, reference_sets(spec, source, display, method, gamut_source, count), apply))
 
 
 def ocio_apply(transform, interpolation=None, search_path: str = "", optimization: str = "OPTIMIZATION_DEFAULT"):
