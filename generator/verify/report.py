@@ -56,11 +56,11 @@ def table(verification: Verification, everything: bool = True) -> str:
 
 
 def groups(verification: Verification) -> dict:
-    """(engine, kind, metric) -> counts by verdict, the largest p99, and the worst error with its
-    own tolerance: those of the row whose error is the largest part of its tolerance (a group
-    mixes tolerances, so the largest error beside the largest tolerance could read as within it
-    while rows failed). A row run but not computed (a file OCIO could not load) makes the worst
-    NaN: "-", not a number."""
+    """(engine, kind, metric) -> counts by verdict and the worst row's max, p99 and tolerance: the
+    row whose error is the largest part of its tolerance (a group mixes tolerances, so the largest
+    error beside the largest tolerance could read as within it while rows failed, and another
+    row's p99 could exceed the max shown). A row run but not computed (a file OCIO could not
+    load) makes the worst NaN: "-", not a number."""
     out: defaultdict[tuple[str, str, str], dict[str, float]] = defaultdict(
         lambda: {"checks": 0, PASS: 0, FAIL: 0, APPROX: 0, NOT_RUN: 0, "max": 0.0, "p99": 0.0, "tolerance": 0.0}
     )
@@ -76,9 +76,9 @@ def groups(verification: Verification) -> dict:
         part = float(o.worst) / o.check.tolerance if computed else float("inf")
         if key not in share or part > share[key] or (part == share[key] and not computed):
             share[key] = part
-            entry["max"], entry["tolerance"] = (float(o.worst) if computed else float("nan")), o.check.tolerance
-        if computed:
-            entry["p99"] = max(entry["p99"], float(o.p99) if np.isfinite(o.p99) else 0.0)
+            entry["max"] = float(o.worst) if computed else float("nan")
+            entry["p99"] = float(o.p99) if computed and np.isfinite(o.p99) else float("nan")
+            entry["tolerance"] = o.check.tolerance
     return dict(out)
 
 
@@ -113,7 +113,7 @@ def summary(verification: Verification, explained: bool = True) -> str:
             continue
         lines.append(
             f"  {engine:<{width}} {kind:<15} {metric:<16} {g['checks']:>4} {g[PASS]:>5} {g[APPROX]:>6} "
-            f"{g[FAIL]:>5} {_figure(g['max']):>9} {g['p99']:>9.3g} {g['tolerance']:>9.3g}"
+            f"{g[FAIL]:>5} {_figure(g['max']):>9} {_figure(g['p99']):>9} {g['tolerance']:>9.3g}"
         )
     for o in verification.outcomes:
         if o.verdict == FAIL or (o.verdict == APPROX and explained):

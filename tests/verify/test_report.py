@@ -5,12 +5,15 @@ from __future__ import annotations
 
 import html
 import re
+from pathlib import Path
 
 import PyOpenColorIO as ocio
 
+from generator.verify.check import ITP, Check
 from generator.verify.checks import LUT, TO_REFERENCE, VIEW
+from generator.verify.judge import PASS, Outcome
 from generator.verify.report import groups, html_page, sentence, summary
-from generator.verify.run import verify
+from generator.verify.run import Verification, verify
 from tests.verify.conftest import chromium, parsed
 
 
@@ -32,6 +35,23 @@ def test_a_group_with_failures_shows_a_worst_over_its_own_tolerance(config_copy)
     result = verify(config_copy, ("ocio",), density="quick", kinds=(VIEW,), only="Rec.2100-PQ")
     rows = _group_rows_failing(result)
     assert rows and all(worst > tolerance for _, worst, tolerance in rows), rows
+
+
+def test_a_group_shows_the_max_p99_and_tolerance_of_one_row():
+    """A group of two rows of different tolerances: the closer to its tolerance (an ACES view at
+    0.01) is shown whole; the other's larger p99 (a Scale file at 0.035) had been shown beside
+    the first's max, a p99 above the max."""
+    view = Check(VIEW, "ACES 2.0", "ACES2065-1", metric=ITP, tolerance=0.01)
+    scale = Check(VIEW, "Scale", "ACES2065-1", metric=ITP, tolerance=0.035)
+    outcomes = (
+        Outcome(view, "ocio default", PASS, worst=0.0011, p99=0.0004),
+        Outcome(scale, "ocio default", PASS, worst=0.0022, p99=0.0014),
+    )
+    result = Verification(Path("config.ocio"), None, (view, scale), outcomes)
+    (group,) = groups(result).values()
+    assert (group["max"], group["p99"], group["tolerance"]) == (0.0011, 0.0004, 0.01)
+    row = next(line for line in summary(result).splitlines() if "ocio default" in line and "view" in line)
+    assert row.split()[-3:] == ["0.0011", "0.0004", "0.01"], row
 
 
 def test_a_row_not_computed_says_so(config_copy):
