@@ -15,6 +15,14 @@ from generator.spec.load import load, named_display, named_space
 from generator.spec.namespace import DISPLAY_REFERENCE
 
 
+def _curve(name: str, curve) -> str:
+    """A curve by name and parameters; a published formula (no parameters) by its code domain."""
+    if isinstance(curve, transfer.Function):
+        lo, hi = curve.domain
+        return f"{name}: the published formula, codes {lo:g} to {hi:g}"
+    return f"{name}: {curve!r}"
+
+
 def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
     """What ``info`` prints; ``target``, the OCIO version a given spec builds, is marked."""
     out = [
@@ -31,7 +39,7 @@ def _lines(space, spec, target: tuple[int, int] | None = None) -> list[str]:
             f"gamut:     {g.name}  ({g.citation})",
             "primaries: " + "  ".join(f"{c} ({x:.5f}, {y:.5f})" for c, (x, y) in zip("RGB", g.primaries)),
             f"white:     ({g.white[0]:.5f}, {g.white[1]:.5f})",
-            f"curve:     {space.curve_name}: {space.curve!r}",
+            f"curve:     {_curve(space.curve_name, space.curve)}",
         ]
         out.append(f"18% grey:  code {float(space.curve.encode(np.float64(0.18))):.6f}")
         out.append(f"to {spec.scene_reference} ({_adaptation(spec, g)}):")
@@ -57,7 +65,7 @@ def _display_lines(display, spec) -> list[str]:
         f"gamut:     {g.name}  ({g.citation})",
         "primaries: " + "  ".join(f"{c} ({x:.5f}, {y:.5f})" for c, (x, y) in zip("RGB", g.primaries)),
         f"white:     ({g.white[0]:.5f}, {g.white[1]:.5f})",
-        f"eotf:      {display.eotf_name}: {display.eotf!r}",
+        f"eotf:      {_curve(display.eotf_name, display.eotf)}",
         f"peak:      {display.peak:g} cd/m²{absolute}",
         f"views:     {', '.join(display.views)}",
         f"to {DISPLAY_REFERENCE} ({'the same white: no adaptation' if same else spec.chromatic_adaptation}):",

@@ -71,7 +71,7 @@ def test_info_describes_a_display_of_the_spec(capsys, show):
         "views:     ACES 2.0 - HDR 1500 nits (LED Wall), Scale, Raw",
     ):
         assert line in out.splitlines(), out
-    assert "eotf:      ST 2084" in out
+    assert "eotf:      ST 2084: the published formula, codes 0 to 1" in out.splitlines(), out
     to_xyz = out.split("to CIE XYZ-D65 - Display-referred (the same white: no adaptation):\n")[1].splitlines()[:3]
     assert np.allclose(
         [[float(v) for v in row.split()] for row in to_xyz],
