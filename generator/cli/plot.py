@@ -1,5 +1,6 @@
 """ocioforge plot: the CIE 1931 chromaticity diagram of a built config's displays and the spaces
-asked for, or where each gamut mapping moves the probe colours on a display."""
+asked for, where each gamut mapping moves the probe colours on a display, or what each view of
+a display does to highlights."""
 
 from __future__ import annotations
 
@@ -23,7 +24,8 @@ FORMATS = ("png", "svg", "pdf")
     "the spectral locus and each display's gamut triangle, and those of the colour spaces "
     "--spaces names. With --mapping, one panel per gamut-mapping method (and ACES view) of a "
     "display (--display, by default the first): a line from each of the verifier's probe "
-    "colours to where the method puts it.",
+    "colours to where the method puts it. With --highlights, one panel per view of that display: "
+    "a grey and six hues ramped up to 16 times scene white.",
 )
 @click.argument("config", type=ConfigPath(dir_okay=False))
 @click.option("-o", "--output", required=True, type=GivenPath(), help="Image to write: .png, .svg or .pdf.")
@@ -35,18 +37,27 @@ FORMATS = ("png", "svg", "pdf")
     help="Colour spaces whose gamuts to draw too (names or aliases; repeat it or separate them with commas).",
 )
 @click.option("--mapping", is_flag=True, help="Draw each gamut mapping's moves, a panel per method.")
+@click.option("--highlights", is_flag=True, help="Draw exposure ramps to 16 through each view, a panel per view.")
 @click.option(
     "--display",
     "display_name",
     type=NAME,
     default=None,
-    help="With --mapping: the display (name or alias; default: the spec's first).",
+    help="With --mapping or --highlights: the display (name or alias; default: the spec's first).",
 )
 @click.option("--force", is_flag=True, help="Replace an existing image (through a link, the file it points to).")
-def command(config, output, space_names, mapping, display_name, force):
+def command(config, output, space_names, mapping, highlights, display_name, force):
     """Draw gamuts on the chromaticity diagram (the ``ocioforge plot`` command)."""
-    if display_name is not None and not mapping:
-        raise SpecError("ocioforge plot", "--display", "chooses the display --mapping draws; allowed: with --mapping")
+    if mapping and highlights:
+        raise SpecError("ocioforge plot", "--highlights", "draws another figure than --mapping; allowed: one of them")
+    if display_name is not None and not (mapping or highlights):
+        raise SpecError(
+            "ocioforge plot",
+            "--display",
+            "chooses the display --mapping or --highlights draws; allowed: with one of them",
+        )
+    if highlights and space_names:
+        raise SpecError("ocioforge plot", "--spaces", "draws gamuts, which --highlights does not; allowed: without it")
     check_file_output(output)
     target(output, force)  # refused before the drawing, not after (a folder, a device: named as such)
     fmt = Path(output).suffix.lower().lstrip(".")
@@ -56,6 +67,8 @@ def command(config, output, space_names, mapping, display_name, force):
     spaces = _spaces(spec, space_names)
     if mapping:
         figure = figures.mapping(spec, _display(spec, display_name), spaces)
+    elif highlights:
+        figure = figures.highlights(spec, _display(spec, display_name))
     else:
         figure = figures.chromaticity(spec, spaces)
     write_atomic(Path(output), figures.png(figure, fmt), force)

@@ -7,6 +7,8 @@
   method put it (the lecture's picture: desaturation moves a colour toward
   white, scaling keeps its chromaticity and lowers its luminance);
 * ramps from grey to spectral colours before and after each mapping;
+* exposure ramps up to 16 times scene white through each view of one display (what a view does
+  to a highlight);
 * heatmaps of each engine's worst error over each probe family, per check kind.
 """
 
@@ -18,11 +20,12 @@ import warnings
 import numpy as np
 
 from generator import reference
+from generator.colorimetry.gamuts import gamuts
 from generator.colorimetry.matrices import apply_matrix
 from generator.gamut import METHODS
 from generator.rendering import views
 from generator.spec.schema import Display, Spec
-from generator.verify import probes
+from generator.verify import paths, probes
 
 #: Wavelengths (nm) of the spectral colours the mapping ramps run toward.
 RAMP_WAVELENGTHS = (450.0, 480.0, 500.0, 520.0, 560.0, 590.0, 620.0)
@@ -214,6 +217,68 @@ def mapping_ramps(spec: Spec, display: Display):
         axes.set_ylabel(name, rotation=0, ha="right", fontsize=8)
         axes.set_xticks([])
     panels[-1, 0].set_xlabel(f"grey -> spectral colour at equal luminance, mapped onto {display.name}")
+    return figure
+
+
+#: The highlight ramps' colours, in ACEScg: a grey and six hues, each channel over the largest.
+HIGHLIGHT_COLOURS = {
+    "grey": (1.0, 1.0, 1.0),
+    "red": (1.0, 0.08, 0.05),
+    "orange": (1.0, 0.45, 0.12),
+    "green": (0.12, 1.0, 0.08),
+    "cyan": (0.06, 0.7, 1.0),
+    "blue": (0.08, 0.1, 1.0),
+    "magenta": (0.9, 0.1, 0.8),
+}
+
+#: The ramps' largest channel runs over these stops of scene light (1.0: scene white), in columns.
+HIGHLIGHT_STOPS, HIGHLIGHT_COLUMNS = (-6.0, 4.0), 321
+
+
+def highlight_codes(spec: Spec, display: Display) -> tuple[np.ndarray, dict[str, np.ndarray]]:
+    """The ramps' exposures (columns,: the largest ACEScg channel, 2^-6 to 16) and each view of
+    ``display`` but Raw (ACES views by the float64 output transform, the others as verify's
+    reference evaluates them): its display codes (colours, columns, 3) of :data:`HIGHLIGHT_COLOURS`."""
+    exposures = 2.0 ** np.linspace(*HIGHLIGHT_STOPS, HIGHLIGHT_COLUMNS)
+    ap1 = np.array(list(HIGHLIGHT_COLOURS.values()))[:, None, :] * exposures[None, :, None]
+    ref = apply_matrix(reference.gamut_matrix(spec, gamuts()["AP1"]), ap1)
+    out = {}
+    for view in display.views:
+        if reference.aces_view_of(display, view) is not None:
+            out[view] = reference.aces_view(spec, display, view, ref)
+            continue
+        function = paths.view_function(spec, display, view)
+        if function is not None:
+            out[view] = function(ref)
+    return exposures, out
+
+
+def highlights(spec: Spec, display: Display):
+    """One panel per view of ``display``: each of :data:`HIGHLIGHT_COLOURS` ramped from 2^-6 to
+    16 times scene white, shown by its display codes (an HDR display's signal, drawn as is)."""
+    plt = _pyplot()
+    exposures, shown = highlight_codes(spec, display)
+    names = list(HIGHLIGHT_COLOURS)
+    figure, panels = plt.subplots(len(shown), 1, figsize=(8, 0.95 * len(shown) + 0.6), squeeze=False)
+    stops = np.log2(exposures)
+    ticks = (1 / 64, 1 / 16, 0.18, 1.0, 2.0, 4.0, 8.0, 16.0)
+    for axes, (name, codes) in zip(panels[:, 0], shown.items()):
+        axes.imshow(
+            np.clip(codes, 0.0, 1.0),
+            aspect="auto",
+            extent=(stops[0], stops[-1], len(names), 0),
+            interpolation="nearest",
+        )
+        axes.set_yticks(np.arange(len(names)) + 0.5, names, fontsize=6)
+        axes.set_ylabel(name, rotation=0, ha="right", va="center", fontsize=8)
+        axes.set_xticks(np.log2(ticks), [])
+        for x in (0.0, 3.0, 4.0):  # scene white, 8 and 16: the Colorimetric view shows all three alike
+            axes.axvline(x, color="white", linewidth=0.5, alpha=0.6)
+    panels[-1, 0].set_xticks(np.log2(ticks), [f"{v:g}" if v >= 0.18 else f"1/{round(1 / v)}" for v in ticks])
+    panels[-1, 0].set_xlabel("scene light of the largest ACEScg channel (1.0: scene white)")
+    signal = " (PQ or HLG signal drawn as is)" if display.is_hdr else ""
+    figure.suptitle(f"{spec.name}: highlights through each view of {display.name}{signal}", fontsize=10)
+    figure.tight_layout()
     return figure
 
 

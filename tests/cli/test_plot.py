@@ -92,7 +92,30 @@ def test_plot_maps_onto_the_display_asked_for(build_config, tmp_path, capsys):
 def test_plot_display_without_mapping_is_refused(capsys, tmp_path, build_config):
     """--display chooses the display --mapping draws: alone, any name (a typo too) was ignored."""
     code, _, err = run(capsys, "plot", str(build_config((2, 1))), "-o", str(tmp_path / "g.png"), "--display", "nope")
-    assert code == 2 and "with --mapping" in err, err
+    assert code == 2 and "allowed: with one of them" in err, err
+    assert not any(tmp_path.iterdir())
+
+
+def test_highlights_draw_a_panel_per_view_of_the_display_asked_for(built, tmp_path, capsys):
+    """SVG: the panels' labels are text; Raw has no panel."""
+    image = tmp_path / "pq.svg"
+    assert run(capsys, "plot", built, "-o", image, "--highlights", "--display", "rec2100_pq_display")[0] == 0
+    drawn = image.read_bytes()
+    for label in (b"ACES 2.0 - HDR 1000 nits (P3 D65)", b"ACES 1.1 - HDR Video (1000 nits &amp; Rec.2020 lim)"):
+        assert label in drawn
+    assert b"highlights through each view of Rec.2100-PQ - Display (PQ or HLG signal drawn as is)" in drawn
+
+
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        (["--highlights", "--mapping"], "--highlights: draws another figure than --mapping"),
+        (["--highlights", "--spaces", "ACEScg"], "--spaces: draws gamuts, which --highlights does not"),
+    ],
+)
+def test_highlights_with_another_figure_is_refused(capsys, tmp_path, built, extra, words):
+    code, _, err = run(capsys, "plot", built, "-o", tmp_path / "g.png", *extra)
+    assert code == 2 and err.count("\n") == 1 and words in err, err
     assert not any(tmp_path.iterdir())
 
 

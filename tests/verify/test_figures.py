@@ -65,3 +65,24 @@ def test_the_diagram_draws_the_displays_and_the_spaces_asked_for(default_spec):
     labels = [line.get_label() for line in figure.axes[0].get_lines() if not line.get_label().startswith("_")]
     assert [d.name for d in default_spec.displays] == labels[1:] and labels[0] == "ACEScg (AP1)", labels
     _pyplot().close(figure)
+
+
+def test_highlights_clip_in_colorimetric_and_keep_apart_in_aces_2(default_spec):
+    """The ramps the highlights figure draws, on the sRGB display: Colorimetric shows scene grey
+    1, 8 and 16 as the same white; ACES 2.0 keeps them apart, rising, with scene 1.0 at the
+    Academy's 45.757 cd/m² (the tone scale's published figure)."""
+    from generator import reference
+    from generator.verify.figures import HIGHLIGHT_COLOURS, highlight_codes
+
+    display = next(d for d in default_spec.displays if d.name == "sRGB - Display")
+    exposures, shown = highlight_codes(default_spec, display)
+    assert list(shown) == [v for v in display.views if v != "Raw"]
+    grey = list(HIGHLIGHT_COLOURS).index("grey")
+    bright = exposures >= 1.0
+    white = shown["Colorimetric"][grey, exposures > 1.0]
+    assert np.all(white == white[0]) and np.allclose(white, 1.0, rtol=0, atol=1e-12)
+    aces = shown["ACES 2.0 - SDR 100 nits (Rec.709)"][grey]
+    assert np.all(np.diff(aces[bright, 1]) > 0.0) and aces[-1, 1] < 1.0
+    one = int(np.flatnonzero(exposures == 1.0)[0])
+    light = reference.display_decode(display, aces[one])
+    np.testing.assert_allclose(light, 0.45757, atol=5e-5)
