@@ -68,7 +68,12 @@ def command(config, output, space_names, mapping, highlights, display_name, forc
     if mapping:
         figure = figures.mapping(spec, _display(spec, display_name), spaces)
     elif highlights:
-        figure = figures.highlights(spec, _display(spec, display_name))
+        display = _display(spec, display_name)
+        if not figures.highlight_views(spec, display):
+            raise SpecError(
+                "ocioforge plot", "--display", f"{display.name!r} offers no view but Raw; allowed: a display with one"
+            )
+        figure = figures.highlights(spec, display)
     else:
         figure = figures.chromaticity(spec, spaces)
     write_atomic(Path(output), figures.png(figure, fmt), force)

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import io
 import warnings
+from collections.abc import Callable
+from functools import partial
 
 import numpy as np
 
@@ -242,15 +244,25 @@ def highlight_codes(spec: Spec, display: Display) -> tuple[np.ndarray, dict[str,
     exposures = 2.0 ** np.linspace(*HIGHLIGHT_STOPS, HIGHLIGHT_COLUMNS)
     ap1 = np.array(list(HIGHLIGHT_COLOURS.values()))[:, None, :] * exposures[None, :, None]
     ref = apply_matrix(reference.gamut_matrix(spec, gamuts()["AP1"]), ap1)
-    out = {}
+    return exposures, {view: function(ref) for view, function in _highlight_views(spec, display).items()}
+
+
+def _highlight_views(spec: Spec, display: Display) -> dict:
+    """Each view of ``display`` with an evaluation, Raw left out: scene reference to its codes."""
+    out: dict[str, Callable[[np.ndarray], np.ndarray]] = {}
     for view in display.views:
         if reference.aces_view_of(display, view) is not None:
-            out[view] = reference.aces_view(spec, display, view, ref)
+            out[view] = partial(reference.aces_view, spec, display, view)
             continue
         function = paths.view_function(spec, display, view)
         if function is not None:
-            out[view] = function(ref)
-    return exposures, out
+            out[view] = function
+    return out
+
+
+def highlight_views(spec: Spec, display: Display) -> list[str]:
+    """The views :func:`highlights` draws a panel for."""
+    return list(_highlight_views(spec, display))
 
 
 def highlights(spec: Spec, display: Display):

@@ -181,3 +181,18 @@ def test_a_config_path_too_long_is_one_line(looped_links, capsys):
     code, _, err = run(capsys, "plot", f"{looped_links}/{LONG}/config.ocio", "-o", f"{looped_links}/a.png")
     assert one_line(code, err, "File name too long"), err
     assert sorted(p.name for p in looped_links.iterdir()) == ["l1", "l2"]
+
+
+def test_highlights_of_a_display_with_only_raw_is_one_line(tmp_path, capsys):
+    """Nothing to draw: it had raised from matplotlib (no rows), exit 1."""
+    spec = tmp_path / "raw.toml"
+    spec.write_text(
+        'name = "raw-only"\nocio_version = "2.1"\n'
+        'colour_spaces = ["ACES2065-1", "ACEScg", "ACEScct", "sRGB Encoded Rec.709 (sRGB)", "Raw"]\n'
+        '[[display]]\nname = "sRGB - Display"\nviews = ["Raw"]\n',
+        encoding="utf-8",
+    )
+    assert run(capsys, "build", spec, "-o", tmp_path / "cfg")[0] == 0
+    code, _, err = run(capsys, "plot", tmp_path / "cfg", "-o", tmp_path / "h.png", "--highlights")
+    assert one_line(code, err, "'sRGB - Display' offers no view but Raw"), err
+    assert not (tmp_path / "h.png").exists()
