@@ -238,16 +238,16 @@ HIGHLIGHT_STOPS, HIGHLIGHT_COLUMNS = (-6.0, 4.0), 321
 
 
 def highlight_codes(spec: Spec, display: Display) -> tuple[np.ndarray, dict[str, np.ndarray]]:
-    """The ramps' exposures (columns,: the largest ACEScg channel, 2^-6 to 16) and each view of
-    ``display`` but Raw (ACES views by the float64 output transform, the others as verify's
-    reference evaluates them): its display codes (colours, columns, 3) of :data:`HIGHLIGHT_COLOURS`."""
+    """The ramps' exposures (the largest ACEScg channel, 2^-6 to 16, one per column) and, for each
+    view of ``display`` but Raw, the display codes (colours, columns, 3) of :data:`HIGHLIGHT_COLOURS`
+    (ACES views by the float64 output transform, the others as verify's reference evaluates them)."""
     exposures = 2.0 ** np.linspace(*HIGHLIGHT_STOPS, HIGHLIGHT_COLUMNS)
     ap1 = np.array(list(HIGHLIGHT_COLOURS.values()))[:, None, :] * exposures[None, :, None]
     ref = apply_matrix(reference.gamut_matrix(spec, gamuts()["AP1"]), ap1)
     return exposures, {view: function(ref) for view, function in _highlight_views(spec, display).items()}
 
 
-def _highlight_views(spec: Spec, display: Display) -> dict:
+def _highlight_views(spec: Spec, display: Display) -> dict[str, Callable[[np.ndarray], np.ndarray]]:
     """Each view of ``display`` with an evaluation, Raw left out: scene reference to its codes."""
     out: dict[str, Callable[[np.ndarray], np.ndarray]] = {}
     for view in display.views:
