@@ -45,15 +45,17 @@ T = TypeVar("T")
 ACES_LATTICE_SIZE = 65
 
 #: The Log shaper's toe (AP1 linear) for SDR and HDR views: the axis is log2(x + toe), so black
-#: sits on a node. HDR views keep nodes in the darks PQ shows (docs/aces-views.md measures both).
-SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-10
+#: sits on a node. With :data:`HDR_CURVE`, the HDR pair gives the worst probe set of each HDR
+#: view the lowest p99 measured, below the plain recipe's on every set (docs/aces-views.md).
+SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-8
 
 #: Colours per probe kind a view's table is fitted to (:func:`fitted`).
 VIEW_FIT_COUNT = 16384
 
 #: The table's output encoding (gamma, offset of CLF's monCurve): sRGB's curve for SDR views;
-#: for HDR views a steeper power, as PQ is, whose toe measured best in ΔE ITP (bench/aces_views.py).
-SDR_CURVE, HDR_CURVE = (2.4, 0.055), (3.0, 0.02)
+#: for HDR views a steeper power, as PQ is: a larger gamma or a smaller offset keeps nodes for
+#: the darks, a smaller one for the brights (bench/aces_views.py, docs/aces-views.md).
+SDR_CURVE, HDR_CURVE = (2.4, 0.055), (2.8, 0.025)
 
 #: The table's values are whole 16-bit codes of the encoded range, as the file holds them:
 #: 0.008 ten-bit codes at most, in two fifths of the text of float32 values.
