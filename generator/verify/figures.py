@@ -288,7 +288,7 @@ def highlights(spec: Spec, display: Display):
             axes.axvline(x, color="white", linewidth=0.5, alpha=0.6)
     panels[-1, 0].set_xticks(np.log2(ticks), [f"{v:g}" if v >= 0.18 else f"1/{round(1 / v)}" for v in ticks])
     panels[-1, 0].set_xlabel("scene light of the largest ACEScg channel (1.0: scene white)")
-    signal = " (PQ or HLG signal drawn as is)" if display.is_hdr else ""
+    signal = f" ({display.eotf_name} signal drawn as is)" if display.is_hdr else ""
     figure.suptitle(f"{spec.name}: highlights through each view of {display.name}{signal}", fontsize=10)
     figure.tight_layout()
     return figure

@@ -103,7 +103,7 @@ def test_highlights_draw_a_panel_per_view_of_the_display_asked_for(built, tmp_pa
     drawn = image.read_bytes()
     for label in (b"ACES 2.0 - HDR 1000 nits (P3 D65)", b"ACES 1.1 - HDR Video (1000 nits &amp; Rec.2020 lim)"):
         assert label in drawn
-    assert b"highlights through each view of Rec.2100-PQ - Display (PQ or HLG signal drawn as is)" in drawn
+    assert b"highlights through each view of Rec.2100-PQ - Display (ST 2084 signal drawn as is)" in drawn
 
 
 @pytest.mark.parametrize(
