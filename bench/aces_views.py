@@ -25,11 +25,8 @@ import generator  # noqa: F401  (numpy's settings first)
 import numpy as np
 
 from generator import reference
-from generator.colorimetry.curves import CURVES
-from generator.colorimetry.gamuts import gamuts
-from generator.luts import aces_lattice
-from generator.luts.fit import tetrahedra
-from generator.luts.solve import interpolate
+from generator.luts import aces_lattice, aces_probes
+from generator.luts.plain import plain_recipe
 from generator.metrics import delta_e_itp
 from generator.rendering import views
 from generator.spec.load import load
@@ -45,23 +42,8 @@ DISPLAYS = {
 
 
 def probe_sets(display, seed: int = 11, n: int = 20000) -> dict[str, np.ndarray]:
-    """ACES2065-1 probes: the issue's six sets."""
-    rng = np.random.default_rng(seed)
-    ap0 = gamuts()["AP0"]
-    to_ap0 = lambda g: np.linalg.inv(ap0.rgb_to_xyz) @ gamuts()[g].rgb_to_xyz  # noqa: E731
-    hue = rng.random((n, 3))
-    hue /= hue.max(axis=1, keepdims=True)
-    edge = rng.random((n, 3))
-    edge[np.arange(n), rng.integers(0, 3, n)] = 0.0
-    edge /= edge.max(axis=1, keepdims=True)
-    return {
-        "in gamut": rng.random((n, 3)) @ (np.linalg.inv(ap0.rgb_to_xyz) @ display.gamut.rgb_to_xyz).T,
-        "AP0 0..1": rng.random((n, 3)),
-        "dark": hue * 10 ** rng.uniform(-4, -1, (n, 1)),
-        "bright": hue * 10 ** rng.uniform(0, np.log10(64), (n, 1)),
-        "greys": np.repeat(10 ** np.linspace(-4, 2, 2001)[:, None], 3, axis=1),
-        "camera": (edge * 10 ** rng.uniform(-2, 1, (n, 1))) @ to_ap0("ARRI Wide Gamut 4").T,
-    }
+    """ACES2065-1 probes: the issue's six sets (:func:`generator.luts.aces_probes.sets`), by label."""
+    return {aces_probes.LABELS[k]: v for k, v in aces_probes.sets(display, seed, n).items()}
 
 
 def error(spec, display, a_codes, b_codes) -> np.ndarray:
@@ -69,22 +51,6 @@ def error(spec, display, a_codes, b_codes) -> np.ndarray:
     if not display.is_hdr:
         return np.abs(a_codes - b_codes).max(axis=1) * 1023.0
     return delta_e_itp(display, a_codes, b_codes)
-
-
-def plain_recipe(spec, display, view, size: int = 65):
-    """AP0 -> AP1 -> ACEScct -> 65³ of display codes sampled from the reference, tetrahedral."""
-    cct = CURVES["ACEScct"]
-    t = views.tables(view)
-    axis = cct.decode(np.linspace(0.0, 1.0, size))
-    ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
-    cube = reference.display_xyz_encode(spec, display, views.evaluate(view, ap1 @ t.ap1_to_ap0.T))
-
-    def run(aces):
-        u = np.clip(cct.encode(aces @ t.ap0_to_ap1.T), 0.0, 1.0)
-        nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (size - 1)), size)
-        return interpolate(nodes, weights, cube.T).T
-
-    return run
 
 
 def main() -> None:

@@ -337,14 +337,14 @@ def _pooled_p99(spec, source, display, view: str, apply) -> float:
 def aces_views(spec, folder: Path) -> None:
     """Every format of ``ocioforge bake --view`` at 65³ against the float64 reference, beside
     ociobakelut's best bake of the studio config's view (the lowest p99 over the six sets pooled)
-    and the plain recipe of bench/aces_views.py, all read through OCIO (default flags,
+    and the plain recipe (:mod:`generator.luts.plain`), all read through OCIO (default flags,
     tetrahedral), on bench/aces_views.py's probe sets. Prints a Markdown table."""
     import time
 
     import PyOpenColorIO as ocio
-    from aces_views import plain_recipe
 
     from generator.luts import bake, probes
+    from generator.luts.plain import plain_recipe
     from generator.rendering import views
 
     def read(paths):
