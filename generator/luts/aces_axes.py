@@ -61,6 +61,24 @@ HALF_MAX = 65504.0
 #: about -40.
 LINEAR_FLOOR = -64.0
 
+#: A grey renders as the view's brightest once its luminance is within this share of the
+#: brightest's (above that level a grey's rendering is its clamp's to float64 rounding).
+PEAK_REACHED = 1e-6
+
+
+def linear_high(view) -> float:
+    """How far a linear source's table reaches: twice the lowest power of two at which a grey of
+    the view's basis renders as the grey at its clamp, up to the clamp. A table uniform in light
+    steps by this over its entries; from ACEScg at 65³, capping the clamp's 1024 (SDR) and 4096
+    (HDR 1000 nits) at 256 and 1024 lowered every probe set's p99, bright colours up to the
+    clamp included (bench/lut_accuracy.py, docs/aces-views.md)."""
+    b = basis(view)
+    levels = np.append(2.0 ** np.arange(0, int(np.ceil(np.log2(b.upper))) + 1), b.upper)
+    greys = np.repeat(levels[:, None], 3, axis=1) @ np.linalg.inv(b.from_aces).T
+    light = views.evaluate(view, greys)[:, 1]
+    reached = np.abs(light - light[-1]) <= PEAK_REACHED * light[-1]
+    return float(min(b.upper, 2.0 * levels[int(np.argmax(reached))]))
+
 
 @dataclass(frozen=True, eq=False)
 class Basis:
@@ -177,14 +195,14 @@ class SourceLogAxis:
 
 def source_range(spec: Spec, source: ColourSpace, display: Display, view) -> tuple[float, float]:
     """Decoded source values the source layout covers: those of the view's basis cube, within the
-    source's code range (and :data:`LINEAR_FLOOR` for a linear source); 0 from below where the
+    source's code range (and :data:`LINEAR_FLOOR` and :func:`linear_high` for a linear source); 0 from below where the
     source's gamut is the basis (its lower faces are the view's clamp)."""
     corners = np.indices((2, 2, 2)).reshape(3, -1).T * basis(view).upper
     linear = corners @ np.linalg.inv(settled(basis_matrix(spec, source, view))).T
     low, high = float(linear.min()), float(linear.max())
     low = 0.0 if low > -1e-9 * high else low
     if isinstance(source.curve, Linear):
-        return max(low, LINEAR_FLOOR), high
+        return max(low, LINEAR_FLOOR), min(high, linear_high(view))
     code_low, code_high, capped = code_range(source, display)
     with np.errstate(all="ignore"):
         floor, top = (float(v) for v in source.curve.decode(np.array([code_low, code_high])))

@@ -56,7 +56,7 @@ ACES_FIT_COUNT = 32768
 ACES_FIT_RTOL = 1e-6
 
 #: Entries of the source layout's 1D table, for encoded and for linear sources (Resolve reads up
-#: to 65536): a linear source's table is uniform in light up to the view's clamp.
+#: to 65536): a linear source's table is uniform in light up to :func:`~generator.luts.aces_axes.linear_high`.
 ACES_SHAPER_SIZES = (4096, 65536)
 
 

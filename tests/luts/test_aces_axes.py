@@ -49,7 +49,19 @@ def test_a_source_axis_puts_zero_on_a_node_and_mirrors_below():
 def test_a_linear_source_is_held_from_the_floor_and_ap1_sources_from_zero(default_spec):
     display = default_spec.displays[0]
     low, high = aces_axes.source_range(default_spec, default_spec.space("Linear Rec.709 (sRGB)"), display, SDR)
-    assert low == aces_axes.LINEAR_FLOOR and high > 1024.0
-    assert aces_axes.source_range(default_spec, default_spec.space("ACEScg"), display, SDR) == (0.0, 1024.0)
+    assert low == aces_axes.LINEAR_FLOOR and high == aces_axes.linear_high(SDR) == 256.0
+    assert aces_axes.source_range(default_spec, default_spec.space("ACEScg"), display, SDR) == (0.0, 256.0)
     assert aces_axes.same_basis(default_spec, default_spec.space("ACEScct"), SDR)
     assert not aces_axes.same_basis(default_spec, default_spec.space("ARRI LogC4"), SDR)
+
+
+def test_a_linear_sources_table_ends_at_twice_the_grey_that_renders_as_the_clamps():
+    """SDR greys render as the clamp's (1024) from 128 on, not at 64; at 1000 cd/m² from 512.
+    A table uniform in light then steps by 256 / 65535, not 1024 / 65535."""
+    hdr = views.catalogue()["ACES 2.0 - HDR 1000 nits (P3 D65)"]
+    for view, reached in ((SDR, 128.0), (hdr, 512.0)):
+        b = aces_axes.basis(view)
+        greys = np.repeat(np.array([reached / 2, reached, b.upper])[:, None], 3, axis=1)
+        light = views.evaluate(view, greys @ np.linalg.inv(b.from_aces).T)[:, 1]
+        assert abs(light[1] - light[2]) <= aces_axes.PEAK_REACHED * light[2] < abs(light[0] - light[2])
+        assert aces_axes.linear_high(view) == 2 * reached
