@@ -202,7 +202,7 @@ def staged_folder(folder: Path, check: Callable[[Path], None] = _no_check) -> It
         with _writing(folder):
             _make_folder(folder.parent)
             remove_stale(folder.parent)  # what builds killed outright (SIGKILL) left here
-            with _uninterrupted():  # a stop waits until the folder made has its name, to be removed
+            with uninterrupted():  # a stop waits until the folder made has its name, to be removed
                 staging = Path(tempfile.mkdtemp(prefix=f".{folder.name}.", dir=folder.parent))
             mark(staging)
         try:
@@ -240,10 +240,10 @@ def _replace_folder(staging: Path, folder: Path, check: Callable[[Path], None]) 
     one step when nothing (or an empty folder) is there, as the rename itself refuses anything
     else; otherwise what is there is moved aside, checked again there (what it held when
     moved is what is deleted), and deleted only then; moved back when the check refuses it.
-    Signals wait until it is done (:func:`_uninterrupted`)."""
+    Signals wait until it is done (:func:`uninterrupted`)."""
     _take_modes(staging, folder)
     _unless_stopped()
-    with _uninterrupted():
+    with uninterrupted():
         check(folder)
         try:
             staging.rename(folder)
@@ -306,11 +306,11 @@ def _move_back(aside: Path, folder: Path) -> None:
 
 
 @contextmanager
-def _uninterrupted() -> Iterator[None]:
+def uninterrupted() -> Iterator[None]:
     """A stop signal arriving while the block runs waits until it is done (:func:`deferring`
     tells the handler to record it and return), then stops the command: renames into place and
     the removal of what they replaced are done whole or not begun, never cut between two files
-    or two folders. (Blocking the signals would not do: the kernel hands a signal to any thread
+    or two folders; a process pool's start and submissions are never cut inside its locks. (Blocking the signals would not do: the kernel hands a signal to any thread
     that does not block it, and Python then runs the handler at once.)"""
     global _deferring
     _deferring += 1
@@ -322,7 +322,7 @@ def _uninterrupted() -> Iterator[None]:
         _unless_stopped()
 
 
-#: How many :func:`_uninterrupted` blocks are running.
+#: How many :func:`uninterrupted` blocks are running.
 _deferring = 0
 
 
@@ -344,7 +344,7 @@ def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
     file may be there) before any is written, each goes to a private temporary sibling first
     and gets a plain write's permissions (a file replaced, its own), and only once all are complete, and every target is
     checked again, are they renamed into place, signals held back until all are
-    (:func:`_uninterrupted`). Returns the paths written (a link's file where a link was). A file
+    (:func:`uninterrupted`). Returns the paths written (a link's file where a link was). A file
     that cannot be written raises :class:`CannotWrite`."""
     targets = {target(path, force): data for path, data in files.items()}
     staged: list[tuple[str, Path]] = []
@@ -353,7 +353,7 @@ def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
         for path, data in targets.items():
             with _writing(path):
                 _make_folder(path.parent)
-                with _uninterrupted():  # a stop waits until the file made is listed, to be removed
+                with uninterrupted():  # a stop waits until the file made is listed, to be removed
                     handle, temporary = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
                     staged.append((temporary, path))
                 with os.fdopen(handle, "wb") as stream:
@@ -361,7 +361,7 @@ def write_files(files: dict[Path, bytes], force: bool) -> list[Path]:
                 kept = _kept_mode(path, False)  # a file replaced keeps its permissions
                 os.chmod(temporary, mode if kept is None else kept)
         _unless_stopped()
-        with _uninterrupted():
+        with uninterrupted():
             for _, path in staged:
                 target(path, force)
             _replace_all(staged)

@@ -16,6 +16,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 
 from generator.convert.frame import FAILED, FrameResult, Plan, convert_frame
 from generator.convert.frames import Source
+from generator.files import uninterrupted
 
 Report = Callable[[FrameResult], None]
 
@@ -72,7 +73,8 @@ def _in_pool(plan, sources, report, jobs, fail_fast) -> list[FrameResult]:
     )
     out, stopped = [], False
     try:
-        pending = {pool.submit(convert_frame, plan, s): s for s in sources}
+        with uninterrupted():  # a stop inside the pool's start or locks left it unable to shut down
+            pending = {pool.submit(convert_frame, plan, s): s for s in sources}
         while pending:
             done, _ = wait(pending, return_when=FIRST_COMPLETED)
             for future in done:

@@ -17,6 +17,8 @@ import sys
 from collections.abc import Callable, Hashable
 from concurrent.futures import Future, ProcessPoolExecutor
 
+from generator.files import uninterrupted
+
 #: Linux's prctl option making a process receive a signal when its parent dies.
 _PR_SET_PDEATHSIG = 1
 
@@ -42,17 +44,20 @@ class Pool:
         self._futures: dict[Hashable, Future] = {}
 
     def submit(self, key: Hashable, fn: Callable, *args) -> None:
-        """Start ``fn(*args)`` in a worker, once per ``key``."""
+        """Start ``fn(*args)`` in a worker, once per ``key``. A stop signal waits until the
+        submission is done: raised inside the executor's start (its thread made, not started)
+        or its locks, it left a pool that could not shut down (a traceback, or a hung build)."""
         if key in self._futures:
             return
-        if self._executor is None:
-            self._executor = ProcessPoolExecutor(
-                self._workers,
-                mp_context=multiprocessing.get_context("fork"),
-                initializer=_die_with_parent,
-                initargs=(os.getpid(),),
-            )
-        self._futures[key] = self._executor.submit(fn, *args)
+        with uninterrupted():
+            if self._executor is None:
+                self._executor = ProcessPoolExecutor(
+                    self._workers,
+                    mp_context=multiprocessing.get_context("fork"),
+                    initializer=_die_with_parent,
+                    initargs=(os.getpid(),),
+                )
+            self._futures[key] = self._executor.submit(fn, *args)
 
     def result(self, key: Hashable, fn: Callable, *args):
         """The result of the bake submitted as ``key``, else ``fn(*args)`` computed here."""

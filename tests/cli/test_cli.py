@@ -116,6 +116,37 @@ def test_a_swallowed_sigterm_still_stops_the_command_before_it_writes(tmp_path, 
     assert run(capsys, "list")[0] == 0  # the next command in the process is not stopped
 
 
+#: A build stopped as its worker pool starts: SIGTERM's handler runs inside the pool's manager
+#: thread's start, as a signal arriving there does.
+STOPPED_AS_THE_POOL_STARTS = """
+import concurrent.futures.process as process, signal, sys
+import generator.cli
+start = process._ExecutorManagerThread.start
+def terminated_meanwhile(thread):
+    generator.cli._stop(signal.SIGTERM, None)
+    start(thread)
+process._ExecutorManagerThread.start = terminated_meanwhile
+generator.cli.main(["build", "-o", sys.argv[1]])
+"""
+
+
+def test_a_stop_while_the_worker_pool_starts_ends_the_build_cleanly(tmp_path):
+    """SIGTERM arriving as the build's process pool starts its manager thread (made, not yet
+    started) left a pool that could not shut down: the build never ended (and, a moment later
+    in the start, a traceback "cannot join thread before it is started", exit 1). The stop now
+    waits for the submission: exit 128 + SIGTERM, nothing left."""
+    import signal
+
+    build = subprocess.run(
+        [sys.executable, "-c", STOPPED_AS_THE_POOL_STARTS, str(tmp_path / "cfg")],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert build.returncode == 128 + signal.SIGTERM, build.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
 @pytest.mark.parametrize(
     "argv",
     [
