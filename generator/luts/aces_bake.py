@@ -36,7 +36,7 @@ from generator.luts.aces_axes import (
     source_range,
     view_axes,
 )
-from generator.luts.aces_lattice import to_xyz
+from generator.luts.aces_lattice import ACES_FIT_RTOL, to_xyz
 from generator.luts.axes import LogAxis
 from generator.luts.fit import reweighted_fit, tetrahedra
 from generator.luts.lattice import CUBE_DECIMALS, SHAPER_DECIMALS, Lattice, coordinates, grid, preimages
@@ -50,10 +50,6 @@ from generator.spec.schema import ColourSpace, Display, Spec
 #: ACEScct, p99 in ten-bit codes with 16384, 32768 and 65536: AP0 0..1 4.8, 4.7, 4.3; camera 33,
 #: 33, 31; 0.9 s, 1.3 s, 3.1 s).
 ACES_FIT_COUNT = 32768
-
-#: The fit's stopping rule (:func:`generator.luts.fit.fit`'s ``rtol``): the default's 1e-3 stops a
-#: 65³ fit before its first step, as its right-hand side is dominated by the nodes' own values.
-ACES_FIT_RTOL = 1e-6
 
 #: Entries of the source layout's 1D table, for encoded and for linear sources (Resolve reads up
 #: to 65536): a linear source's table is uniform in light up to :func:`~generator.luts.aces_axes.linear_high`.

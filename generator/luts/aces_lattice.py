@@ -52,6 +52,12 @@ SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-8
 #: Colours per probe kind a view's table is fitted to (:func:`fitted`).
 VIEW_FIT_COUNT = 16384
 
+#: The fit's stopping rule for an ACES view's table, here and in ``bake --view``
+#: (:func:`generator.luts.fit.fit`'s ``rtol``): the default's 1e-3 stops a 65³ fit after a few
+#: steps, as its right-hand side is dominated by the nodes' own values (SDR Rec.709 in-gamut
+#: p99 2.32 ten-bit codes at 1e-3, 2.14 at 1e-6, in the same time).
+ACES_FIT_RTOL = 1e-6
+
 #: The table's output encoding (gamma, offset of CLF's monCurve): sRGB's curve for SDR views;
 #: for HDR views a steeper power, as PQ is: a larger gamma or a smaller offset keeps nodes for
 #: the darks, a smaller one for the brights (bench/aces_views.py, docs/aces-views.md).
@@ -178,7 +184,7 @@ def fitted(lat: AcesLattice) -> np.ndarray:
     # cancel in float32, which a pure-power display's encoding magnifies (4e-4 in gamma 2.6).
     kept.reshape((lat.size,) * 3)[:2, :2, :2] = True
     system = system_at(lat.cube, colours, kept)
-    return reweighted_nodes(lat.cube, system, _error(lat), decimals=None)
+    return reweighted_nodes(lat.cube, system, _error(lat), ACES_FIT_RTOL, decimals=None)
 
 
 def _error(lat: AcesLattice):
