@@ -82,12 +82,16 @@ def test_terminated_build_leaves_nothing(tmp_path):
         stdout=subprocess.DEVNULL,
         stderr=subprocess.DEVNULL,
     )
-    deadline = time.monotonic() + 60
-    while not any(tmp_path.iterdir()) and build.poll() is None and time.monotonic() < deadline:
-        time.sleep(0.01)
-    assert build.poll() is None, "the build ended before it could be terminated"
-    build.send_signal(signal.SIGTERM)
-    assert build.wait(timeout=60) == 128 + signal.SIGTERM
+    try:
+        deadline = time.monotonic() + 60
+        while not any(tmp_path.iterdir()) and build.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.01)
+        assert build.poll() is None, "the build ended before it could be terminated"
+        build.send_signal(signal.SIGTERM)
+        assert build.wait(timeout=60) == 128 + signal.SIGTERM
+    finally:  # a build that hangs is killed, not left running after the tests
+        build.kill()
+        build.wait()
     assert list(tmp_path.iterdir()) == []
 
 
