@@ -310,8 +310,9 @@ def uninterrupted() -> Iterator[None]:
     """A stop signal arriving while the block runs waits until it is done (:func:`deferring`
     tells the handler to record it and return), then stops the command: renames into place and
     the removal of what they replaced are done whole or not begun, never cut between two files
-    or two folders; a process pool's start and submissions are never cut inside its locks. (Blocking the signals would not do: the kernel hands a signal to any thread
-    that does not block it, and Python then runs the handler at once.)"""
+    or two folders; a process pool's start and submissions are never cut inside its locks.
+    (Blocking the signals would not do: the kernel hands a signal to any thread that does not
+    block it, and Python then runs the handler at once.)"""
     global _deferring
     _deferring += 1
     try:

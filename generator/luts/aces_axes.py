@@ -195,8 +195,8 @@ class SourceLogAxis:
 
 def source_range(spec: Spec, source: ColourSpace, display: Display, view) -> tuple[float, float]:
     """Decoded source values the source layout covers: those of the view's basis cube, within the
-    source's code range (and :data:`LINEAR_FLOOR` and :func:`linear_high` for a linear source); 0 from below where the
-    source's gamut is the basis (its lower faces are the view's clamp)."""
+    source's code range (a linear source's from :data:`LINEAR_FLOOR` to :func:`linear_high`); 0
+    from below where the source's gamut is the basis (its lower faces are the view's clamp)."""
     corners = np.indices((2, 2, 2)).reshape(3, -1).T * basis(view).upper
     linear = corners @ np.linalg.inv(settled(basis_matrix(spec, source, view))).T
     low, high = float(linear.min()), float(linear.max())

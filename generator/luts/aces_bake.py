@@ -52,7 +52,8 @@ from generator.spec.schema import ColourSpace, Display, Spec
 ACES_FIT_COUNT = 32768
 
 #: Entries of the source layout's 1D table, for encoded and for linear sources (Resolve reads up
-#: to 65536): a linear source's table is uniform in light up to :func:`~generator.luts.aces_axes.linear_high`.
+#: to 65536): a linear source's table is uniform in light up to
+#: :func:`~generator.luts.aces_axes.linear_high`.
 ACES_SHAPER_SIZES = (4096, 65536)
 
 
