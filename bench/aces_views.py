@@ -25,9 +25,8 @@ import generator  # noqa: F401  (numpy's settings first)
 import numpy as np
 
 from generator import reference
-from generator.luts import aces_lattice, aces_probes
+from generator.luts import aces_lattice, aces_probes, probes
 from generator.luts.plain import plain_recipe
-from generator.metrics import delta_e_itp
 from generator.rendering import views
 from generator.spec.load import load
 
@@ -46,13 +45,6 @@ def probe_sets(display, seed: int = 11, n: int = 20000) -> dict[str, np.ndarray]
     return {aces_probes.LABELS[k]: v for k, v in aces_probes.sets(display, seed, n).items()}
 
 
-def error(spec, display, a_codes, b_codes) -> np.ndarray:
-    """Ten-bit codes (SDR) or ΔE ITP (HDR, from PQ codes) between two code arrays."""
-    if not display.is_hdr:
-        return np.abs(a_codes - b_codes).max(axis=1) * 1023.0
-    return delta_e_itp(display, a_codes, b_codes)
-
-
 def main() -> None:
     spec = load(None)
     shown = {d.name: d for d in spec.displays}
@@ -66,10 +58,10 @@ def main() -> None:
         unit = "ΔE ITP" if display.is_hdr else "10-bit codes"
         for set_name, aces in probe_sets(display).items():
             truth = reference.display_xyz_encode(spec, display, views.evaluate(view, aces))
-            ours = error(
-                spec, display, reference.display_xyz_encode(spec, display, aces_lattice.evaluate(lat, aces)), truth
-            )
-            theirs = error(spec, display, plain(aces), truth)
+            ours = probes.errors(
+                display, reference.display_xyz_encode(spec, display, aces_lattice.evaluate(lat, aces)), truth
+            )[0]
+            theirs = probes.errors(display, plain(aces), truth)[0]
             print(
                 f"{name:<36} {set_name:<9} {np.percentile(ours, 99):13.2f} {ours.max():7.1f} "
                 f"{np.percentile(theirs, 99):10.2f} {theirs.max():7.1f}  {unit}"

@@ -310,27 +310,27 @@ def studio_bakes(source: str, view: str, display: str, folder: Path):
 def _aces_figures(spec, source, display, view: str, apply) -> dict:
     """Set name to (p99, max) of ``apply`` (source codes to display codes) on bench/aces_views.py's
     probe sets, against the reference."""
-    from aces_views import error, probe_sets
+    from aces_views import probe_sets
 
-    from generator.luts import aces_probes
+    from generator.luts import aces_probes, probes
 
     out = {}
     for name, aces in probe_sets(display).items():
         code, expected = aces_probes.in_source(spec, source, display, view, aces)
-        e = error(spec, display, apply(code), expected)
+        e = probes.errors(display, apply(code), expected)[0]
         out[name] = (float(np.percentile(e, 99)), float(e.max()))
     return out
 
 
 def _pooled_p99(spec, source, display, view: str, apply) -> float:
-    from aces_views import error, probe_sets
+    from aces_views import probe_sets
 
-    from generator.luts import aces_probes
+    from generator.luts import aces_probes, probes
 
     errors = []
     for aces in probe_sets(display).values():
         code, expected = aces_probes.in_source(spec, source, display, view, aces)
-        errors.append(error(spec, display, apply(code), expected))
+        errors.append(probes.errors(display, apply(code), expected)[0])
     return float(np.percentile(np.concatenate(errors), 99))
 
 
