@@ -57,12 +57,17 @@ ACES_FIT_COUNT = 32768
 ACES_SHAPER_SIZES = (4096, 65536)
 
 
-def _training(spec: Spec, source: ColourSpace, display: Display, view, domain=None) -> dict:
-    """The fit's colours: per kind, the source's code values and the view's display codes."""
-    aces = aces_probes.sets(display, aces_probes.TRAINING_SEED, ACES_FIT_COUNT)
-    return {
-        name: aces_probes.in_source(spec, source, display, view.name, colours, domain) for name, colours in aces.items()
-    }
+def training_sets(spec: Spec, display: Display, view) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """The fit's colours (ACES2065-1) per kind, with the view's display codes for them: the same
+    for every source (:func:`~generator.luts.aces_probes.view_sets`)."""
+    return aces_probes.view_sets(spec, display, view.name, aces_probes.TRAINING_SEED, ACES_FIT_COUNT)
+
+
+def _training(spec: Spec, source: ColourSpace, display: Display, view, domain=None, training=None) -> dict:
+    """The fit's colours: per kind, the source's code values and the view's display codes
+    (of :func:`training_sets`, evaluated here unless given)."""
+    training = training or training_sets(spec, display, view)
+    return {name: aces_probes.held_in(spec, source, display, pair, domain) for name, pair in training.items()}
 
 
 def _fitted(lat: Lattice, colours: dict, decimals: int) -> np.ndarray:
@@ -92,10 +97,13 @@ def display_lattice(
     return Lattice(source, display, view.name, source.curve, matrix, log, (0.0, 1.0), table, cube, post, decimals)
 
 
-def display_values(spec: Spec, display: Display, view, size: int, decimals: int = CUBE_DECIMALS) -> np.ndarray:
+def display_values(
+    spec: Spec, display: Display, view, size: int, decimals: int = CUBE_DECIMALS, training=None
+) -> np.ndarray:
     """The display layout's lattice values (size, size, size, 3), written with ``decimals``
     decimals: the same for every source, as the layout's lattice starts at the view's basis.
-    Sampled at the nodes, then fitted to the training colours taken to the basis directly."""
+    Sampled at the nodes, then fitted to the training colours (:func:`training_sets`, evaluated
+    here unless given) taken to the basis directly."""
     log, _, table = view_axes(view)
     nodes = grid(log.position(preimages(size, table, (0.0, 1.0)))).reshape(-1, 3)
     to_aces = np.linalg.inv(basis(view).from_aces)
@@ -107,11 +115,16 @@ def display_values(spec: Spec, display: Display, view, size: int, decimals: int 
     from_aces = np.linalg.inv(reference.to_aces_matrix(spec))
     cube = numbers.rounded(values(reference.apply_matrix(from_aces @ to_aces, nodes)), CUBE_DECIMALS)
     lat = Lattice(None, display, view.name, None, None, log, (0.0, 1.0), table, cube.reshape(size, size, size, 3), post)
+    if before is None:  # the lattice holds the view's codes: the training's own
+        pairs = training or training_sets(spec, display, view)
+    else:
+        aces_sets = aces_probes.sets(display, aces_probes.TRAINING_SEED, ACES_FIT_COUNT)
+        pairs = {name: (aces, values(reference.apply_matrix(from_aces, aces))) for name, aces in aces_sets.items()}
     colours = {}
-    for name, aces in aces_probes.sets(display, aces_probes.TRAINING_SEED, ACES_FIT_COUNT).items():
+    for name, (aces, expected) in pairs.items():
         with np.errstate(all="ignore"):
             coordinate = log.coordinate(reference.apply_matrix(basis(view).from_aces, aces))
-        colours[name] = (coordinate, values(reference.apply_matrix(from_aces, aces)))
+        colours[name] = (coordinate, expected)
     return _fitted(lat, colours, decimals)
 
 
@@ -189,12 +202,13 @@ def source_lattice(
     shaper: str | ColourSpace = "auto",
     decimals: int = CUBE_DECIMALS,
     entries: int | None = None,
+    training=None,
 ) -> Lattice:
     """The source layout: a 1D table uniform in source values (``shaper`` "auto": to the
     :class:`SourceLogAxis` coordinate; a colour space: its curve over its codes 0 to 1; "none":
     no table, the lattice uniform in source values), a lattice of fitted display codes, written
     with ``decimals`` decimals; the table has ``entries`` entries (default
-    :data:`ACES_SHAPER_SIZES`)."""
+    :data:`ACES_SHAPER_SIZES`); fitted to ``training`` (:func:`training_sets`) if given."""
     low, high = source_range(spec, source, display, view)
     with np.errstate(all="ignore"):
         lo, hi = source.curve.encode(np.array([low, high]))
@@ -220,7 +234,7 @@ def source_lattice(
         None,
         domain,
         table,
-        _fitted(lat, _training(spec, source, display, view, held), decimals),
+        _fitted(lat, _training(spec, source, display, view, held, training), decimals),
         decimals=decimals,
     )
 

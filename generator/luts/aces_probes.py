@@ -76,6 +76,33 @@ def sets_in(rgb_to_xyz: np.ndarray, seed: int, count: int) -> dict[str, np.ndarr
     }
 
 
+def view_sets(
+    spec: Spec, display: Display, view: str, seed: int, count: int
+) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Each of :func:`sets`' sets with the view's display code values for it (the reference,
+    :func:`~generator.reference.aces_view`): the same for every source, so a pack evaluates them
+    once per view (:func:`held_in` takes a source's share)."""
+    from_aces = np.linalg.inv(reference.to_aces_matrix(spec))
+    return {
+        name: (aces, reference.aces_view(spec, display, view, reference.apply_matrix(from_aces, aces)))
+        for name, aces in sets(display, seed, count).items()
+    }
+
+
+def _source_codes(
+    spec: Spec, source: ColourSpace, display: Display, aces: np.ndarray, domain: tuple[float, float] | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Scene-reference values of ACES2065-1 colours, ``source``'s code values for them and which
+    of them the source holds (:func:`~generator.luts.probes.held`) within ``domain``, if given."""
+    ref = reference.apply_matrix(np.linalg.inv(reference.to_aces_matrix(spec)), aces)
+    with np.errstate(all="ignore"):
+        code = reference.from_reference(spec, source, ref)
+        keep = held(spec, source, display, ref, code)
+        if domain is not None:
+            keep &= np.all((code >= domain[0]) & (code <= domain[1]), axis=-1)
+    return ref, code, keep
+
+
 def in_source(
     spec: Spec,
     source: ColourSpace,
@@ -88,11 +115,18 @@ def in_source(
     (the reference, :func:`~generator.reference.aces_view`), keeping the colours the
     source's encoding holds (:func:`~generator.luts.probes.held`) and, given a ``domain``, whose
     codes lie in it."""
-    ref = reference.apply_matrix(np.linalg.inv(reference.to_aces_matrix(spec)), aces)
-    with np.errstate(all="ignore"):
-        code = reference.from_reference(spec, source, ref)
-        keep = held(spec, source, display, ref, code)
-        if domain is not None:
-            keep &= np.all((code >= domain[0]) & (code <= domain[1]), axis=-1)
-    code = code[keep]
-    return code, reference.aces_view(spec, display, view, reference.to_reference(spec, source, code))
+    ref, code, keep = _source_codes(spec, source, display, aces, domain)
+    return code[keep], reference.aces_view(spec, display, view, ref[keep])
+
+
+def held_in(
+    spec: Spec,
+    source: ColourSpace,
+    display: Display,
+    pair: tuple[np.ndarray, np.ndarray],
+    domain: tuple[float, float] | None = None,
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`in_source` of a set of :func:`view_sets` (its colours and their display codes)."""
+    aces, expected = pair
+    _, code, keep = _source_codes(spec, source, display, aces, domain)
+    return code[keep], expected[keep]

@@ -172,18 +172,64 @@ def shared_key(item: Item) -> tuple | None:
     return (req.display.name, req.view.name, req.size, _decimals(item))
 
 
-def _lattice(item: Item, values: np.ndarray | None = None):
+def view_key(item: Item) -> tuple | None:
+    """The ACES view an item bakes, on its display: every source's file of it shares the view's
+    evaluations (:func:`view_shared`). None for a gamut mapping."""
+    req = item.req
+    return None if req.view is None else (req.display.name, req.view.name)
+
+
+def view_shared(items: list[Item]) -> dict:
+    """What the files of one ACES view (``items``, of one :func:`view_key`) share: the view's
+    display codes on the measuring probes (``probes``) and on the fit's colours where a file's
+    fit needs them (``training``), and each display layout's lattice values (``values``, by
+    :func:`shared_key`)."""
+    req = items[0].req
+    view = _aces_view(req)
+    keys = {key: item for item in items if (key := shared_key(item)) is not None}
+    # a source layout fits to the training; so does a display layout holding the view's own codes
+    own_codes = bool(keys) and aces_bake.light_before_clamp(req.spec, req.display, view) is None
+    training = aces_bake.training_sets(req.spec, req.display, view) if own_codes or len(keys) < len(items) else None
+    probes_ = aces_probes.view_sets(req.spec, req.display, view.name, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT)
+    values = {
+        key: aces_bake.display_values(req.spec, req.display, view, req.size, _decimals(item), training)
+        for key, item in keys.items()
+    }
+    return {"probes": probes_, "training": training, "values": values}
+
+
+def item_share(item: Item, shared: dict | None) -> dict | None:
+    """The part of :func:`view_shared` ``item`` reads (None: none given)."""
+    if shared is None:
+        return None
+    key = shared_key(item)
+    own = {"values": shared["values"][key]} if key is not None else {"training": shared["training"]}
+    return {"probes": shared["probes"], **own}
+
+
+def _lattice(item: Item, shared: dict | None = None):
     """The lattice ``item`` holds: the bake's, an ACES view's with the table's decimals and
-    entries (a display layout's with lattice ``values`` if given, see :func:`shared_key`)."""
+    entries (with :func:`item_share` ``shared`` if given: the display layout's values, the
+    source layout's training)."""
     req = item.req
     if req.view is None:
         return bake.build_lattice(req)
     decimals = _decimals(item)
+    shared = shared or {}
     if shared_key(item) is not None:
+        values = shared.get("values")
         return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size, decimals, values)
     shaper = "none" if not bake.FORMATS[req.fmt].shaper else req.shaper
     return aces_bake.source_lattice(
-        req.spec, req.source, req.display, req.view, req.size, shaper, decimals, item.shaper_entries
+        req.spec,
+        req.source,
+        req.display,
+        req.view,
+        req.size,
+        shaper,
+        decimals,
+        item.shaper_entries,
+        shared.get("training"),
     )
 
 
@@ -243,15 +289,18 @@ def _aces_view(req: bake.Request) -> ACESView:
     return req.view
 
 
-def _aces_figures(req: bake.Request, paths: list[Path]) -> dict:
+def _aces_figures(req: bake.Request, paths: list[Path], sets: dict | None = None) -> dict:
     """Set name to (p99, max) of the file read through OCIO (default flags, tetrahedral) on
-    :mod:`generator.luts.aces_probes`' sets, against the reference; a set the source's codes
-    hold no colour of is left out."""
+    :mod:`generator.luts.aces_probes`' sets (their :func:`~aces_probes.view_sets`, evaluated here
+    unless given), against the reference; a set the source's codes hold no colour of is left out."""
     view = _aces_view(req)
     apply = _apply(_transform(paths, "tetrahedral"), "OPTIMIZATION_DEFAULT")
+    sets = sets or aces_probes.view_sets(
+        req.spec, req.display, view.name, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT
+    )
     out = {}
-    for name, aces in aces_probes.sets(req.display, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT).items():
-        code, expected = aces_probes.in_source(req.spec, req.source, req.display, view.name, aces)
+    for name, pair in sets.items():
+        code, expected = aces_probes.held_in(req.spec, req.source, req.display, pair)
         if not len(code):  # a bounded source (sRGB's codes) holds no bright colour
             continue
         error = probes.errors(req.display, apply(code), expected)[0]
@@ -269,16 +318,18 @@ def _aces_row(name: str, req: bake.Request, figures: dict) -> str:
     return f"| {name} | {req.source.name} | {view} | {req.display.name} | {req.size}³ | {cells} | {unit} |\n"
 
 
-def bake_item(item: Item, folder: Path, values: np.ndarray | None = None) -> tuple[tuple[str, ...], str]:
-    """Bake ``item`` into ``folder`` (with shared lattice ``values``, see :func:`shared_key`) and
-    measure the file written; returns the names written and its README row."""
+def bake_item(item: Item, folder: Path, shared: dict | None = None) -> tuple[tuple[str, ...], str]:
+    """Bake ``item`` into ``folder`` (an ACES view's with its :func:`item_share` ``shared``, else
+    evaluating the view itself) and measure the file written; returns the names written and its
+    README row."""
     req = item.req
-    files = bake.lattice_files(req, _lattice(item, values))
+    files = bake.lattice_files(req, _lattice(item, shared))
     paths = [folder / (item.name if not suffix else Path(item.name).with_suffix(suffix).name) for suffix in files]
     for path, data in zip(paths, files.values()):
         path.write_bytes(data)
     if req.view is not None:
-        return tuple(p.name for p in paths), _aces_row(item.name, req, _aces_figures(req, paths))
+        figures = _aces_figures(req, paths, (shared or {}).get("probes"))
+        return tuple(p.name for p in paths), _aces_row(item.name, req, figures)
     sets = probes.reference_sets(req.spec, req.source, req.display, req.method)  # one reference, three readings
     trilinear = _measure(req, paths, sets, "trilinear") if req.fmt != "clf" else None
     default = _measure(req, paths, sets, optimization="OPTIMIZATION_DEFAULT")
@@ -290,41 +341,41 @@ def bake_item(item: Item, folder: Path, values: np.ndarray | None = None) -> tup
 _PACKING: list[list[Item]] = []
 
 
-def _worker(index: int, folder: str, values: np.ndarray | None = None) -> tuple[tuple[str, ...], str]:
-    return bake_item(_PACKING[-1][index], Path(folder), values)
+def _worker(index: int, folder: str, shared: dict | None = None) -> tuple[tuple[str, ...], str]:
+    return bake_item(_PACKING[-1][index], Path(folder), shared)
 
 
-def _values_worker(index: int) -> np.ndarray:
-    req = _PACKING[-1][index].req
-    return aces_bake.display_values(req.spec, req.display, req.view, req.size, _decimals(_PACKING[-1][index]))
+def _view_worker(indices: list[int]) -> dict:
+    return view_shared([_PACKING[-1][i] for i in indices])
 
 
 def bake_all(
     items: list[Item], folder: Path, progress: Callable[[int, int], None] | None = None, workers: int | None = None
 ) -> list[tuple[tuple[str, ...], str]]:
     """Bake every item into ``folder`` in forked workers, returning each one's names and row in
-    ``items``' order and calling ``progress(done, total)`` as they are. The lattice values files
-    share (:func:`shared_key`) are fitted first, once each; then the ACES views (heaviest),
-    the rest, and last the files waiting on shared values."""
+    ``items``' order and calling ``progress(done, total)`` as they are. What an ACES view's
+    files share (:func:`view_shared`) is evaluated first, once a view; then the gamut
+    mappings, and last the files waiting on their view's."""
     _PACKING.append(items)
     try:
         with Pool(workers) as pool:
-            keys = [shared_key(item) for item in items]
-            first: dict[tuple, int] = {}
+            keys = [view_key(item) for item in items]
+            groups: dict[tuple, list[int]] = {}
             for index, key in enumerate(keys):
                 if key is not None:
-                    first.setdefault(key, index)
-            for key, index in first.items():
-                pool.submit(key, _values_worker, index)
-            for index in sorted(range(len(items)), key=lambda i: items[i].req.view is None):
-                if keys[index] is None:
+                    groups.setdefault(key, []).append(index)
+            for key, indices in groups.items():
+                pool.submit(key, _view_worker, indices)
+            for index, key in enumerate(keys):
+                if key is None:
                     pool.submit(index, _worker, index, str(folder))
             if progress is not None:
                 progress(0, len(items))
-            shared = {key: pool.result(key, _values_worker, index) for key, index in first.items()}
-            arguments = [(i, str(folder)) if k is None else (i, str(folder), shared[k]) for i, k in enumerate(keys)]
-            for index, key in enumerate(keys):
-                if key is not None:
+            arguments: list[tuple] = [(i, str(folder)) for i in range(len(items))]
+            for key, indices in groups.items():
+                shared = pool.result(key, _view_worker, indices)
+                for index in indices:
+                    arguments[index] = (index, str(folder), item_share(items[index], shared))
                     pool.submit(index, _worker, *arguments[index])
             out = []
             for index in range(len(items)):

@@ -97,13 +97,14 @@ def test_pack_is_reproducible_and_measured(tmp_path, few_probes):
 
 def test_aces_clfs_of_several_sources_share_one_fit(tmp_path, few_probes):
     """An ACES view's display-layout CLFs from several sources share their lattice values, fitted
-    once: each file is what baking its item alone writes. A kind of colour a source cannot hold
-    is named so in its row."""
+    once, and every file of the view its evaluations: each file is what baking its item alone
+    writes. A kind of colour a source cannot hold is named so in its row."""
     spec = small_spec(SMALL.replace('sources = ["ACEScct"]', 'sources = ["ACEScct", "sRGB Encoded Rec.709 (sRGB)"]'))
     items = [item for item in pack.plan(spec) if item.req.view is not None]
     keys = [pack.shared_key(item) for item in items]
     shared = [key for key in keys if key is not None]
     assert len(shared) == 2 and len(set(shared)) == 1 and keys.count(None) == 2  # the .cube files
+    assert len({pack.view_key(item) for item in items}) == 1 and None not in {pack.view_key(i) for i in items}
     rows = [row for _, row in pack.bake_all(items, tmp_path, workers=2)]
     # sRGB's codes hold no bright colour: the row says so (measuring the empty set failed)
     assert ["none held" in row for row in rows] == [item.req.source.name != "ACEScct" for item in items]
