@@ -16,10 +16,11 @@ from generator.gamut.rgc import RGCParams
 
 
 class SpecError(ValueError):
-    """Bad input in a spec: names the file and the field, says what is allowed."""
+    """Bad input in a spec: names the file and the field (``-``: the file as a whole, left out of
+    the message), says what is allowed."""
 
     def __init__(self, source: str, field: str, message: str):
-        super().__init__(f"{source}:{field}: {message}")
+        super().__init__(f"{source}: {message}" if field == "-" else f"{source}:{field}: {message}")
         self.source, self.field, self.message = source, field, message
 
 

@@ -65,7 +65,7 @@ def test_list_spec_reads_a_build_folder(capsys, tmp_path):
 @pytest.mark.parametrize(
     "argv, words",
     [
-        (["list", "--spec", "missing.toml"], "missing.toml:-: cannot read the spec: it does not exist"),
+        (["list", "--spec", "missing.toml"], "missing.toml: cannot read the spec: it does not exist"),
         (["list", "--spec", ".", "--views"], "no resolved spec here"),
         (["list", "--spec", str(SHOW), "--curves"], "allowed with --spec: --spaces, --displays, --views"),
     ],
