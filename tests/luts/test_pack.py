@@ -119,6 +119,25 @@ def test_aces_clfs_of_several_sources_share_one_fit(tmp_path, few_probes):
     assert np.array_equal(cubes[0].cube, cubes[1].cube) and not np.array_equal(cubes[0].matrix, cubes[1].matrix)
 
 
+def test_a_views_shared_evaluations_are_those_its_files_read(monkeypatch):
+    """A view's files share the probes' codes always, the fit's colours only where a file fits to
+    them: a .cube does; the SDR Rec.709 CLF on sRGB fits the codes before the display's clamp,
+    evaluated apart, so a view with CLFs alone leaves the fit's colours unevaluated."""
+    monkeypatch.setattr(pack.aces_bake, "ACES_FIT_COUNT", 64)
+    monkeypatch.setattr(aces_probes, "PROBE_COUNT", 64)
+    items = [item for item in pack.plan(small_spec()) if item.req.view is not None]
+    both = pack.view_shared(items)
+    clf = next(item for item in items if item.req.fmt == "clf")
+    alone = pack.view_shared([clf])
+    assert both["training"] is not None and alone["training"] is None
+    assert list(both["values"]) == list(alone["values"]) == [pack.shared_key(clf)]
+    assert np.array_equal(both["values"][pack.shared_key(clf)], alone["values"][pack.shared_key(clf)])
+    assert set(both["probes"]) == set(aces_probes.SETS)
+    cube = next(item for item in items if item.req.fmt == "resolve_cube")
+    assert set(pack.item_share(cube, both)) == {"probes", "training"}
+    assert set(pack.item_share(clf, both)) == {"probes", "values"}
+
+
 def bad(text: str) -> SpecError:
     with pytest.raises(SpecError) as caught:
         pack.plan(small_spec(SMALL + text))
