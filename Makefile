@@ -35,6 +35,7 @@ bench: $(STAMP)
 	$(BIN)/python bench/lut_accuracy.py
 	$(BIN)/python bench/lut_bake.py
 	$(BIN)/python bench/aces_views.py
+	$(BIN)/python bench/aces_inverse.py
 	$(BIN)/python bench/convert.py
 	$(BIN)/python bench/pack.py
 
