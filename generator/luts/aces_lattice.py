@@ -9,7 +9,7 @@ where the clamp is the view's own AP1 clamp (upper: the tone scale's forward lim
 CLF holds a Log shaper (``log2(x + toe)`` per channel, exact in every OCIO), a 1D table
 bending that axis (a third as dense per stop above AP1 64, :mod:`generator.luts.aces_axes`),
 a 3D table (tetrahedral) of the rendering's limiting RGB over its peak, encoded by a mirrored
-power with a linear toe (CLF's monCurve: sRGB's curve for SDR views), and the Exponent
+power with a linear toe (CLF's monCurve), and the Exponent
 undoing that encoding. The table's values are fitted by least squares to colours of the
 kinds bench/aces_views.py measures (:func:`fitted`). What is linear (the matrices) and what
 is a clamp stays outside the table, so the table holds the rendering unclamped; the toe keeps
@@ -58,10 +58,11 @@ VIEW_FIT_COUNT = 16384
 #: p99 2.32 ten-bit codes at 1e-3, 2.14 at 1e-6, in the same time).
 ACES_FIT_RTOL = 1e-6
 
-#: The table's output encoding (gamma, offset of CLF's monCurve): sRGB's curve for SDR views;
-#: for HDR views a steeper power, as PQ is: a larger gamma or a smaller offset keeps nodes for
-#: the darks, a smaller one for the brights (bench/aces_views.py, docs/aces-views.md).
-SDR_CURVE, HDR_CURVE = (2.4, 0.055), (2.8, 0.025)
+#: The table's output encoding (gamma, offset of CLF's monCurve). A larger gamma or a smaller
+#: offset keeps nodes for the darks, a smaller one for the brights. SDR: below sRGB's (2.4, 0.055),
+#: which bright and camera colours erred more with, at the same darks, greys and in-gamut colours;
+#: HDR: steeper, as PQ is (bench/aces_views.py, docs/aces-views.md).
+SDR_CURVE, HDR_CURVE = (2.1, 0.035), (2.8, 0.025)
 
 #: The table's values are whole 16-bit codes of the encoded range, as the file holds them:
 #: 0.008 ten-bit codes at most, in two fifths of the text of float32 values.
@@ -172,8 +173,8 @@ def _encoded(view: ACESView, ap1, curve: tuple[float, float]) -> np.ndarray:
 def fitted(lat: AcesLattice) -> np.ndarray:
     """``lat``'s table fitted by least squares (:func:`~generator.luts.fit.reweighted_nodes`) to
     colours of the six kinds bench/aces_views.py measures, from another seed; greys and the
-    black cell keep their sampled values. A colour's error is in ten-bit codes of the encoded values for SDR views
-    (the display's codes where its primaries are the limiting ones), ΔE ITP for HDR ones."""
+    black cell keep their sampled values. A colour's error is in ten-bit codes of the encoded
+    values for SDR views, ΔE ITP for HDR ones."""
     t = views.tables(lat.view)
     colours = {}
     for name, aces in aces_probes.sets_in(t.limit_to_xyz, aces_probes.TRAINING_SEED, VIEW_FIT_COUNT).items():

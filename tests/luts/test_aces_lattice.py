@@ -70,8 +70,9 @@ def test_the_encoding_is_clfs_moncurve_both_ways():
     x = np.linspace(-2.0, 2.0, 20001)
     for curve in (aces_lattice.SDR_CURVE, aces_lattice.HDR_CURVE):
         assert np.allclose(aces_lattice.mon_decode(aces_lattice.mon_encode(x, curve), curve), x, rtol=0, atol=1e-12)
+    gamma, offset = aces_lattice.SDR_CURVE
     transform = ocio.ExponentWithLinearTransform(
-        gamma=[2.4] * 3 + [1.0], offset=[0.055] * 3 + [0.0], negativeStyle=ocio.NEGATIVE_MIRROR
+        gamma=[gamma] * 3 + [1.0], offset=[offset] * 3 + [0.0], negativeStyle=ocio.NEGATIVE_MIRROR
     )
     codes = np.random.default_rng(5).uniform(-1.0, 1.5, (1000, 3)).astype(np.float32)
     out = codes.copy()
