@@ -89,7 +89,10 @@ def bend(name: str = "ACES 2.0 - SDR 100 nits (Rec.709)") -> None:
 
     rng = np.random.default_rng(1)
     print(f"\n{name} on {display.name}: the reference's midpoint gap, 10-bit codes p99 / max")
-    print(f"(the 65³ table's nodes are 1/{per_stop:.1f} stop apart below AP1 64: a step of 1/{2 * per_stop:.1f})")
+    light = (aces_lattice.HDR_BEND if view.is_hdr else aces_lattice.SDR_BEND)[0]
+    print(
+        f"(the 65³ table's nodes are 1/{per_stop:.1f} stop apart below AP1 {light:g}: a step of 1/{2 * per_stop:.1f})"
+    )
     print(f"{'set':<9} " + " ".join(f"{f'step 1/{round(1 / d)} stop':>20}" for d in BEND_STEPS))
     for set_name, aces in probe_sets(display, n=BEND_COUNT).items():
         log = np.log2(np.clip(aces @ t.ap0_to_ap1.T, 0.0, lat.upper) + toe)

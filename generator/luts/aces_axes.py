@@ -127,13 +127,15 @@ class ViewAxis:
     bend: float
 
     @classmethod
-    def layout(cls, toe: float, high: float, light: float = ACES_BEND_LIGHT) -> ViewAxis:
-        """``light`` at the share of the coordinate :data:`ACES_BEND_DENSITY` gives it (all of it,
-        when ``high`` is below ``light``)."""
+    def layout(
+        cls, toe: float, high: float, light: float = ACES_BEND_LIGHT, density: float = ACES_BEND_DENSITY
+    ) -> ViewAxis:
+        """``light`` at the share of the coordinate that ``density`` (nodes per stop above it, relative
+        to below) gives it (all of it, when ``high`` is below ``light``)."""
         if high <= light:
             return cls(toe, high, high, 1.0)
         below, above = (np.log2((light + toe) / toe), np.log2((high + toe) / (light + toe)))
-        return cls(toe, light, high, float(below / (below + ACES_BEND_DENSITY * above)))
+        return cls(toe, light, high, float(below / (below + density * above)))
 
     def _log(self, x) -> np.ndarray:
         return np.log2(np.asarray(x, dtype=np.float64) / self.toe + 1.0)
@@ -149,17 +151,20 @@ class ViewAxis:
         )
 
 
-def view_axes(view, toe: float = ACES_TOE) -> tuple[LogAxis, ViewAxis, np.ndarray]:
+def view_axes(
+    view, toe: float = ACES_TOE, light: float = ACES_BEND_LIGHT, density: float = ACES_BEND_DENSITY
+) -> tuple[LogAxis, ViewAxis, np.ndarray]:
     """The display layout's Log operator (a :class:`~generator.luts.axes.LogAxis` from 0 to the
     view's clamp over :data:`ACES_BEND_ENTRIES` entries, 1.0 on one, toe near ``toe``),
-    the :class:`ViewAxis` of the same toe bending on an entry, and the 1D table between them
-    (lattice coordinates at the entries, as written)."""
+    the :class:`ViewAxis` of the same toe bending on the entry nearest ``light`` (``density``
+    times as dense per stop above), and the 1D table between them (lattice coordinates at the
+    entries, as written)."""
     upper, n = basis(view).upper, ACES_BEND_ENTRIES - 1
     share = np.log2(1.0 / toe + 1.0) / np.log2(upper / toe + 1.0)
     log = LogAxis(ACES_BEND_ENTRIES, round(share * n), _toe_for(upper, round(share * n) / n))
-    wanted = ViewAxis.layout(log.toe, upper)
+    wanted = ViewAxis.layout(log.toe, upper, light, density)
     light = float(log.position(np.round(log.coordinate(wanted.light) * n) / n))
-    axis = ViewAxis.layout(log.toe, upper, light)
+    axis = ViewAxis.layout(log.toe, upper, light, density)
     return log, axis, numbers.rounded(axis.coordinate(log.position(np.linspace(0.0, 1.0, n + 1))), SHAPER_DECIMALS)
 
 

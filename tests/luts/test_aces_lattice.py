@@ -96,6 +96,7 @@ def test_bake_all_keeps_each_views_lattice_as_bake_makes_it():
     "name, display_name",
     [
         ("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display"),
+        ("ACES 2.0 - SDR 100 nits (P3 D65)", "Display P3 - Display"),
         ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display"),
         ("ACES 2.0 - HDR 500 nits (Rec.2020)", "Rec.2100-PQ - Display"),
         ("ACES 2.0 - HDR 108 nits (P3 D65)", "ST2084-P3-D65 - Display"),
@@ -103,9 +104,9 @@ def test_bake_all_keeps_each_views_lattice_as_bake_makes_it():
 )
 def test_the_baked_view_errs_less_than_the_plain_recipe(default_spec, name, display_name):
     """p99 against the float64 view on each probe kind (8192 a kind, the probe seed), in ten-bit
-    codes or ΔE ITP: below the plain recipe's on every kind, but an SDR view's greys (0.44
-    against 0.40 codes, docs/aces-views.md). The HDR views' bright colours had erred more (toe
-    2^-10, gamma 3: 1.97 against 1.62 ΔE ITP at 1000 nits)."""
+    codes or ΔE ITP: below the plain recipe's on every kind. The SDR views' greys had erred more
+    with the axis thinning above 64 (0.44 against 0.40 codes), the HDR views' bright colours with
+    toe 2^-10 and gamma 3 (1.97 against 1.62 ΔE ITP at 1000 nits)."""
     view = views.catalogue()[name]
     display = next(d for d in default_spec.displays if d.name == display_name)
     lat, plain = aces_lattice.bake(view), plain_recipe(default_spec, display, view)
@@ -114,6 +115,6 @@ def test_the_baked_view_errs_less_than_the_plain_recipe(default_spec, name, disp
         truth = reference.display_xyz_encode(default_spec, display, views.evaluate(view, aces))
         ours = reference.display_xyz_encode(default_spec, display, aces_lattice.evaluate(lat, aces))
         p99 = [float(np.percentile(probes.errors(display, codes, truth)[0], 99)) for codes in (ours, plain(aces))]
-        if p99[0] >= p99[1] and not (kind == "greys" and not display.is_hdr):
+        if p99[0] >= p99[1]:
             worse[kind] = p99
     assert not worse, worse
