@@ -25,7 +25,7 @@ import generator  # noqa: F401  (numpy's settings first)
 import numpy as np
 
 from generator import reference
-from generator.luts import aces_lattice, aces_probes, probes
+from generator.luts import aces_axes, aces_lattice, aces_probes, probes
 from generator.luts.plain import plain_recipe
 from generator.rendering import views
 from generator.spec.load import load
@@ -89,7 +89,7 @@ def bend(name: str = "ACES 2.0 - SDR 100 nits (Rec.709)") -> None:
 
     rng = np.random.default_rng(1)
     print(f"\n{name} on {display.name}: the reference's midpoint gap, 10-bit codes p99 / max")
-    light = (aces_lattice.HDR_BEND if view.is_hdr else aces_lattice.SDR_BEND)[0]
+    light = aces_axes.thinning(view)[0]
     print(
         f"(the 65³ table's nodes are 1/{per_stop:.1f} stop apart below AP1 {light:g}: a step of 1/{2 * per_stop:.1f})"
     )

@@ -25,22 +25,27 @@ from generator.luts.source_axes import code_range
 from generator.rendering import views
 from generator.spec.schema import ColourSpace, Display, Spec
 
-#: The axis's toe in the basis's linear values: it is uniform in log2(x + toe) below
-#: :data:`ACES_BEND_LIGHT`, the toe moved a little so that 1.0 falls on an entry of the display
-#: layout's 1D table (measured at 65³ with the fit, SDR Rec.709 on sRGB, p99 / max in ten-bit
-#: codes: toe 2^-9: AP0 0..1 4.1 / 38, dark 0.9 / 8.0; 2^-7: 3.8 / 32, 1.0 / 8.8; 2^-5: 3.6 /
-#: 27, 2.3 / 14).
+#: The axis's toe in the basis's linear values: it is uniform in log2(x + toe) below where it
+#: thins out (:data:`SDR_THINNING`), the toe moved a little so that 1.0 falls on an entry of the
+#: display layout's 1D table (measured at 65³ with the fit, SDR Rec.709 on sRGB, p99 / max in
+#: ten-bit codes: toe 2^-9: AP0 0..1 4.1 / 38, dark 0.9 / 8.0; 2^-7: 3.8 / 32, 1.0 / 8.8; 2^-5:
+#: 3.6 / 27, 2.3 / 14).
 ACES_TOE = 2.0**-7
 
-#: Above this basis value (the brightest probes' 64) the axis's nodes are :data:`ACES_BEND_DENSITY`
-#: times as dense per stop as below, up to the view's clamp (1024 in SDR, 4096 at 1000 cd/m²): the
-#: tone scale's shoulder is smooth there, and the nodes go where colours are (measured at 65³ with
-#: the fit, p99 of the six probe kinds, three toes near 2^-7 each: SDR Rec.709 on sRGB, AP0 0..1
-#: 5.7 to 6.5 ten-bit codes with a uniform axis, 3.8 to 4.9 with a third; bright 22 to 26 and 17
-#: to 20; camera 35 to 38 and 33 to 34; HDR 1000 cd/m² P3 on PQ, ΔE ITP in gamut 0.70 to 0.75
-#: and 0.56 to 0.58, bright 1.7 to 1.9 and 1.6 to 1.8).
-ACES_BEND_LIGHT = 64.0
-ACES_BEND_DENSITY = 1.0 / 3.0
+#: Where the axis thins out, for SDR and for HDR views: above this basis value its nodes are this
+#: many times as dense per stop as below, up to the view's clamp (1024 in SDR, 4096 at 1000
+#: cd/m²); the tone scale's shoulder is smooth there. A third above 64 (the brightest probes)
+#: halved the uniform axis's excess (SDR Rec.709, AP0 0..1 p99 5.7 to 6.5 ten-bit codes uniform,
+#: 3.8 to 4.9 thinned). A fifth above 32 then lowered every probe set's p99 of the SDR views on
+#: three draws (greys 0.45 to 0.39 codes, camera 17.8 to 16.2); in HDR it put 1000 cd/m² bright
+#: colours at 2.57 ΔE ITP against 1.43 (bench/aces_views.py, docs/aces-views.md).
+SDR_THINNING, HDR_THINNING = (32.0, 0.2), (64.0, 1.0 / 3.0)
+
+
+def thinning(view) -> tuple[float, float]:
+    """(basis value, relative density above it) where ``view``'s axis thins out."""
+    return HDR_THINNING if view.is_hdr else SDR_THINNING
+
 
 #: Entries of the display layout's 1D table from the Log operator's value to the lattice
 #: coordinate (two straight pieces meeting on an entry: the table is exact).
@@ -127,9 +132,7 @@ class ViewAxis:
     bend: float
 
     @classmethod
-    def layout(
-        cls, toe: float, high: float, light: float = ACES_BEND_LIGHT, density: float = ACES_BEND_DENSITY
-    ) -> ViewAxis:
+    def layout(cls, toe: float, high: float, light: float, density: float) -> ViewAxis:
         """``light`` at the share of the coordinate that ``density`` (nodes per stop above it, relative
         to below) gives it (all of it, when ``high`` is below ``light``)."""
         if high <= light:
@@ -151,14 +154,12 @@ class ViewAxis:
         )
 
 
-def view_axes(
-    view, toe: float = ACES_TOE, light: float = ACES_BEND_LIGHT, density: float = ACES_BEND_DENSITY
-) -> tuple[LogAxis, ViewAxis, np.ndarray]:
+def view_axes(view, toe: float = ACES_TOE) -> tuple[LogAxis, ViewAxis, np.ndarray]:
     """The display layout's Log operator (a :class:`~generator.luts.axes.LogAxis` from 0 to the
     view's clamp over :data:`ACES_BEND_ENTRIES` entries, 1.0 on one, toe near ``toe``),
-    the :class:`ViewAxis` of the same toe bending on the entry nearest ``light`` (``density``
-    times as dense per stop above), and the 1D table between them (lattice coordinates at the
-    entries, as written)."""
+    the :class:`ViewAxis` of the same toe thinning out (:func:`thinning`) on the entry nearest
+    its level, and the 1D table between them (lattice coordinates at the entries, as written)."""
+    light, density = thinning(view)
     upper, n = basis(view).upper, ACES_BEND_ENTRIES - 1
     share = np.log2(1.0 / toe + 1.0) / np.log2(upper / toe + 1.0)
     log = LogAxis(ACES_BEND_ENTRIES, round(share * n), _toe_for(upper, round(share * n) / n))
@@ -179,9 +180,12 @@ class SourceLogAxis:
     positive: ViewAxis
 
     @classmethod
-    def layout(cls, size: int, low: float, high: float, toe: float = ACES_TOE) -> SourceLogAxis:
-        """Nodes below 0 in proportion to the bits of the mirrored log there (none when ``low`` is 0)."""
-        positive = ViewAxis.layout(toe, high)
+    def layout(
+        cls, size: int, low: float, high: float, thin: tuple[float, float], toe: float = ACES_TOE
+    ) -> SourceLogAxis:
+        """Nodes below 0 in proportion to the bits of the mirrored log there (none when ``low`` is
+        0); above 0 the :class:`ViewAxis` thinning out as ``thin`` (:func:`thinning`) says."""
+        positive = ViewAxis.layout(toe, high, *thin)
         bits_below, bits_above = (np.log2(max(-low, 0.0) / toe + 1.0), np.log2(high / toe + 1.0))
         share = min(bits_below / (bits_below + bits_above), ACES_NEGATIVE_SHARE)
         zero = 0 if low >= 0.0 else int(np.clip(round(share * (size - 1)), 1, size - 3))

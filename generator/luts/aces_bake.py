@@ -26,14 +26,13 @@ from generator.colorimetry.matrices import settled
 from generator.colorimetry.transfer import Linear
 from generator.luts import aces_probes, numbers
 from generator.luts.aces_axes import (
-    ACES_BEND_DENSITY,
-    ACES_BEND_LIGHT,
     ACES_TOE,
     SourceLogAxis,
     basis,
     basis_matrix,
     same_basis,
     source_range,
+    thinning,
     view_axes,
 )
 from generator.luts.aces_lattice import ACES_FIT_RTOL, to_xyz
@@ -215,7 +214,7 @@ def source_lattice(
     domain = (float(lo), float(hi))
     if isinstance(shaper, ColourSpace):
         domain = shaper_domain(source, shaper, display)
-    table = None if shaper == "none" else _table(source, shaper, size, domain, (low, high), entries)
+    table = None if shaper == "none" else _table(source, shaper, size, domain, (low, high), entries, thinning(view))
     codes = preimages(size, table, domain)
     with np.errstate(all="ignore"):
         linear = source.curve.decode(codes)
@@ -239,8 +238,9 @@ def source_lattice(
     )
 
 
-def _table(source: ColourSpace, shaper, size: int, domain, reach, entries: int | None) -> np.ndarray:
-    """The 1D table: lattice coordinates at ``entries`` entries uniform over ``domain`` (source values)."""
+def _table(source: ColourSpace, shaper, size: int, domain, reach, entries: int | None, thin) -> np.ndarray:
+    """The 1D table: lattice coordinates at ``entries`` entries uniform over ``domain`` (source
+    values), thinning out as ``thin`` (:func:`~generator.luts.aces_axes.thinning`) says."""
     count = entries or ACES_SHAPER_SIZES[isinstance(source.curve, Linear)]
     with np.errstate(all="ignore"):
         linear = source.curve.decode(np.linspace(domain[0], domain[1], count))
@@ -248,7 +248,7 @@ def _table(source: ColourSpace, shaper, size: int, domain, reach, entries: int |
             encoded = shaper.curve.encode(linear)
             coordinate = (encoded - encoded[0]) / (encoded[-1] - encoded[0])
         else:
-            coordinate = SourceLogAxis.layout(size, reach[0], reach[1]).coordinate(linear)
+            coordinate = SourceLogAxis.layout(size, reach[0], reach[1], thin).coordinate(linear)
     return numbers.rounded(coordinate, SHAPER_DECIMALS)
 
 
@@ -287,7 +287,7 @@ def notes(lat: Lattice, view, shaper) -> list[str]:
         return [
             f"Input: {source.name} values, decoded and taken to {b.name} exactly, clamped to [0, {b.upper:.9g}] "
             f"(the view's own clamp); a 1D table spaces the nodes uniformly in log2({b.name} + {log.toe:.9g}), "
-            f"{ACES_BEND_DENSITY:.3g} times as densely above {axis.light:.6g}.{clamp}",
+            f"{thinning(view)[1]:.3g} times as densely above {axis.light:.6g}.{clamp}",
             output,
             fitted,
         ]
@@ -298,7 +298,7 @@ def notes(lat: Lattice, view, shaper) -> list[str]:
         else f"by {shaper.name}'s curve of the decoded values"
         if isinstance(shaper, ColourSpace)
         else f"uniformly in log2(x + {ACES_TOE:g}) of the decoded values x (mirrored below 0), "
-        f"{ACES_BEND_DENSITY:.3g} times as densely above {ACES_BEND_LIGHT:g}"
+        f"{thinning(view)[1]:.3g} times as densely above {thinning(view)[0]:g}"
     )
     low, high = float(lat.cube.min()), float(lat.cube.max())
     return [

@@ -7,7 +7,7 @@ The view runs, in the config::
 
 where the clamp is the view's own AP1 clamp (upper: the tone scale's forward limit) and the
 CLF holds a Log shaper (``log2(x + toe)`` per channel, exact in every OCIO), a 1D table
-bending that axis (fewer nodes per stop above a bright level, :data:`SDR_BEND`),
+bending that axis (fewer nodes per stop above a bright level, :mod:`generator.luts.aces_axes`),
 a 3D table (tetrahedral) of the rendering's limiting RGB over its peak, encoded by a mirrored
 power with a linear toe (CLF's monCurve), and the Exponent
 undoing that encoding. The table's values are fitted by least squares to colours of the
@@ -29,7 +29,7 @@ from generator.colorimetry.gamuts import gamuts
 from generator.colorimetry.matrices import channel_max
 from generator.colorimetry.transfer import PiecewisePower
 from generator.luts import aces_probes
-from generator.luts.aces_axes import ACES_BEND_DENSITY, ACES_BEND_LIGHT, view_axes
+from generator.luts.aces_axes import view_axes
 from generator.luts.axes import LogAxis
 from generator.luts.fit import kept_nodes, reweighted_nodes, system_at, tetrahedra
 from generator.luts.lattice import preimages
@@ -48,11 +48,6 @@ ACES_LATTICE_SIZE = 65
 #: sits on a node. With :data:`HDR_CURVE`, the HDR pair gives the worst probe set of each HDR
 #: view the lowest p99 measured, below the plain recipe's on every set (docs/aces-views.md).
 SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-8
-
-#: Where the axis thins out (AP1 level, nodes per stop above it relative to below), for SDR and
-#: HDR views. SDR: a fifth above 32 lowered every probe set's p99 on three draws against a third
-#: above 64, HDR's, which a lower level costs bright colours (bench/aces_views.py, docs/aces-views.md).
-SDR_BEND, HDR_BEND = (32.0, 0.2), (ACES_BEND_LIGHT, ACES_BEND_DENSITY)
 
 #: Colours per probe kind a view's table is fitted to (:func:`fitted`).
 VIEW_FIT_COUNT = 16384
@@ -161,8 +156,8 @@ def bake_all(views, meanwhile: Callable[[], T]) -> T:
 
 def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view`` baked now (:func:`bake` keeps it)."""
-    curve, toe, thinning = (HDR_CURVE, HDR_TOE, HDR_BEND) if view.is_hdr else (SDR_CURVE, SDR_TOE, SDR_BEND)
-    log, _, bend = view_axes(view, toe, *thinning)
+    curve, toe = (HDR_CURVE, HDR_TOE) if view.is_hdr else (SDR_CURVE, SDR_TOE)
+    log, _, bend = view_axes(view, toe)
     axis = log.position(preimages(size, bend, (0.0, 1.0)))
     ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
     lat = AcesLattice(view, upper(view), log, bend, curve, _encoded(view, ap1, curve).reshape(size, size, size, 3))

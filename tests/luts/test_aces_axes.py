@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from generator.luts import aces_axes
 from generator.luts.aces_axes import SourceLogAxis, ViewAxis
@@ -16,14 +17,25 @@ def test_the_basis_is_ap1_clamped_where_the_view_clamps():
     assert aces_axes.basis(views.catalogue()["ACES 1.0 - SDR Video"]).upper == aces_axes.HALF_MAX
 
 
-def test_the_view_axis_is_two_pieces_in_log2_meeting_at_its_bend():
-    axis = ViewAxis.layout(aces_axes.ACES_TOE, 1024.0)
-    x = np.array([0.0, axis.light, 1024.0, 2048.0])
+@pytest.mark.parametrize("thin", [aces_axes.SDR_THINNING, aces_axes.HDR_THINNING])
+def test_the_view_axis_is_two_pieces_in_log2_meeting_at_its_bend(thin):
+    light, density = thin
+    axis = ViewAxis.layout(aces_axes.ACES_TOE, 1024.0, light, density)
+    x = np.array([0.0, light, 1024.0, 2048.0])
     np.testing.assert_allclose(axis.coordinate(x), [0.0, axis.bend, 1.0, 1.0], rtol=0, atol=1e-15)
-    # per bit of log2(x + toe), the nodes above the bend are ACES_BEND_DENSITY times as dense
+    # per bit of log2(x + toe), the nodes above the bend are ``density`` times as dense
     step = np.diff(axis.coordinate(np.array([1.0, 2.0, 256.0, 512.0])))
     slope = np.log2((np.array([2.0, 512.0]) + axis.toe) / (np.array([1.0, 256.0]) + axis.toe))
-    np.testing.assert_allclose((step[2] / slope[1]) / (step[0] / slope[0]), aces_axes.ACES_BEND_DENSITY, rtol=1e-12)
+    np.testing.assert_allclose((step[2] / slope[1]) / (step[0] / slope[0]), density, rtol=1e-12)
+
+
+def test_sdr_views_thin_out_lower_than_hdr_views():
+    """SDR views thin out above AP1 32 at a fifth, HDR views above 64 at a third (docs/aces-views.md)."""
+    hdr = views.catalogue()["ACES 2.0 - HDR 1000 nits (P3 D65)"]
+    assert aces_axes.thinning(SDR) == aces_axes.SDR_THINNING == (32.0, 0.2)
+    assert aces_axes.thinning(hdr) == aces_axes.HDR_THINNING
+    assert np.isclose(aces_axes.view_axes(SDR)[1].light, 32.0, rtol=0.01)
+    assert np.isclose(aces_axes.view_axes(hdr)[1].light, 64.0, rtol=0.01)
 
 
 def test_the_display_layouts_table_is_exact_on_its_entries():
@@ -38,12 +50,12 @@ def test_the_display_layouts_table_is_exact_on_its_entries():
 
 
 def test_a_source_axis_puts_zero_on_a_node_and_mirrors_below():
-    axis = SourceLogAxis.layout(65, -64.0, 1746.0)
+    axis = SourceLogAxis.layout(65, -64.0, 1746.0, aces_axes.SDR_THINNING)
     assert 0 < axis.zero <= round(aces_axes.ACES_NEGATIVE_SHARE * 64)
     assert axis.coordinate(0.0) * 64 == axis.zero
     assert axis.coordinate(-64.0) == 0.0 and axis.coordinate(1746.0) == 1.0
     assert np.all(np.diff(axis.coordinate(np.linspace(-70.0, 1800.0, 10001))) >= 0)
-    assert SourceLogAxis.layout(65, 0.0, 1024.0).zero == 0
+    assert SourceLogAxis.layout(65, 0.0, 1024.0, aces_axes.SDR_THINNING).zero == 0
 
 
 def test_a_linear_source_is_held_from_the_floor_and_ap1_sources_from_zero(default_spec):
