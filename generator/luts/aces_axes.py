@@ -38,13 +38,21 @@ ACES_TOE = 2.0**-7
 #: halved the uniform axis's excess (SDR Rec.709, AP0 0..1 p99 5.7 to 6.5 ten-bit codes uniform,
 #: 3.8 to 4.9 thinned). A fifth above 32 then lowered every probe set's p99 of the SDR views on
 #: three draws (greys 0.45 to 0.39 codes, camera 17.8 to 16.2); in HDR it put 1000 cd/m² bright
-#: colours at 2.57 ΔE ITP against 1.43 (bench/aces_views.py, docs/aces-views.md).
-SDR_THINNING, HDR_THINNING = (32.0, 0.2), (64.0, 1.0 / 3.0)
+#: colours at 2.57 ΔE ITP against 1.43. HDR views peaking below :data:`HDR_LOW_PEAK` thin to a
+#: quarter: their worst set's p99 fell on three draws at 500 cd/m² (Rec.2020 camera 2.29 to 1.75,
+#: P3 bright 1.77 to 1.48), where at 1000 cd/m² bright colours rose (1.43 to 1.90)
+#: (bench/aces_views.py, docs/aces-views.md).
+SDR_THINNING, HDR_THINNING, HDR_LOW_THINNING = (32.0, 0.2), (64.0, 1.0 / 3.0), (64.0, 0.25)
+
+#: Peak luminance (cd/m²) from which an HDR view thins out as :data:`HDR_THINNING`.
+HDR_LOW_PEAK = 1000.0
 
 
 def thinning(view) -> tuple[float, float]:
     """(basis value, relative density above it) where ``view``'s axis thins out."""
-    return HDR_THINNING if view.is_hdr else SDR_THINNING
+    if not view.is_hdr:
+        return SDR_THINNING
+    return HDR_LOW_THINNING if view.peak < HDR_LOW_PEAK else HDR_THINNING
 
 
 #: Entries of the display layout's 1D table from the Log operator's value to the lattice

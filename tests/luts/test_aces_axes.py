@@ -17,7 +17,7 @@ def test_the_basis_is_ap1_clamped_where_the_view_clamps():
     assert aces_axes.basis(views.catalogue()["ACES 1.0 - SDR Video"]).upper == aces_axes.HALF_MAX
 
 
-@pytest.mark.parametrize("thin", [aces_axes.SDR_THINNING, aces_axes.HDR_THINNING])
+@pytest.mark.parametrize("thin", [aces_axes.SDR_THINNING, aces_axes.HDR_THINNING, aces_axes.HDR_LOW_THINNING])
 def test_the_view_axis_is_two_pieces_in_log2_meeting_at_its_bend(thin):
     light, density = thin
     axis = ViewAxis.layout(aces_axes.ACES_TOE, 1024.0, light, density)
@@ -30,10 +30,14 @@ def test_the_view_axis_is_two_pieces_in_log2_meeting_at_its_bend(thin):
 
 
 def test_sdr_views_thin_out_lower_than_hdr_views():
-    """SDR views thin out above AP1 32 at a fifth, HDR views above 64 at a third (docs/aces-views.md)."""
+    """SDR views thin out above AP1 32 at a fifth, HDR views above 64: at a quarter below 1000
+    cd/m², a third from there (docs/aces-views.md)."""
     hdr = views.catalogue()["ACES 2.0 - HDR 1000 nits (P3 D65)"]
     assert aces_axes.thinning(SDR) == aces_axes.SDR_THINNING == (32.0, 0.2)
-    assert aces_axes.thinning(hdr) == aces_axes.HDR_THINNING
+    assert aces_axes.thinning(hdr) == aces_axes.HDR_THINNING == (64.0, 1.0 / 3.0)
+    for name in ("ACES 2.0 - HDR 500 nits (Rec.2020)", "ACES 2.0 - HDR 108 nits (P3 D65)"):
+        assert aces_axes.thinning(views.catalogue()[name]) == aces_axes.HDR_LOW_THINNING == (64.0, 0.25)
+    assert aces_axes.thinning(views.catalogue()["ACES 2.0 - HDR 2000 nits (P3 D65)"]) == aces_axes.HDR_THINNING
     assert np.isclose(aces_axes.view_axes(SDR)[1].light, 32.0, rtol=0.01)
     assert np.isclose(aces_axes.view_axes(hdr)[1].light, 64.0, rtol=0.01)
 
