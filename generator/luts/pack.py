@@ -192,7 +192,7 @@ def view_shared(items: list[Item]) -> dict:
     training = aces_bake.training_sets(req.spec, req.display, view) if own_codes or len(keys) < len(items) else None
     probes_ = aces_probes.view_sets(req.spec, req.display, view.name, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT)
     values = {
-        key: aces_bake.display_values(req.spec, req.display, view, req.size, _decimals(item), training)
+        key: aces_bake.display_values(req.spec, req.display, view, item.req.size, _decimals(item), training)
         for key, item in keys.items()
     }
     return {"probes": probes_, "training": training, "values": values}
@@ -217,7 +217,7 @@ def _lattice(item: Item, shared: dict | None = None):
     decimals = _decimals(item)
     shared = shared or {}
     if shared_key(item) is not None:
-        values = shared.get("values")
+        values = shared.get("values")  # None: fitted here
         return aces_bake.display_lattice(req.spec, req.source, req.display, req.view, req.size, decimals, values)
     shaper = "none" if not bake.FORMATS[req.fmt].shaper else req.shaper
     return aces_bake.source_lattice(

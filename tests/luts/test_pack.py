@@ -136,6 +136,13 @@ def test_a_views_shared_evaluations_are_those_its_files_read(monkeypatch):
     cube = next(item for item in items if item.req.fmt == "resolve_cube")
     assert set(pack.item_share(cube, both)) == {"probes", "training"}
     assert set(pack.item_share(clf, both)) == {"probes", "values"}
+    # a second table of the view at another size: each display layout's values at its own size
+    second = SMALL[SMALL.rindex("[[lut_pack]]") :].replace("size = 7", 'size = 5\nfile_name = "{source}_{size}"')
+    spec = small_spec(SMALL + second)
+    sized = [item for item in pack.plan(spec) if item.req.view is not None and item.req.fmt == "clf"]
+    values = pack.view_shared(sized)["values"]
+    assert sorted(v.shape[0] for v in values.values()) == [5, 7]
+    assert all(values[pack.shared_key(item)].shape[0] == item.req.size for item in sized)
 
 
 def bad(text: str) -> SpecError:
