@@ -59,12 +59,13 @@ def main() -> None:
 
     rng = np.random.default_rng(SEED)
     aces, codes = rng.random((COUNT, 3)) * 2.0, rng.random((COUNT, 3))
+    spec = load.load()
+    hdr = {d.name for d in spec.displays if d.is_hdr}
     with tempfile.TemporaryDirectory() as tmp:
         target = Path(tmp) / "aces-inverse"
-        build(for_folder(load.load(), target.absolute(), (2, 1)), target)
+        build(for_folder(spec, target.absolute(), (2, 1)), target)
         config = ocio.Config.CreateFromFile(str(target / "config.ocio"))
         print(f"{'view':<36} {'display':<22} {'flags':<9} {'shown p99':>9} {'max':>6} {'codes p99':>9} {'max':>6}")
-        hdr = {d.name for d in load.load().displays if d.is_hdr}
         for view, display in PAIRS:
             for flags in ("OPTIMIZATION_LOSSLESS", "OPTIMIZATION_DEFAULT"):
                 trip, forward = round_trip(config, f"{view} - {display}", flags)

@@ -277,6 +277,7 @@ def notes(lat: Lattice, view, shaper) -> list[str]:
         "0 to 1, dark, bright, greys, saturated camera colours); greys keep the sampled values. "
         "Interpolate tetrahedrally."
     )
+    level, density = thinning(view)
     if isinstance(lat.pre, LogAxis):
         log, axis, _ = view_axes(view)
         clamp = (
@@ -287,7 +288,7 @@ def notes(lat: Lattice, view, shaper) -> list[str]:
         return [
             f"Input: {source.name} values, decoded and taken to {b.name} exactly, clamped to [0, {b.upper:.9g}] "
             f"(the view's own clamp); a 1D table spaces the nodes uniformly in log2({b.name} + {log.toe:.9g}), "
-            f"{thinning(view)[1]:.3g} times as densely above {axis.light:.6g}.{clamp}",
+            f"{density:.3g} times as densely above {axis.light:.6g}.{clamp}",
             output,
             fitted,
         ]
@@ -298,7 +299,7 @@ def notes(lat: Lattice, view, shaper) -> list[str]:
         else f"by {shaper.name}'s curve of the decoded values"
         if isinstance(shaper, ColourSpace)
         else f"uniformly in log2(x + {ACES_TOE:g}) of the decoded values x (mirrored below 0), "
-        f"{thinning(view)[1]:.3g} times as densely above {thinning(view)[0]:g}"
+        f"{density:.3g} times as densely above {level:g}"
     )
     low, high = float(lat.cube.min()), float(lat.cube.max())
     return [
