@@ -115,9 +115,9 @@ DISCONTINUITY_BAND = 2.0 / 1023.0
 #: times (|M| |x|) of that channel: gamma_3 = 3u / (1 - 3u) (Higham 2002, 3.5).
 FLOAT32_MATRIX_ROUNDINGS = 3.0
 
-#: Float32 rounding of a baked ACES view's Log operator, log2(x + toe), in units of
-#: FLOAT32_UNIT_ROUNDOFF times the toe in x: the sum (1) and the log2 of a value near the toe,
-#: whose result |log2 toe| <= 10 carries 10 u, times ln 2 back in x (7): 8 in all.
+#: Float32 rounding of a baked ACES view's Log operator on the luminance, log2(L + toe), in units
+#: of FLOAT32_UNIT_ROUNDOFF times the toe in L: the sum (1) and the log2 of a value near the toe,
+#: whose result |log2 toe| <= 10 carries 10 u, times ln 2 back in L (7): 8 in all.
 ACES_LOG_ROUNDINGS = 8.0
 
 #: Float32 roundings of a 1D table's fractional index behind a Range (OCIO's CPU renderer):

@@ -2,19 +2,17 @@
 
 The view runs, in the config::
 
-    Matrix (scene reference -> AP1) -> Range clamp [0, upper] -> this CLF -> Range [0, 1]
+    Matrix (scene reference -> AP1) -> Range clamp [0, upper] -> this CTF -> Range [0, 1]
     -> Matrix (limiting RGB at the peak -> CIE XYZ)
 
 where the clamp is the view's own AP1 clamp (upper: the tone scale's forward limit) and the
-CLF holds a Log shaper (``log2(x + toe)`` per channel, exact in every OCIO), a 1D table
-bending that axis (fewer nodes per stop above a bright level, :mod:`generator.luts.aces_axes`),
-a 3D table (tetrahedral) of the rendering's limiting RGB over its peak, encoded by a mirrored
-power with a linear toe (CLF's monCurve), and the Exponent
-undoing that encoding. The table's values are fitted by least squares to colours of the
-kinds bench/aces_views.py measures (:func:`fitted`). What is linear (the matrices) and what
-is a clamp stays outside the table, so the table holds the rendering unclamped; the toe keeps
-a channel crossing zero smooth, where a pure power's infinite slope was not (max 76 against 32
-ten-bit codes on AP0 0..1). One file per view, whatever displays show it.
+CTF holds the operators placing AP1 on the table's axes (chromaticity and luminance:
+:mod:`generator.luts.aces_chroma`), a 3D table (tetrahedral) of the rendering's limiting RGB
+over its peak, encoded by a mirrored power with a linear toe (CLF's monCurve), and the Exponent
+undoing that encoding. It is a CTF, OCIO's superset of CLF, as CLF has no XYZ_TO_xyY. The
+table's values are fitted by least squares to colours of the kinds bench/aces_views.py measures
+(:func:`fitted`). What is linear (the matrices) and what is a clamp stays outside the table, so
+the table holds the rendering unclamped. One file per view, whatever displays show it.
 """
 
 from __future__ import annotations
@@ -29,10 +27,8 @@ from generator.colorimetry.gamuts import gamuts
 from generator.colorimetry.matrices import channel_max
 from generator.colorimetry.transfer import PiecewisePower
 from generator.luts import aces_probes
-from generator.luts.aces_axes import view_axes
-from generator.luts.axes import LogAxis
-from generator.luts.fit import kept_nodes, reweighted_nodes, system_at, tetrahedra
-from generator.luts.lattice import preimages
+from generator.luts.aces_chroma import CHROMA_LOG_OFFSET, HDR_WARP, SDR_WARP, ChromaAxes, chroma_axes
+from generator.luts.fit import reweighted_nodes, system_at, tetrahedra
 from generator.luts.pool import Pool
 from generator.luts.solve import interpolate
 from generator.metrics import delta_e_itp_of_light
@@ -41,13 +37,13 @@ from generator.rendering.views import ACESView
 
 T = TypeVar("T")
 
-#: Nodes a side: the plain recipe's 65, which the bench compares with.
-ACES_LATTICE_SIZE = 65
+#: Nodes a side. Colours fill the half of the table where q <= p (:mod:`~generator.luts.aces_chroma`):
+#: 81 * 82 / 2 * 81 = 269001 nodes, against the 274625 of the plain recipe's 65³.
+ACES_LATTICE_SIZE = 81
 
-#: The Log shaper's toe (AP1 linear) for SDR and HDR views: the axis is log2(x + toe), so black
-#: sits on a node. With :data:`HDR_CURVE`, the HDR pair gives the worst probe set of each HDR
-#: view the lowest p99 measured, below the plain recipe's on every set (docs/aces-views.md).
-SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-8
+#: The luminance axis's toe (AP1 linear) for SDR and HDR views: the axis is log2(L + toe), so
+#: black sits on a node (docs/aces-views.md).
+SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-9
 
 #: Colours per probe kind a view's table is fitted to (:func:`fitted`).
 VIEW_FIT_COUNT = 16384
@@ -71,14 +67,13 @@ CODE_STEPS = 65535.0
 
 @dataclass(frozen=True)
 class AcesLattice:
-    """A baked ACES 2.0 view: the ``log`` axis of AP1 in [0, ``upper``], the 1D ``bend`` table
-    (lattice coordinate at each of its entries, as written), and the table (n, n, n, 3)
-    indexed [r, g, b] holding the ``curve`` (gamma, offset) encoding of limiting RGB over the peak."""
+    """A baked ACES 2.0 view: AP1 in [0, ``upper``] on the ``axes``, and the table (n, n, n, 3)
+    indexed [p, q, luminance] holding the ``curve`` (gamma, offset) encoding of limiting RGB over
+    the peak."""
 
     view: ACESView
     upper: float
-    log: LogAxis
-    bend: np.ndarray
+    axes: ChromaAxes
     curve: tuple[float, float]
     cube: np.ndarray
 
@@ -88,24 +83,15 @@ class AcesLattice:
         return self.cube.shape[0]
 
     def coordinate(self, ap1) -> np.ndarray:
-        """AP1 values (clamped to [0, ``upper``]) to the lattice coordinate in [0, 1], as OCIO
-        reads the file: the Log operator, then the 1D table's linear interpolation."""
-        position = self.log.coordinate(np.clip(np.asarray(ap1, dtype=np.float64), 0.0, self.upper))
-        position *= self.bend.size - 1
-        # the entries are uniform over [0, 1]: the one below is found by arithmetic, not a search
-        entry = np.clip(np.nan_to_num(position).astype(np.int64), 0, self.bend.size - 2)  # NaN stays NaN below
-        low = self.bend[entry]
-        return low + (position - entry) * (self.bend[entry + 1] - low)
+        """AP1 colours (m, 3; clamped to [0, ``upper``]) to lattice coordinates (m, 3) in [0, 1],
+        as OCIO reads the file."""
+        ap1 = np.nan_to_num(np.asarray(ap1, dtype=np.float64).reshape(-1, 3))
+        return self.axes.coordinate(np.clip(ap1, 0.0, self.upper))
 
     def value(self, u) -> np.ndarray:
-        """Lattice coordinates back to AP1 (:meth:`coordinate`'s inverse)."""
-        return self.log.position(preimages_of(u, self.bend))
-
-
-def preimages_of(u, bend: np.ndarray) -> np.ndarray:
-    """The Log operator's values the 1D table ``bend`` takes to coordinates ``u``."""
-    entries = np.linspace(0.0, 1.0, bend.size)
-    return np.interp(np.asarray(u, dtype=np.float64), bend, entries)
+        """The AP1 grey at luminance coordinates ``u``: on a node of the table's grey line where
+        ``u`` is one's."""
+        return self.axes.grey(u)
 
 
 def mon_decode(code, curve: tuple[float, float]) -> np.ndarray:
@@ -156,12 +142,23 @@ def bake_all(views, meanwhile: Callable[[], T]) -> T:
 
 def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view`` baked now (:func:`bake` keeps it)."""
-    curve, toe = (HDR_CURVE, HDR_TOE) if view.is_hdr else (SDR_CURVE, SDR_TOE)
-    log, _, bend = view_axes(view, toe)
-    axis = log.position(preimages(size, bend, (0.0, 1.0)))
-    ap1 = np.stack(np.meshgrid(axis, axis, axis, indexing="ij"), axis=-1).reshape(-1, 3)
-    lat = AcesLattice(view, upper(view), log, bend, curve, _encoded(view, ap1, curve).reshape(size, size, size, 3))
-    return AcesLattice(view, lat.upper, log, bend, curve, np.round(fitted(lat) * CODE_STEPS) / CODE_STEPS)
+    curve, toe, shape = (HDR_CURVE, HDR_TOE, HDR_WARP) if view.is_hdr else (SDR_CURVE, SDR_TOE, SDR_WARP)
+    axes, top = chroma_axes(view, size, toe, shape), upper(view)
+    grid = np.stack(np.meshgrid(*[np.linspace(0.0, 1.0, size)] * 3, indexing="ij"), axis=-1).reshape(-1, 3)
+    ap1 = np.minimum(axes.values(grid), top)
+    lat = AcesLattice(view, top, axes, curve, _encoded(view, ap1, curve).reshape(size, size, size, 3))
+    cube = _extended(fitted(lat))
+    return AcesLattice(view, top, axes, curve, np.round(cube * CODE_STEPS) / CODE_STEPS)
+
+
+def _extended(cube: np.ndarray) -> np.ndarray:
+    """The table's other half (q > p), which no colour reaches, continued linearly past the plane
+    p = q: v[i, j] = v[i, i] + v[j, j] - v[j, i]. OCIO's inverse of the table then finds no
+    second input for a colour the view makes, and float32's rounding across the plane is smooth."""
+    out = cube.copy()
+    i, j = np.triu_indices(cube.shape[0], 1)
+    out[i, j] = cube[i, i] + cube[j, j] - cube[j, i]
+    return out
 
 
 def _encoded(view: ACESView, ap1, curve: tuple[float, float]) -> np.ndarray:
@@ -180,11 +177,11 @@ def fitted(lat: AcesLattice) -> np.ndarray:
     for name, aces in aces_probes.sets_in(t.limit_to_xyz, aces_probes.TRAINING_SEED, VIEW_FIT_COUNT).items():
         ap1 = np.clip(aces @ t.ap0_to_ap1.T, 0.0, lat.upper)
         colours[name] = (lat.coordinate(ap1) * (lat.size - 1), _encoded(lat.view, ap1, lat.curve))
-    kept = kept_nodes(lat.size, None)
-    # The black cell keeps its sampled values, none below 0: fitted ones of either sign near 0
-    # cancel in float32, which a pure-power display's encoding magnifies (4e-4 in gamma 2.6).
-    kept.reshape((lat.size,) * 3)[:2, :2, :2] = True
-    system = system_at(lat.cube, colours, kept)
+    kept = np.zeros((lat.size,) * 3, dtype=bool)
+    # Black keeps its sampled values, none below 0: fitted ones of either sign near 0 cancel in
+    # float32, which a pure-power display's encoding magnifies (4e-4 in gamma 2.6).
+    kept[:, :, 0] = True
+    system = system_at(lat.cube, colours, kept.ravel())
     return reweighted_nodes(lat.cube, system, _error(lat), ACES_FIT_RTOL, decimals=None)
 
 
@@ -229,34 +226,66 @@ def to_xyz(view: ACESView) -> np.ndarray:
 
 
 def ocio_file(lat: AcesLattice) -> bytes:
-    """The CLF of the lattice, written by PyOpenColorIO: Log shaper, 1D bend table, LUT3D
-    (16-bit codes), Exponent (monCurveMirrorFwd)."""
+    """The CTF of the lattice, written by PyOpenColorIO: the matrix to (R, L, B), XYZ_TO_xyY,
+    the matrix to (p, q, L), the Log operator, the 1D table, LUT3D (16-bit codes), Exponent
+    (monCurveMirrorFwd)."""
     import PyOpenColorIO as ocio
 
     from generator.luts import transforms  # with PyOpenColorIO, when a file is written
 
+    axes = lat.axes
     cube = transforms.lut3d(lat.cube)
     # Written as 16-bit integer codes (OCIO keeps six digits, 1.5e-6 of the range, and values
     # beyond it): two thirds of the text of float32 values.
     cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
-    log, decode = transforms.log_shaper(lat.log.span, lat.log.toe), transforms.mon_curve(*lat.curve)
-    group = ocio.GroupTransform([log, transforms.lut1d(lat.bend), cube, decode])
+    to_pq = np.eye(3)
+    to_pq[:2, :2] = axes.matrix
+    span = np.log2(1.0 / CHROMA_LOG_OFFSET + 1.0)
+    log = ocio.LogAffineTransform(
+        logSideSlope=[1.0 / span, 1.0 / span, 1.0 / axes.log.span],
+        logSideOffset=[-np.log2(CHROMA_LOG_OFFSET) / span] * 2 + [-np.log2(axes.log.toe) / axes.log.span],
+        linSideSlope=[1.0] * 3,
+        linSideOffset=[CHROMA_LOG_OFFSET, CHROMA_LOG_OFFSET, axes.log.toe],
+    )
+    log.setBase(2.0)
+    group = ocio.GroupTransform(
+        [
+            transforms.matrix_transform(axes.ryb),
+            ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY),
+            transforms.matrix_transform(to_pq, offset=(*axes.offset, 0.0)),
+            log,
+            transforms.lut1d(np.stack([axes.chroma, axes.chroma, axes.bend], axis=1)),
+            cube,
+            transforms.mon_curve(*lat.curve),
+        ]
+    )
     group.getFormatMetadata().setID(f"ocioforge:{file_name(lat.view)[:-4]}")
     group.getFormatMetadata().addChildElement(
         "Description",
         f"ocioforge ACES view LUT: {lat.view.name}; AP1 clamped to [0, {lat.upper:g}] to limiting "
-        f"RGB over the peak, {lat.size}^3 on a log2(x + {lat.log.toe:.6g}) axis bent by a 1D table, encoded by "
-        f"a monCurve of gamma "
-        f"{lat.curve[0]:g} and offset {lat.curve[1]:g}, which the last operator undoes.",
+        f"RGB over the peak, {lat.size}^3 over AP1's chromaticity and luminance (log2(L + {axes.log.toe:.6g})), "
+        f"encoded by a monCurve of gamma {lat.curve[0]:g} and offset {lat.curve[1]:g}, which the last operator "
+        "undoes.",
     )
-    return group.write("Academy/ASC Common LUT Format", ocio.Config.CreateRaw()).encode("utf-8")
+    return _compact(group.write("Color Transform Format", ocio.Config.CreateRaw())).encode("utf-8")
+
+
+def _compact(text: str) -> str:
+    """OCIO's text with the 3D table's values one space apart, not padded to a width: the table's
+    half no colour reaches is then shorter, and the file is the same to any reader."""
+    head, _, rest = text.partition("<LUT3D")
+    opening, _, rest = rest.partition(">\n")
+    array, _, tail = rest.partition("</Array>")
+    first, _, rows = array.partition(">\n")
+    rows = "\n".join(" ".join(line.split()) for line in rows.splitlines()[:-1])
+    return f"{head}<LUT3D{opening}>\n{first}>\n{rows}\n        </Array>{tail}"
 
 
 def file_name(view: ACESView) -> str:
     """The view's file in a config's LUT folder, named after the view."""
     from generator.luts.names import slug
 
-    return f"{slug(view.name)}_{ACES_LATTICE_SIZE}.clf"
+    return f"{slug(view.name)}_{ACES_LATTICE_SIZE}.ctf"
 
 
 def baked_file(view: ACESView) -> bytes:

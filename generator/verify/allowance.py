@@ -217,8 +217,8 @@ def view_allowance(spec: Spec, src, back, display, view, codes, expected, clip_e
 
 def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, shifted=None) -> np.ndarray | None:
     """For an ACES 2.0 view a 2.1 to 2.3 config runs from its baked file: the float32 shift of
-    the input carried into AP1, plus the file's Log operator's rounding near its toe
-    (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`), moved through the file one channel at a
+    the input carried into AP1, plus the file's Log operator's rounding of the luminance near its
+    toe (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`), moved through the file one channel at a
     time either way and encoded, summed over the channels (to first order a bound); then
     :func:`mapped_allowance`'s shift of the light after it. Near black a pure-power display
     turns that rounding into codes."""
@@ -241,7 +241,8 @@ def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, s
         reach = (
             apply_matrix(np.abs(to_ap1 @ back), np.nan_to_num(shift)).reshape(-1, 3)
             + tolerances.FLOAT32_MATRIX_ROUNDINGS * u * np.abs(ap1)
-            + tolerances.ACES_LOG_ROUNDINGS * u * lat.log.toe
+            # the Log operator rounds the luminance: a channel moves it by its weight
+            + tolerances.ACES_LOG_ROUNDINGS * u * lat.axes.log.toe / lat.axes.ryb[1]
         )
         start = np.nan_to_num(np.asarray(expected, dtype=np.float64).reshape(-1, 3))
         moved = np.zeros_like(start)

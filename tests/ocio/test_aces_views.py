@@ -48,15 +48,15 @@ def test_each_version_runs_aces_2_as_it_can(aces_build):
     wall = cfg.getViewTransform("ACES 2.0 - HDR 1500 nits (LED Wall)").getTransform(
         ocio.VIEWTRANSFORM_DIR_FROM_REFERENCE
     )
-    files = sorted(p.name for p in (folder / "luts").glob("*.clf")) if (folder / "luts").exists() else []
+    files = sorted(p.name for p in (folder / "luts").glob("*.ctf")) if (folder / "luts").exists() else []
     if version == "2.6":
         assert files == []
         assert any(isinstance(t, ocio.FixedFunctionTransform) and next(iter(t.getParams())) == 1500.0 for t in wall)
     else:
         assert files == [
-            "aces_2_0_hdr_1000_nits_p3_d65_65.clf",
-            "aces_2_0_hdr_1500_nits_led_wall_65.clf",
-            "aces_2_0_sdr_100_nits_rec_709_65.clf",
+            "aces_2_0_hdr_1000_nits_p3_d65_81.ctf",
+            "aces_2_0_hdr_1500_nits_led_wall_81.ctf",
+            "aces_2_0_sdr_100_nits_rec_709_81.ctf",
         ]
     assert next(iter(cfg.getViews("sRGB - Display"))) == "ACES 2.0 - SDR 100 nits (Rec.709)"
 
