@@ -54,6 +54,13 @@ def chroma_unlog(v) -> np.ndarray:
     return (np.exp2(np.asarray(v, dtype=np.float64) * span) - 1.0) * CHROMA_LOG_OFFSET
 
 
+#: Added to (R, L, B) before XYZ_TO_xyY, and taken from L after it: black then has the greys'
+#: chromaticity (not the (0, 0) of OCIO's division guard, past AP1's blue corner), and a float32
+#: departure of its luminance coordinate reads the darkest grey, not a saturated blue (GPU log2:
+#: up to 2e-3 on a pure-power display). Colours darker than a millionth of the toe move toward grey.
+BLACK_OFFSET = 1e-9
+
+
 def _ryb() -> np.ndarray:
     """AP1 to (R, L, B): red, luminance (AP1's Y, summing to 1: a grey's L is its value), blue."""
     luminance = gamuts()["AP1"].rgb_to_xyz[1]
@@ -100,7 +107,7 @@ class ChromaAxes:
         """Lattice coordinates (m, 3) in [0, 1] of AP1 colours (m, 3, clamped as the config clamps
         them), as OCIO runs the operators."""
         ryb = np.asarray(ap1, dtype=np.float64) @ self.ryb.T
-        pq = _xy(ryb) @ self.matrix.T + self.offset
+        pq = _xy(ryb + BLACK_OFFSET) @ self.matrix.T + self.offset
         entries = np.linspace(0.0, 1.0, self.chroma.size)
         out = np.empty((ryb.shape[0], 3))
         for channel in range(2):
@@ -115,10 +122,10 @@ class ChromaAxes:
         entries = np.linspace(0.0, 1.0, self.chroma.size)
         pq = chroma_unlog(np.stack([np.interp(u[:, c], self.chroma, entries) for c in range(2)], axis=1))
         xy = (pq - self.offset) @ np.linalg.inv(self.matrix).T
-        luminance = self.grey(u[:, 2])
+        luminance = self.grey(u[:, 2]) + BLACK_OFFSET
         with np.errstate(all="ignore"):
             total = np.where(xy[:, 1] > 0.0, luminance / xy[:, 1], 0.0)
-        ryb = np.stack([xy[:, 0] * total, luminance, (1.0 - xy[:, 0] - xy[:, 1]) * total], axis=1)
+        ryb = np.stack([xy[:, 0] * total, luminance, (1.0 - xy[:, 0] - xy[:, 1]) * total], axis=1) - BLACK_OFFSET
         return np.maximum(ryb @ np.linalg.inv(self.ryb).T, 0.0)
 
     def grey(self, u) -> np.ndarray:
@@ -140,7 +147,7 @@ def chroma_axes(view, size: int, toe: float, shape: tuple[float, float]) -> Chro
     ryb = _ryb()
     entries = np.linspace(0.0, 1.0, ACES_BEND_ENTRIES)
     table = warp(chroma_unlog(entries), *shape)
-    grey = chroma_log(_xy(np.ones((1, 3)) @ ryb.T)[0] @ matrix.T + offset)
+    grey = chroma_log(_xy(np.ones((1, 3)) @ ryb.T + BLACK_OFFSET)[0] @ matrix.T + offset)
     n, last = size - 1, entries.size - 1.0
     # piecewise linear in the entry, constant across each grey's two entries: the grey's coordinate
     # moves by exactly its node's remainder, and the table still rises

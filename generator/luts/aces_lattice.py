@@ -17,8 +17,9 @@ the table holds the rendering unclamped. One file per view, whatever displays sh
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TypeVar
 
 import numpy as np
@@ -27,7 +28,7 @@ from generator.colorimetry.gamuts import gamuts
 from generator.colorimetry.matrices import channel_max
 from generator.colorimetry.transfer import PiecewisePower
 from generator.luts import aces_probes
-from generator.luts.aces_chroma import CHROMA_LOG_OFFSET, HDR_WARP, SDR_WARP, ChromaAxes, chroma_axes
+from generator.luts.aces_chroma import BLACK_OFFSET, CHROMA_LOG_OFFSET, HDR_WARP, SDR_WARP, ChromaAxes, chroma_axes
 from generator.luts.fit import reweighted_nodes, system_at, tetrahedra
 from generator.luts.pool import Pool
 from generator.luts.solve import interpolate
@@ -144,20 +145,32 @@ def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view`` baked now (:func:`bake` keeps it)."""
     curve, toe, shape = (HDR_CURVE, HDR_TOE, HDR_WARP) if view.is_hdr else (SDR_CURVE, SDR_TOE, SDR_WARP)
     axes, top = chroma_axes(view, size, toe, shape), upper(view)
-    grid = np.stack(np.meshgrid(*[np.linspace(0.0, 1.0, size)] * 3, indexing="ij"), axis=-1).reshape(-1, 3)
-    ap1 = np.minimum(axes.values(grid), top)
-    lat = AcesLattice(view, top, axes, curve, _encoded(view, ap1, curve).reshape(size, size, size, 3))
-    cube = _extended(fitted(lat))
+    # the half colours reach (q <= p), sampled; the other is continued after the fit (:func:`_extended`)
+    grid = np.stack(np.meshgrid(*[np.linspace(0.0, 1.0, size)] * 3, indexing="ij"), axis=-1)
+    reached = np.tril(np.ones((size, size), dtype=bool))
+    cube = np.zeros((size, size, size, 3))
+    cube[reached] = _encoded(view, np.minimum(axes.values(grid[reached].reshape(-1, 3)), top), curve).reshape(
+        -1, size, 3
+    )
+    lat = AcesLattice(view, top, axes, curve, cube)
+    cube = _clamped_half(replace(lat, cube=fitted(lat)))
     return AcesLattice(view, top, axes, curve, np.round(cube * CODE_STEPS) / CODE_STEPS)
 
 
-def _extended(cube: np.ndarray) -> np.ndarray:
-    """The table's other half (q > p), which no colour reaches, continued linearly past the plane
-    p = q: v[i, j] = v[i, i] + v[j, j] - v[j, i]. OCIO's inverse of the table then finds no
-    second input for a colour the view makes, and float32's rounding across the plane is smooth."""
-    out = cube.copy()
-    i, j = np.triu_indices(cube.shape[0], 1)
-    out[i, j] = cube[i, i] + cube[j, j] - cube[j, i]
+def _clamped_half(lat: AcesLattice) -> np.ndarray:
+    """``lat``'s table with its other half (q > p), which no colour reaches, holding what the
+    table gives the node's colour clamped as the view clamps it (R < 0 to 0, on the plane p = q).
+    Whatever input OCIO's inverse of the table finds for a display colour, the view's clamp then
+    takes it to a colour the view renders as that display colour (a linear continuation instead
+    sent display cyan back as (0.65, 0.95, 1))."""
+    n = lat.size
+    p, q = np.triu_indices(n, 1)
+    nodes = np.stack([np.repeat(p, n), np.repeat(q, n), np.tile(np.arange(n), p.size)], axis=1) / (n - 1.0)
+    u = lat.coordinate(np.minimum(lat.axes.values(nodes), lat.upper)) * (n - 1)
+    out = lat.cube.copy()
+    out[np.repeat(p, n), np.repeat(q, n), np.tile(np.arange(n), p.size)] = interpolate(
+        *tetrahedra(np.ascontiguousarray(u.T), n), lat.cube.reshape(-1, 3).T
+    ).T
     return out
 
 
@@ -250,9 +263,9 @@ def ocio_file(lat: AcesLattice) -> bytes:
     log.setBase(2.0)
     group = ocio.GroupTransform(
         [
-            transforms.matrix_transform(axes.ryb),
+            transforms.matrix_transform(axes.ryb, offset=(BLACK_OFFSET,) * 3),
             ocio.FixedFunctionTransform(ocio.FIXED_FUNCTION_XYZ_TO_xyY),
-            transforms.matrix_transform(to_pq, offset=(*axes.offset, 0.0)),
+            transforms.matrix_transform(to_pq, offset=(*axes.offset, -BLACK_OFFSET)),
             log,
             transforms.lut1d(np.stack([axes.chroma, axes.chroma, axes.bend], axis=1)),
             cube,
@@ -271,14 +284,14 @@ def ocio_file(lat: AcesLattice) -> bytes:
 
 
 def _compact(text: str) -> str:
-    """OCIO's text with the 3D table's values one space apart, not padded to a width: the table's
-    half no colour reaches is then shorter, and the file is the same to any reader."""
+    """OCIO's text with the 3D table's values one space apart, not padded to six characters:
+    a fifth shorter, and the same to any reader."""
     head, _, rest = text.partition("<LUT3D")
     opening, _, rest = rest.partition(">\n")
     array, _, tail = rest.partition("</Array>")
     first, _, rows = array.partition(">\n")
-    rows = "\n".join(" ".join(line.split()) for line in rows.splitlines()[:-1])
-    return f"{head}<LUT3D{opening}>\n{first}>\n{rows}\n        </Array>{tail}"
+    rows = re.sub(r"(?m)^ +", "", re.sub(r" {2,}", " ", rows.rstrip(" ")))
+    return f"{head}<LUT3D{opening}>\n{first}>\n{rows}        </Array>{tail}"
 
 
 def file_name(view: ACESView) -> str:

@@ -99,7 +99,7 @@ def write_files(spec: Spec, folder: Path) -> BuildResult:
 BUILD_ENTRIES = (CONFIG_FILENAME, LUT_FOLDER, resolved.FILENAME, LOOK_FOLDER)
 
 #: What a build writes into its LUT folder: files of these suffixes alone.
-LUT_SUFFIXES = (".clf", ".spi1d")
+LUT_SUFFIXES = (".clf", ".ctf", ".spi1d")
 
 
 def _replace_problem(out_dir: Path) -> str:
@@ -131,7 +131,7 @@ def _replace_problem(out_dir: Path) -> str:
         if stray is not None:
             return (
                 f"holds {LUT_FOLDER}/{stray.name}, which no build writes; --force replaces only a previous build "
-                f"(its {LUT_FOLDER} holds {' and '.join(LUT_SUFFIXES)} files alone)"
+                f"(its {LUT_FOLDER} holds {', '.join(LUT_SUFFIXES)} files alone)"
             )
         read = files_read(out_dir / CONFIG_FILENAME) if entries else set()
         if read is None:

@@ -217,11 +217,11 @@ def view_allowance(spec: Spec, src, back, display, view, codes, expected, clip_e
 
 def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, shifted=None) -> np.ndarray | None:
     """For an ACES 2.0 view a 2.1 to 2.3 config runs from its baked file: the float32 shift of
-    the input carried into AP1, plus the file's Log operator's rounding of the luminance near its
-    toe (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`), moved through the file one channel at a
-    time either way and encoded, summed over the channels (to first order a bound); then
-    :func:`mapped_allowance`'s shift of the light after it. Near black a pure-power display
-    turns that rounding into codes."""
+    the input carried into AP1 and moved through the file one channel at a time either way and
+    encoded, summed over the channels (to first order a bound), plus the file's Log operator's
+    rounding of the luminance near its toe (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`),
+    the colour scaled either way; then :func:`mapped_allowance`'s shift of the light after it.
+    Near black a pure-power display turns that rounding into codes."""
     mapped = mapped_allowance(src, back, display, view, codes, expected, shifted)
     if mapped is None:
         return None
@@ -238,18 +238,22 @@ def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, s
 
     with np.errstate(all="ignore"):
         ap1 = np.nan_to_num(apply_matrix(to_ap1, ref)).reshape(-1, 3)
-        reach = (
-            apply_matrix(np.abs(to_ap1 @ back), np.nan_to_num(shift)).reshape(-1, 3)
-            + tolerances.FLOAT32_MATRIX_ROUNDINGS * u * np.abs(ap1)
-            # the Log operator rounds the luminance: a channel moves it by its weight
-            + tolerances.ACES_LOG_ROUNDINGS * u * lat.axes.log.toe / lat.axes.ryb[1]
-        )
+        reach = apply_matrix(np.abs(to_ap1 @ back), np.nan_to_num(shift)).reshape(
+            -1, 3
+        ) + tolerances.FLOAT32_MATRIX_ROUNDINGS * u * np.abs(ap1)
         start = np.nan_to_num(np.asarray(expected, dtype=np.float64).reshape(-1, 3))
         moved = np.zeros_like(start)
         for channel in range(3):
             step = np.zeros_like(ap1)
             step[:, channel] = reach[:, channel]
             moved += np.maximum(np.abs(encoded(ap1 + step) - start), np.abs(encoded(ap1 - step) - start))
+        # the Log operator rounds the luminance alone: the colour scaled, its chromaticity kept
+        luminance = np.maximum(ap1, 0.0) @ lat.axes.ryb[1]
+        scale = tolerances.ACES_LOG_ROUNDINGS * u * lat.axes.log.toe / np.where(luminance > 0.0, luminance, np.inf)
+        moved += np.maximum(
+            np.abs(encoded(ap1 * (1.0 + scale[:, None])) - start),
+            np.abs(encoded(ap1 * np.maximum(1.0 - scale, 0.0)[:, None]) - start),
+        )
     return mapped + np.where(np.isfinite(moved), moved, 0.0).reshape(np.shape(mapped))
 
 

@@ -11,17 +11,18 @@ SDR = views.catalogue()["ACES 2.0 - SDR 100 nits (Rec.709)"]
 
 
 def test_ap1s_faces_are_the_tables_faces_and_its_diagonal_plane():
-    """Blue, red and green at (0, 0), (1, 0) and (1, 1): G = 0 on q = 0, B = 0 on p = 1, R = 0 on p = q."""
+    """Blue, red and green at (0, 0), (1, 0) and (1, 1): G = 0 on q = 0, B = 0 on p = 1, R = 0 on p = q
+    (within what BLACK_OFFSET moves colours of 0.1 and more: 1e-8 of a chromaticity)."""
     axes = chroma_axes(SDR, 81, 2.0**-7, SDR_WARP)
     corners = axes.coordinate(np.eye(3)[[2, 0, 1]] * 0.5)[:, :2]
     assert np.allclose(corners, [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]], atol=1e-6)
     rng = np.random.default_rng(1)
-    faces = rng.random((3000, 3)) * 4.0
+    faces = 0.1 + rng.random((3000, 3)) * 4.0
     faces[np.arange(3000), np.arange(3000) % 3] = 0.0
     u = axes.coordinate(faces)
     on_g, on_b, on_r = (u[i::3] for i in (1, 2, 0))
-    assert np.allclose(on_g[:, 1], 0.0, atol=1e-9) and np.allclose(on_b[:, 0], 1.0, atol=1e-9)
-    assert np.allclose(on_r[:, 0], on_r[:, 1], atol=1e-9)
+    assert np.allclose(on_g[:, 1], 0.0, atol=1e-7) and np.allclose(on_b[:, 0], 1.0, atol=1e-7)
+    assert np.allclose(on_r[:, 0], on_r[:, 1], atol=1e-7)
 
 
 @pytest.mark.parametrize("shape", [SDR_WARP, HDR_WARP])
