@@ -145,7 +145,7 @@ def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view`` baked now (:func:`bake` keeps it)."""
     curve, toe, shape = (HDR_CURVE, HDR_TOE, HDR_WARP) if view.is_hdr else (SDR_CURVE, SDR_TOE, SDR_WARP)
     axes, top = chroma_axes(view, size, toe, shape), upper(view)
-    # the half colours reach (q <= p), sampled; the other is continued after the fit (:func:`_extended`)
+    # the half colours reach (q <= p), sampled; the other is filled after the fit (:func:`_clamped_half`)
     grid = np.stack(np.meshgrid(*[np.linspace(0.0, 1.0, size)] * 3, indexing="ij"), axis=-1)
     reached = np.tril(np.ones((size, size), dtype=bool))
     cube = np.zeros((size, size, size, 3))
