@@ -28,6 +28,7 @@ from generator.colorimetry.gamuts import gamuts
 from generator.colorimetry.matrices import channel_max
 from generator.colorimetry.transfer import PiecewisePower
 from generator.luts import aces_probes
+from generator.luts.aces_axes import HDR_LOW_PEAK
 from generator.luts.aces_chroma import BLACK_OFFSET, CHROMA_LOG_OFFSET, HDR_WARP, SDR_WARP, ChromaAxes, chroma_axes
 from generator.luts.fit import reweighted_nodes, system_at, tetrahedra
 from generator.luts.pool import Pool
@@ -42,9 +43,11 @@ T = TypeVar("T")
 #: 81 * 82 / 2 * 81 = 269001 nodes, against the 274625 of the plain recipe's 65³.
 ACES_LATTICE_SIZE = 81
 
-#: The luminance axis's toe (AP1 linear) for SDR and HDR views: the axis is log2(L + toe), so
-#: black sits on a node (docs/aces-views.md).
-SDR_TOE, HDR_TOE = 2.0**-7, 2.0**-9
+#: The luminance axis's toe (AP1 linear) for SDR views, HDR views, and HDR views peaking below
+#: :data:`~generator.luts.aces_axes.HDR_LOW_PEAK`: the axis is log2(L + toe), so black sits on a
+#: node. 2^-8.5 brought the 108 nit view's camera colours under 1 ΔE ITP p99 on three draws (0.91
+#: to 1.02 at 2^-9), where the 1000 nit view's darks and greys rose (docs/aces-views.md).
+SDR_TOE, HDR_TOE, HDR_LOW_TOE = 2.0**-7, 2.0**-9, 2.0**-8.5
 
 #: Colours per probe kind a view's table is fitted to (:func:`fitted`).
 VIEW_FIT_COUNT = 16384
@@ -144,6 +147,8 @@ def bake_all(views, meanwhile: Callable[[], T]) -> T:
 def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view`` baked now (:func:`bake` keeps it)."""
     curve, toe, shape = (HDR_CURVE, HDR_TOE, HDR_WARP) if view.is_hdr else (SDR_CURVE, SDR_TOE, SDR_WARP)
+    if view.is_hdr and view.peak < HDR_LOW_PEAK:
+        toe = HDR_LOW_TOE
     axes, top = chroma_axes(view, size, toe, shape), upper(view)
     # the half colours reach (q <= p), sampled; the other is filled after the fit (:func:`_clamped_half`)
     grid = np.stack(np.meshgrid(*[np.linspace(0.0, 1.0, size)] * 3, indexing="ij"), axis=-1)
