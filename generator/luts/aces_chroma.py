@@ -41,17 +41,18 @@ SDR_WARP, HDR_WARP = (0.0, 0.1), (0.42, 0.01)
 #: float64 evaluation near AP1's faces, where the warp is steep).
 CHROMA_LOG_OFFSET = 1.0 / 16.0
 
+#: Bits of ``x + CHROMA_LOG_OFFSET`` from x = 0 to 1: the Log operator divides by them.
+CHROMA_LOG_SPAN = float(np.log2(1.0 / CHROMA_LOG_OFFSET + 1.0))
+
 
 def chroma_log(p) -> np.ndarray:
     """The Log operator's value in [0, 1] of p or q in [0, 1]."""
-    span = np.log2(1.0 / CHROMA_LOG_OFFSET + 1.0)
-    return np.log2(np.asarray(p, dtype=np.float64) / CHROMA_LOG_OFFSET + 1.0) / span
+    return np.log2(np.asarray(p, dtype=np.float64) / CHROMA_LOG_OFFSET + 1.0) / CHROMA_LOG_SPAN
 
 
 def chroma_unlog(v) -> np.ndarray:
     """:func:`chroma_log`'s inverse."""
-    span = np.log2(1.0 / CHROMA_LOG_OFFSET + 1.0)
-    return (np.exp2(np.asarray(v, dtype=np.float64) * span) - 1.0) * CHROMA_LOG_OFFSET
+    return (np.exp2(np.asarray(v, dtype=np.float64) * CHROMA_LOG_SPAN) - 1.0) * CHROMA_LOG_OFFSET
 
 
 #: Added to (R, L, B) before XYZ_TO_xyY, and taken from L after it: black then has the greys'

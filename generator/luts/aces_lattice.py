@@ -29,7 +29,15 @@ from generator.colorimetry.matrices import channel_max
 from generator.colorimetry.transfer import PiecewisePower
 from generator.luts import aces_probes
 from generator.luts.aces_axes import HDR_LOW_PEAK
-from generator.luts.aces_chroma import BLACK_OFFSET, CHROMA_LOG_OFFSET, HDR_WARP, SDR_WARP, ChromaAxes, chroma_axes
+from generator.luts.aces_chroma import (
+    BLACK_OFFSET,
+    CHROMA_LOG_OFFSET,
+    CHROMA_LOG_SPAN,
+    HDR_WARP,
+    SDR_WARP,
+    ChromaAxes,
+    chroma_axes,
+)
 from generator.luts.fit import reweighted_nodes, system_at, tetrahedra
 from generator.luts.pool import Pool
 from generator.luts.solve import interpolate
@@ -170,12 +178,10 @@ def _clamped_half(lat: AcesLattice) -> np.ndarray:
     sent display cyan back as (0.65, 0.95, 1))."""
     n = lat.size
     p, q = np.triu_indices(n, 1)
-    nodes = np.stack([np.repeat(p, n), np.repeat(q, n), np.tile(np.arange(n), p.size)], axis=1) / (n - 1.0)
-    u = lat.coordinate(np.minimum(lat.axes.values(nodes), lat.upper)) * (n - 1)
+    index = (np.repeat(p, n), np.repeat(q, n), np.tile(np.arange(n), p.size))
+    u = lat.coordinate(np.minimum(lat.axes.values(np.stack(index, axis=1) / (n - 1.0)), lat.upper)) * (n - 1)
     out = lat.cube.copy()
-    out[np.repeat(p, n), np.repeat(q, n), np.tile(np.arange(n), p.size)] = interpolate(
-        *tetrahedra(np.ascontiguousarray(u.T), n), lat.cube.reshape(-1, 3).T
-    ).T
+    out[index] = interpolate(*tetrahedra(np.ascontiguousarray(u.T), n), lat.cube.reshape(-1, 3).T).T
     return out
 
 
@@ -258,14 +264,9 @@ def ocio_file(lat: AcesLattice) -> bytes:
     cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
     to_pq = np.eye(3)
     to_pq[:2, :2] = axes.matrix
-    span = np.log2(1.0 / CHROMA_LOG_OFFSET + 1.0)
-    log = ocio.LogAffineTransform(
-        logSideSlope=[1.0 / span, 1.0 / span, 1.0 / axes.log.span],
-        logSideOffset=[-np.log2(CHROMA_LOG_OFFSET) / span] * 2 + [-np.log2(axes.log.toe) / axes.log.span],
-        linSideSlope=[1.0] * 3,
-        linSideOffset=[CHROMA_LOG_OFFSET, CHROMA_LOG_OFFSET, axes.log.toe],
+    log = transforms.log_shaper(
+        (CHROMA_LOG_SPAN, CHROMA_LOG_SPAN, axes.log.span), (CHROMA_LOG_OFFSET, CHROMA_LOG_OFFSET, axes.log.toe)
     )
-    log.setBase(2.0)
     group = ocio.GroupTransform(
         [
             transforms.matrix_transform(axes.ryb, offset=(BLACK_OFFSET,) * 3),

@@ -105,13 +105,15 @@ def baked_decode(domain: tuple[float, float], shaper: float, table: ocio.Transfo
     return [*steps, table]
 
 
-def log_shaper(span: float, toe: float, direction=FORWARD) -> ocio.LogAffineTransform:
-    """Linear ``x`` to ``log2(x + toe) / span - log2(toe) / span`` (CLF's linToLog; logToLin back)."""
+def log_shaper(span, toe, direction=FORWARD) -> ocio.LogAffineTransform:
+    """Linear ``x`` to ``log2(x + toe) / span - log2(toe) / span`` (CLF's linToLog; logToLin back);
+    ``span`` and ``toe`` are one value for every channel or one per channel."""
+    spans, toes = (np.broadcast_to(np.asarray(v, dtype=np.float64), (3,)) for v in (span, toe))
     t = ocio.LogAffineTransform(
-        logSideSlope=[1.0 / span] * 3,
-        logSideOffset=[-np.log2(toe) / span] * 3,
+        logSideSlope=[float(v) for v in 1.0 / spans],
+        logSideOffset=[float(v) for v in -np.log2(toes) / spans],
         linSideSlope=[1.0] * 3,
-        linSideOffset=[toe] * 3,
+        linSideOffset=[float(v) for v in toes],
         direction=direction,
     )
     t.setBase(2.0)
