@@ -17,7 +17,6 @@ the table holds the rendering unclamped. One file per view, whatever displays sh
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 from typing import TypeVar
@@ -167,7 +166,8 @@ def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
     )
     lat = AcesLattice(view, top, axes, curve, cube)
     cube = _clamped_half(replace(lat, cube=fitted(lat)))
-    return AcesLattice(view, top, axes, curve, np.round(cube * CODE_STEPS) / CODE_STEPS)
+    # + 0.0: no negative zero, which OCIO would write as "-0"
+    return AcesLattice(view, top, axes, curve, np.round(cube * CODE_STEPS) / CODE_STEPS + 0.0)
 
 
 def _clamped_half(lat: AcesLattice) -> np.ndarray:
@@ -258,9 +258,10 @@ def ocio_file(lat: AcesLattice) -> bytes:
     from generator.luts import transforms  # with PyOpenColorIO, when a file is written
 
     axes = lat.axes
-    cube = transforms.lut3d(lat.cube)
-    # Written as 16-bit integer codes (OCIO keeps six digits, 1.5e-6 of the range, and values
-    # beyond it): two thirds of the text of float32 values.
+    # OCIO writes every operator, the 3D table a 2³ stand-in that :func:`_with_table` fills with
+    # 16-bit integer codes (six digits of a float32 value would be 1.5e-6 of the range): two
+    # thirds of the text
+    cube = transforms.lut3d(np.zeros((2, 2, 2, 3)))
     cube.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
     to_pq = np.eye(3)
     to_pq[:2, :2] = axes.matrix
@@ -286,18 +287,25 @@ def ocio_file(lat: AcesLattice) -> bytes:
         f"encoded by a monCurve of gamma {lat.curve[0]:g} and offset {lat.curve[1]:g}, which the last operator "
         "undoes.",
     )
-    return _compact(group.write("Color Transform Format", ocio.Config.CreateRaw())).encode("utf-8")
+    return _with_table(group.write("Color Transform Format", ocio.Config.CreateRaw()), lat.cube).encode("utf-8")
 
 
-def _compact(text: str) -> str:
-    """OCIO's text with the 3D table's values one space apart, not padded to six characters:
-    a fifth shorter, and the same to any reader."""
+def table_rows(cube: np.ndarray) -> str:
+    """A 3D table's rows as OCIO writes them at 16-bit integer output depth (the float32 value
+    times 65535, blue fastest), one space apart where OCIO pads each to six characters."""
+    codes = np.rint(np.asarray(cube, dtype=np.float32).astype(np.float64).reshape(-1, 3) * CODE_STEPS)
+    return ("%d %d %d\n" * len(codes)) % tuple(codes.astype(np.int64).ravel().tolist())
+
+
+def _with_table(text: str, cube: np.ndarray) -> str:
+    """OCIO's text of the CTF with its stand-in 3D table replaced by ``cube``'s :func:`table_rows`:
+    a fifth shorter than OCIO's padded rows, the same to any reader, and written in a sixth of
+    OCIO's time (2.7 s for a 117³ table)."""
     head, _, rest = text.partition("<LUT3D")
     opening, _, rest = rest.partition(">\n")
     array, _, tail = rest.partition("</Array>")
-    first, _, rows = array.partition(">\n")
-    rows = re.sub(r"(?m)^ +", "", re.sub(r" {2,}", " ", rows.rstrip(" ")))
-    return f"{head}<LUT3D{opening}>\n{first}>\n{rows}        </Array>{tail}"
+    first = array.partition(">\n")[0].replace('dim="2 2 2 3"', 'dim="{0} {0} {0} 3"'.format(cube.shape[0]))
+    return f"{head}<LUT3D{opening}>\n{first}>\n{table_rows(cube)}        </Array>{tail}"
 
 
 def file_name(view: ACESView) -> str:

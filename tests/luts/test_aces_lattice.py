@@ -49,6 +49,22 @@ def test_ocio_runs_the_file_as_its_float64_evaluation():
     assert np.max(np.abs(out - expected)) < FILE_RELATIVE
 
 
+def test_the_tables_rows_are_the_codes_ocio_writes():
+    """The file's 3D table holds, row for row, the 16-bit codes OCIO writes for the same table
+    (OCIO pads them to six characters: the whitespace alone differs)."""
+    from generator.luts import transforms
+
+    lat = aces_lattice.bake(views.catalogue()["ACES 2.0 - SDR 100 nits (Rec.709)"], 9)
+    assert lat.cube.min() < 0.0 and lat.cube.max() > 1.0  # codes of either sign and past the range
+    table = transforms.lut3d(lat.cube)
+    table.setFileOutputBitDepth(ocio.BIT_DEPTH_UINT16)
+    text = ocio.GroupTransform([table]).write("Color Transform Format", ocio.Config.CreateRaw())
+    theirs = text.partition('<Array dim="9 9 9 3">')[2].partition("</Array>")[0].split()
+    ours = aces_lattice.ocio_file(lat).decode().partition('<Array dim="9 9 9 3">')[2].partition("</Array>")[0]
+    assert ours.strip().splitlines() == aces_lattice.table_rows(lat.cube).splitlines()
+    assert ours.split() == theirs
+
+
 def test_greys_land_on_the_tables_nodes_and_black_is_kept():
     """A grey at a node of the luminance axis reads that node (its chromaticity is a node's of p
     and q, to the 1D table's six decimals); black, every chromaticity at luminance 0, keeps the
