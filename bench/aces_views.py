@@ -35,6 +35,7 @@ DISPLAYS = {
     "ACES 2.0 - SDR 100 nits (Rec.709)": "sRGB - Display",
     "ACES 2.0 - SDR 100 nits (P3 D65)": "Display P3 - Display",
     "ACES 2.0 - HDR 1000 nits (P3 D65)": "Rec.2100-PQ - Display",
+    "ACES 2.0 - HDR 1000 nits (Rec.2020)": "Rec.2100-PQ - Display",
     "ACES 2.0 - HDR 500 nits (Rec.2020)": "Rec.2100-PQ - Display",
     "ACES 2.0 - HDR 108 nits (P3 D65)": "ST2084-P3-D65 - Display",
 }

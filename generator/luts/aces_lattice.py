@@ -42,13 +42,22 @@ from generator.luts.pool import Pool
 from generator.luts.solve import interpolate
 from generator.metrics import delta_e_itp_of_light
 from generator.rendering import views
+from generator.rendering.aces2_presets import P3 as P3_PRIMARIES
 from generator.rendering.views import ACESView
 
 T = TypeVar("T")
 
-#: Nodes a side. Colours fill the half of the table where q <= p (:mod:`~generator.luts.aces_chroma`):
-#: 81 * 82 / 2 * 81 = 269001 nodes, against the 274625 of the plain recipe's 65³.
-ACES_LATTICE_SIZE = 81
+#: Nodes a side: SDR views, HDR views, HDR views of a wide limiting gamut (:data:`WIDE_AREA`).
+#: Colours fill the half of a table where q <= p (:mod:`~generator.luts.aces_chroma`): n (n + 1) / 2 * n
+#: nodes. SDR views bend most; of the sizes 97 to 129, 117 and 129 put greys' error lowest, and 129
+#: makes 35 MB files. The default 2.1 config's seven files hold 105 MB, below the 133 MB of the plain
+#: recipe's eighteen 65³ files (docs/aces-views.md).
+SDR_LATTICE_SIZE, HDR_LATTICE_SIZE, HDR_WIDE_LATTICE_SIZE = 117, 81, 93
+
+#: An HDR view whose limiting gamut's xy area is this many times P3's takes
+#: :data:`HDR_WIDE_LATTICE_SIZE` nodes (Rec.2020's is 1.39 times). At 81 nodes the Rec.2020-limited
+#: views' bright colours measured 1.19 (1000 nits) and 1.04 (500 nits) ΔE ITP p99.
+WIDE_AREA = 1.1
 
 #: The luminance axis's toe (AP1 linear) for SDR views, HDR views, and HDR views peaking below
 #: :data:`~generator.luts.aces_axes.HDR_LOW_PEAK`: the axis is log2(L + toe), so black sits on a
@@ -118,12 +127,25 @@ def mon_encode(linear, curve: tuple[float, float]) -> np.ndarray:
     return np.sign(linear) * PiecewisePower(*curve).encode(np.abs(linear))
 
 
-def bake(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
-    """The lattice of ACES 2.0 view ``view``: sampled from the float64 reference, then fitted
-    (kept: this process bakes each view once)."""
-    key = (view, size)
+def lattice_size(view: ACESView) -> int:
+    """Nodes a side of ``view``'s table."""
+    if not view.is_hdr:
+        return SDR_LATTICE_SIZE
+    return HDR_WIDE_LATTICE_SIZE if _xy_area(view.limiting) > WIDE_AREA * _xy_area(P3_PRIMARIES) else HDR_LATTICE_SIZE
+
+
+def _xy_area(primaries) -> float:
+    """The area of a gamut's triangle in CIE xy."""
+    (rx, ry), (gx, gy), (bx, by) = primaries
+    return abs((gx - rx) * (by - ry) - (bx - rx) * (gy - ry)) / 2.0
+
+
+def bake(view: ACESView, size: int | None = None) -> AcesLattice:
+    """The lattice of ACES 2.0 view ``view`` (``size`` nodes a side, default :func:`lattice_size`):
+    sampled from the float64 reference, then fitted (kept: this process bakes each view once)."""
+    key = (view, size or lattice_size(view))
     if key not in _BAKED:
-        _keep(key, baked(view, size))
+        _keep(key, baked(*key))
     return _BAKED[key]
 
 
@@ -141,18 +163,19 @@ def _keep(key: tuple[ACESView, int], lat: AcesLattice) -> None:
 def bake_all(views, meanwhile: Callable[[], T]) -> T:
     """:func:`bake` each of ``views`` not baked yet, in worker processes, kept here; ``meanwhile()``
     runs here as they bake, and its result is returned."""
-    missing = [v for v in dict.fromkeys(views) if (v, ACES_LATTICE_SIZE) not in _BAKED]
+    missing = [v for v in dict.fromkeys(views) if (v, lattice_size(v)) not in _BAKED]
     with Pool() as pool:
         for view in missing:
             pool.submit(view, baked, view)
         out = meanwhile()
         for view in missing:
-            _keep((view, ACES_LATTICE_SIZE), pool.result(view, baked, view))
+            _keep((view, lattice_size(view)), pool.result(view, baked, view))
     return out
 
 
-def baked(view: ACESView, size: int = ACES_LATTICE_SIZE) -> AcesLattice:
+def baked(view: ACESView, size: int | None = None) -> AcesLattice:
     """The lattice of ACES 2.0 view ``view`` baked now (:func:`bake` keeps it)."""
+    size = size or lattice_size(view)
     curve, toe, shape = (HDR_CURVE, HDR_TOE, HDR_WARP) if view.is_hdr else (SDR_CURVE, SDR_TOE, SDR_WARP)
     if view.is_hdr and view.peak < HDR_LOW_PEAK:
         toe = HDR_LOW_TOE
@@ -312,7 +335,7 @@ def file_name(view: ACESView) -> str:
     """The view's file in a config's LUT folder, named after the view."""
     from generator.luts.names import slug
 
-    return f"{slug(view.name)}_{ACES_LATTICE_SIZE}.ctf"
+    return f"{slug(view.name)}_{lattice_size(view)}.ctf"
 
 
 def baked_file(view: ACESView) -> bytes:

@@ -403,9 +403,10 @@ def _worker_view_file(index: int, method: str) -> _ViewFile:
 
 
 def _submit_bakes(spec: Spec, pool: Pool) -> None:
-    """Hand every view file of ``spec``'s config to ``pool``: the ACES 2.0 lattices, heaviest, first."""
+    """Hand every view file of ``spec``'s config to ``pool``: the ACES 2.0 lattices first, largest
+    first, so that none starts last."""
     _BUILDING.append(spec)
-    for view in baked_aces_views(spec):
+    for view in sorted(baked_aces_views(spec), key=lambda v: -aces_lattice.lattice_size(v)):
         if ("aces", view) not in _DONE:
             pool.submit(("aces", view), aces_lattice.baked_file, view)
     for display, method in _baked_methods(spec):

@@ -140,25 +140,39 @@ def test_the_baked_view_errs_less_than_the_plain_recipe(default_spec, name, disp
     assert not worse, worse
 
 
-#: Issue 21's goal for a baked view, in ΔE ITP on HDR displays: p99 and largest error per probe kind.
+#: Issue 21's goal for a baked view, in ten-bit codes (SDR) or ΔE ITP (HDR): p99 and largest
+#: error per probe kind.
 GOAL_P99, GOAL_MAX = 1.0, 10.0
+
+#: Every probe kind.
+ALL_KINDS = aces_probes.SETS
 
 
 @pytest.mark.parametrize(
-    "name, display_name",
+    "name, display_name, kinds",
     [
-        ("ACES 2.0 - HDR 108 nits (P3 D65)", "ST2084-P3-D65 - Display"),
-        ("ACES 2.0 - HDR 500 nits (P3 D65)", "Rec.2100-PQ - Display"),
+        ("ACES 2.0 - SDR 100 nits (Rec.709)", "sRGB - Display", ("in_gamut", "dark", "greys")),
+        ("ACES 2.0 - SDR 100 nits (P3 D65)", "Display P3 - Display", ("in_gamut", "ap0", "dark", "greys")),
+        ("ACES 2.0 - HDR 1000 nits (P3 D65)", "Rec.2100-PQ - Display", ALL_KINDS),
+        ("ACES 2.0 - HDR 1000 nits (Rec.2020)", "Rec.2100-PQ - Display", ALL_KINDS),
+        ("ACES 2.0 - HDR 500 nits (Rec.2020)", "Rec.2100-PQ - Display", ALL_KINDS),
+        ("ACES 2.0 - HDR 500 nits (P3 D65)", "Rec.2100-PQ - Display", ALL_KINDS),
+        ("ACES 2.0 - HDR 108 nits (P3 D65)", "ST2084-P3-D65 - Display", ALL_KINDS),
     ],
 )
-def test_the_hdr_views_below_1000_nits_meet_the_goal(default_spec, name, display_name):
-    """On every probe kind (8192 a kind, the probe seed): p99 at most 1 ΔE ITP, largest error at
-    most 10. With the luminance toe of 2^-9 the 108 nit view's camera colours measured 1.02."""
+def test_the_baked_views_meet_the_goal(default_spec, name, display_name, kinds):
+    """On the probe kinds given (8192 a kind, the probe seed): p99 at most 1 ten-bit code or ΔE
+    ITP, largest error at most 10. At 81 nodes a side the SDR Rec.709 view's in-gamut colours
+    measured 1.40 codes p99 (max 15.3), the SDR P3 view's 1.13, and the Rec.2020-limited HDR
+    views' bright ones 1.13 and 1.04; with the luminance toe of 2^-9 the 108 nit view's camera
+    colours measured 1.02."""
     view = views.catalogue()[name]
     display = next(d for d in default_spec.displays if d.name == display_name)
     lat = aces_lattice.bake(view)
     missed = {}
     for kind, aces in aces_probes.sets(display, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT).items():
+        if kind not in kinds:
+            continue
         truth = reference.display_xyz_encode(default_spec, display, views.evaluate(view, aces))
         ours = reference.display_xyz_encode(default_spec, display, aces_lattice.evaluate(lat, aces))
         error = probes.errors(display, ours, truth)[0]

@@ -55,8 +55,8 @@ def test_each_version_runs_aces_2_as_it_can(aces_build):
     else:
         assert files == [
             "aces_2_0_hdr_1000_nits_p3_d65_81.ctf",
-            "aces_2_0_hdr_1500_nits_led_wall_81.ctf",
-            "aces_2_0_sdr_100_nits_rec_709_81.ctf",
+            "aces_2_0_hdr_1500_nits_led_wall_93.ctf",
+            "aces_2_0_sdr_100_nits_rec_709_117.ctf",
         ]
     assert next(iter(cfg.getViews("sRGB - Display"))) == "ACES 2.0 - SDR 100 nits (Rec.709)"
 
