@@ -120,6 +120,12 @@ FLOAT32_MATRIX_ROUNDINGS = 3.0
 #: whose result |log2 toe| <= 10 carries 10 u, times ln 2 back in L (7): 8 in all.
 ACES_LOG_ROUNDINGS = 8.0
 
+#: Float32 rounding of a baked ACES view's chromaticity (p and q, in [0, 1]) before its 1D table, in
+#: units of FLOAT32_UNIT_ROUNDOFF: XYZ_TO_xyY's sum and division (3), the matrix after it (2), the
+#: Log operator's sum (1) and its log2, whose result |log2(p + 1/16)| <= 4 carries 4 u, times ln 2
+#: back in p (3): 9 in all. OCIO's lossless run measured 7.0 at most over 400,000 AP1 colours.
+ACES_CHROMA_ROUNDINGS = 9.0
+
 #: Float32 roundings of a 1D table's fractional index behind a Range (OCIO's CPU renderer):
 #: the Range's multiply-add and the scale to entries, each relative to the index.
 FLOAT32_TABLE_INDEX_ROUNDINGS = 2.0

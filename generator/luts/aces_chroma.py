@@ -107,13 +107,21 @@ class ChromaAxes:
     def coordinate(self, ap1) -> np.ndarray:
         """Lattice coordinates (m, 3) in [0, 1] of AP1 colours (m, 3, clamped as the config clamps
         them), as OCIO runs the operators."""
+        return self.placed(*self.chromaticity(ap1))
+
+    def chromaticity(self, ap1) -> tuple[np.ndarray, np.ndarray]:
+        """(p, q) (m, 2) and luminance L (m,) of AP1 colours (m, 3), as the operators before the
+        Log give them."""
         ryb = np.asarray(ap1, dtype=np.float64) @ self.ryb.T
-        pq = _xy(ryb + BLACK_OFFSET) @ self.matrix.T + self.offset
+        return _xy(ryb + BLACK_OFFSET) @ self.matrix.T + self.offset, ryb[:, 1]
+
+    def placed(self, pq, luminance) -> np.ndarray:
+        """Lattice coordinates (m, 3) of (p, q) (m, 2) and luminance (m,): the Log and the 1D table."""
         entries = np.linspace(0.0, 1.0, self.chroma.size)
-        out = np.empty((ryb.shape[0], 3))
+        out = np.empty((len(luminance), 3))
         for channel in range(2):
             out[:, channel] = np.interp(chroma_log(pq[:, channel]), entries, self.chroma)
-        out[:, 2] = np.interp(self.log.coordinate(ryb[:, 1]), entries, self.bend)
+        out[:, 2] = np.interp(self.log.coordinate(luminance), entries, self.bend)
         return out
 
     def values(self, u) -> np.ndarray:

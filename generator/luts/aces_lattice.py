@@ -250,8 +250,12 @@ def _error(lat: AcesLattice):
 def file_output(lat: AcesLattice, ap1) -> np.ndarray:
     """The file alone, in float64: AP1 (m, 3; clamped to [0, upper] as the config does before
     it) to limiting RGB over the peak, unclamped."""
-    u = lat.coordinate(ap1)
-    nodes, weights = tetrahedra(np.ascontiguousarray(u.T * (lat.size - 1)), lat.size)
+    return output_at(lat, lat.coordinate(ap1))
+
+
+def output_at(lat: AcesLattice, u) -> np.ndarray:
+    """The file's output (limiting RGB over the peak) at lattice coordinates ``u`` (m, 3) in [0, 1]."""
+    nodes, weights = tetrahedra(np.ascontiguousarray(np.asarray(u).T * (lat.size - 1)), lat.size)
     return mon_decode(interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T, lat.curve)
 
 

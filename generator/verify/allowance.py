@@ -220,8 +220,9 @@ def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, s
     the input carried into AP1 and moved through the file one channel at a time either way and
     encoded, summed over the channels (to first order a bound), plus the file's Log operator's
     rounding of the luminance near its toe (:data:`~generator.tolerances.ACES_LOG_ROUNDINGS`),
-    the colour scaled either way; then :func:`mapped_allowance`'s shift of the light after it.
-    Near black a pure-power display turns that rounding into codes."""
+    the colour scaled either way, and of its chromaticity (p and q each moved either way by
+    :data:`~generator.tolerances.ACES_CHROMA_ROUNDINGS`); then :func:`mapped_allowance`'s shift of
+    the light after it. Near black a pure-power display turns that rounding into codes."""
     mapped = mapped_allowance(src, back, display, view, codes, expected, shifted)
     if mapped is None:
         return None
@@ -232,9 +233,12 @@ def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, s
     to_ap1 = views.tables(found).ap0_to_ap1 @ reference.to_aces_matrix(spec)
     to_xyz = aces_lattice.to_xyz(found)
 
-    def encoded(ap1):
-        light = np.clip(aces_lattice.file_output(lat, ap1), 0.0, 1.0) @ to_xyz.T
+    def at(coordinate):
+        light = np.clip(aces_lattice.output_at(lat, coordinate), 0.0, 1.0) @ to_xyz.T
         return reference.display_xyz_encode(spec, display, light)
+
+    def encoded(ap1):
+        return at(lat.coordinate(ap1))
 
     with np.errstate(all="ignore"):
         ap1 = np.nan_to_num(apply_matrix(to_ap1, ref)).reshape(-1, 3)
@@ -254,6 +258,13 @@ def aces_file_allowance(spec: Spec, src, back, display, view, codes, expected, s
             np.abs(encoded(ap1 * (1.0 + scale[:, None])) - start),
             np.abs(encoded(ap1 * np.maximum(1.0 - scale, 0.0)[:, None]) - start),
         )
+        pq, lum = lat.axes.chromaticity(np.clip(ap1, 0.0, lat.upper))
+        for channel in range(2):
+            step = np.zeros_like(pq)
+            step[:, channel] = tolerances.ACES_CHROMA_ROUNDINGS * u
+            moved += np.maximum(
+                *(np.abs(at(lat.axes.placed(np.clip(pq + sign * step, 0.0, 1.0), lum)) - start) for sign in (1.0, -1.0))
+            )
     return mapped + np.where(np.isfinite(moved), moved, 0.0).reshape(np.shape(mapped))
 
 
