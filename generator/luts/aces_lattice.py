@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from functools import cached_property
 from typing import TypeVar
 
 import numpy as np
@@ -101,6 +102,12 @@ class AcesLattice:
     def size(self) -> int:
         """Nodes along each axis of the cube."""
         return self.cube.shape[0]
+
+    @cached_property
+    def planes(self) -> np.ndarray:
+        """The table's values channel by channel (3, n³), each contiguous: numpy's take copies a
+        strided channel whole before gathering from it (1.6 ms a call at 117³)."""
+        return np.ascontiguousarray(self.cube.reshape(-1, 3).T)
 
     def coordinate(self, ap1) -> np.ndarray:
         """AP1 colours (m, 3; clamped to [0, ``upper``]) to lattice coordinates (m, 3) in [0, 1],
@@ -204,7 +211,7 @@ def _clamped_half(lat: AcesLattice) -> np.ndarray:
     index = (np.repeat(p, n), np.repeat(q, n), np.tile(np.arange(n), p.size))
     u = lat.coordinate(np.minimum(lat.axes.values(np.stack(index, axis=1) / (n - 1.0)), lat.upper)) * (n - 1)
     out = lat.cube.copy()
-    out[index] = interpolate(*tetrahedra(np.ascontiguousarray(u.T), n), lat.cube.reshape(-1, 3).T).T
+    out[index] = interpolate(*tetrahedra(np.ascontiguousarray(u.T), n), lat.planes).T
     return out
 
 
@@ -256,7 +263,7 @@ def file_output(lat: AcesLattice, ap1) -> np.ndarray:
 def output_at(lat: AcesLattice, u) -> np.ndarray:
     """The file's output (limiting RGB over the peak) at lattice coordinates ``u`` (m, 3) in [0, 1]."""
     nodes, weights = tetrahedra(np.ascontiguousarray(np.asarray(u).T * (lat.size - 1)), lat.size)
-    return mon_decode(interpolate(nodes, weights, lat.cube.reshape(-1, 3).T).T, lat.curve)
+    return mon_decode(interpolate(nodes, weights, lat.planes).T, lat.curve)
 
 
 def evaluate(lat: AcesLattice, aces) -> np.ndarray:

@@ -19,7 +19,10 @@ import numpy as np
 
 
 def interpolate(nodes: np.ndarray, weights: np.ndarray, values: np.ndarray) -> np.ndarray:
-    """``A v`` per channel: node ``values`` (c, k) interpolated at each row, shape (c, m)."""
+    """``A v`` per channel: node ``values`` (c, k) interpolated at each row, shape (c, m). A
+    channel not contiguous (a transposed table's) is copied once here: numpy's take copies it
+    whole at every gather otherwise."""
+    values = np.ascontiguousarray(values)
     out = np.empty((values.shape[0], nodes.shape[1]))
     for row, channel in zip(out, values):
         np.multiply(weights[0], np.take(channel, nodes[0]), out=row)
