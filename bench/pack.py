@@ -1,10 +1,12 @@
 """Pack speed: `ocioforge pack` (the default pack, every file of luts/) against `ociobakelut`
 baking the same files in a loop, whole wall time.
 
-ociobakelut (Debian's opencolorio-tools, OCIO 2.1) reads a 2.1 config that `ocioforge build`
-makes (untimed) for the pack's sources and displays, with their Scale and ACES 2.0 views as
-"<view> - <display>" colour spaces; it is called once per file of the pack, with the file's
---format and --cubesize. Formats it lacks are skipped and counted. ocioforge bakes the same
+ociobakelut -- the one PyOpenColorIO's wheel installs beside this Python (its OCIO), else the one on
+PATH (Debian's opencolorio-tools, OCIO 2.1) -- reads a config that `ocioforge build` makes
+(untimed) for that OCIO, with the pack's sources and displays and their Scale and ACES 2.0 views
+as "<view> - <display>" colour spaces: from OCIO 2.4 the ACES 2.0 views are OCIO's builtins, an
+analytic config. It is called once per file of the pack, with the file's --format and
+--cubesize. Formats it lacks are skipped and counted. ocioforge bakes the same
 files as one process, in parallel over the cores, and measures each through OCIO for its
 README (ociobakelut measures nothing). Printed: both wall times and the ratio ours / theirs, and
 their CPU times (children's user + system), which other work on the machine does not inflate.
@@ -26,14 +28,34 @@ from pathlib import Path
 #: `ocioforge` as a fresh process of this Python (the environment's entry point, without PATH).
 OCIOFORGE = "import sys, generator.cli as c; c.main(sys.argv[1:])"
 
-#: ociobakelut's name of each format the pack writes; None: it cannot bake it (OCIO 2.1 lists
-#: CLF among its formats, but "File format clf does not support baking").
-THEIR_FORMATS = {"resolve_cube": "resolve_cube", "iridas_cube": "iridas_cube", "clf": None, "spi3d": None}
+#: ociobakelut's name of each format the pack writes, and the OCIO version that first bakes it. Its
+#: short name "clf" is refused ("File format clf does not support baking"); the long one bakes.
+THEIR_FORMATS = {
+    "resolve_cube": ("resolve_cube", (2, 1)),
+    "iridas_cube": ("iridas_cube", (2, 1)),
+    "clf": ("Academy/ASC Common LUT Format", (2, 1)),
+    "spi3d": ("spi3d", (2, 2)),
+}
 
 
-def bench_spec(items) -> str:
-    """A 2.1 spec with the pack's sources and displays, each display offering the views the
-    pack bakes for it (Scale for the gamut mapping)."""
+def their_tool() -> tuple[str, tuple[int, int]]:
+    """The ociobakelut to run and its OCIO version: PyOpenColorIO's beside this Python, else PATH's
+    (Debian's, OCIO 2.1)."""
+    import PyOpenColorIO as ocio
+
+    beside = Path(sys.executable).parent / "ociobakelut"
+    if beside.exists():
+        major, minor = ocio.__version__.split(".")[:2]
+        return str(beside), (int(major), int(minor))
+    found = shutil.which("ociobakelut")
+    if found is None:
+        sys.exit("ociobakelut is not installed")
+    return found, (2, 1)
+
+
+def bench_spec(items, version: tuple[int, int]) -> str:
+    """A spec for OCIO ``version`` with the pack's sources and displays, each display offering the
+    views the pack bakes for it (Scale for the gamut mapping)."""
     from generator.spec.load import DEFAULT_ROLES
 
     sources = list(dict.fromkeys(item.req.source.name for item in items))
@@ -45,25 +67,27 @@ def bench_spec(items) -> str:
         views.setdefault(item.req.display.name, [])
         if view not in views[item.req.display.name]:
             views[item.req.display.name].append(view)
-    text = 'name = "pack-bench"\nocio_version = "2.1"\ncolour_spaces = [' + ", ".join(f'"{s}"' for s in spaces)
+    text = f'name = "pack-bench"\nocio_version = "{version[0]}.{version[1]}"\ncolour_spaces = [' + ", ".join(
+        f'"{s}"' for s in spaces
+    )
     text += "]\n"
     for display, names in views.items():
         text += f'\n[[display]]\nname = "{display}"\nviews = [' + ", ".join(f'"{v}"' for v in names) + "]\n"
     return text
 
 
-def their_commands(items, config: Path, out: Path) -> tuple[list[list[str]], int]:
-    """An ociobakelut command per file it can write, and how many it cannot."""
+def their_commands(items, config: Path, out: Path, tool: str, version) -> tuple[list[list[str]], int]:
+    """An ociobakelut command per file ``tool`` (of OCIO ``version``) can write, and how many it cannot."""
     commands, skipped = [], 0
     for item in items:
-        fmt = THEIR_FORMATS[item.req.fmt]
-        if fmt is None:
+        fmt, since = THEIR_FORMATS[item.req.fmt]
+        if version < since:
             skipped += 1
             continue
         view = item.req.view.name if item.req.view is not None else "Scale"
         commands.append(
             [
-                "ociobakelut",
+                tool,
                 "--iconfig",
                 str(config / "config.ocio"),
                 "--inputspace",
@@ -90,15 +114,14 @@ def main() -> None:
     from generator.luts import pack
     from generator.spec import load
 
-    if shutil.which("ociobakelut") is None:
-        sys.exit("ociobakelut is not installed")
+    tool, version = their_tool()
     items = pack.plan(load.load())
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
-        (folder / "spec.toml").write_text(bench_spec(items), encoding="utf-8")
+        (folder / "spec.toml").write_text(bench_spec(items, version), encoding="utf-8")
         ocioforge = [sys.executable, "-c", OCIOFORGE]
         subprocess.run([*ocioforge, "build", str(folder / "spec.toml"), "-o", str(folder / "pack-bench")], check=True)
-        commands, skipped = their_commands(items, folder / "pack-bench", folder / "theirs")
+        commands, skipped = their_commands(items, folder / "pack-bench", folder / "theirs", tool, version)
         (folder / "theirs").mkdir()
         started, cpu = time.perf_counter(), _children_cpu()
         for command in commands:
@@ -111,7 +134,7 @@ def main() -> None:
     print(f"  ocioforge pack       {ours:8.2f} s wall  {our_cpu:8.2f} s CPU")
     print(
         f"  ociobakelut loop     {theirs:8.2f} s wall  {their_cpu:8.2f} s CPU  "
-        f"({len(commands)} files; {skipped} in formats it lacks skipped)"
+        f"({len(commands)} files; {skipped} in formats it lacks skipped; OCIO {version[0]}.{version[1]}, {tool})"
     )
     print(f"  ratio ours/theirs    {ours / theirs:8.2f} wall  {our_cpu / their_cpu:8.2f} CPU  (target <= 1.0, wall)")
     print(f"  load average at the end: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (others' work slows both)")
