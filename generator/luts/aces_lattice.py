@@ -43,6 +43,7 @@ from generator.luts.pool import Pool
 from generator.luts.solve import interpolate
 from generator.metrics import delta_e_itp_of_light
 from generator.rendering import views
+from generator.rendering.aces2_params import triangle_area
 from generator.rendering.aces2_presets import P3 as P3_PRIMARIES
 from generator.rendering.views import ACESView
 
@@ -138,13 +139,8 @@ def lattice_size(view: ACESView) -> int:
     """Nodes a side of ``view``'s table."""
     if not view.is_hdr:
         return SDR_LATTICE_SIZE
-    return HDR_WIDE_LATTICE_SIZE if _xy_area(view.limiting) > WIDE_AREA * _xy_area(P3_PRIMARIES) else HDR_LATTICE_SIZE
-
-
-def _xy_area(primaries) -> float:
-    """The area of a gamut's triangle in CIE xy."""
-    (rx, ry), (gx, gy), (bx, by) = primaries
-    return abs((gx - rx) * (by - ry) - (bx - rx) * (gy - ry)) / 2.0
+    wide = abs(triangle_area(*view.limiting)) > WIDE_AREA * abs(triangle_area(*P3_PRIMARIES))
+    return HDR_WIDE_LATTICE_SIZE if wide else HDR_LATTICE_SIZE
 
 
 def bake(view: ACESView, size: int | None = None) -> AcesLattice:

@@ -47,7 +47,8 @@ def _xy_array(value, shape: tuple[int, ...], name: str) -> np.ndarray:
     return array
 
 
-def _triangle_area(a, b, c) -> float:
+def triangle_area(a, b, c) -> float:
+    """Signed area of the xy triangle a, b, c (positive when counter-clockwise)."""
     return 0.5 * float((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]))
 
 
@@ -59,12 +60,12 @@ def check_gamut(primaries, white, name: str) -> tuple[tuple[tuple[float, float],
     w = _xy_array(white, (2,), f"{name}_white")
     if w[1] <= 0.0:
         raise ValueError(f"{name}_white must have y > 0, got {tuple(w)}")
-    area = _triangle_area(*p)
+    area = triangle_area(*p)
     if abs(area) < GAMUT_MIN_XY_AREA:
         raise ValueError(
             f"{name}_primaries must span an xy triangle of area at least {GAMUT_MIN_XY_AREA}, got {abs(area):.3g}"
         )
-    weights = [_triangle_area(w, p[(i + 1) % 3], p[(i + 2) % 3]) / area for i in range(3)]
+    weights = [triangle_area(w, p[(i + 1) % 3], p[(i + 2) % 3]) / area for i in range(3)]
     if min(weights) * abs(area) < GAMUT_MIN_XY_AREA:
         raise ValueError(
             f"{name}_white must lie inside the triangle of {name}_primaries, at least "
