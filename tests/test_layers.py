@@ -22,6 +22,7 @@ LAYERS = (
         "generator.leftovers",
         "generator.backends",
         "generator.colour_science",
+        "generator.heap",
     ),
     ("generator.colorimetry",),  # the colour-space library, matrices, CATs, curves, spectra
     ("generator.gamut", "generator.rendering"),  # gamut mapping; ACES output transforms (float64)

@@ -214,11 +214,13 @@ def _run(argv) -> None:
 def _checked_run(argv) -> None:
     """Run the command, its bad input (argument, path, environment) one ``error:`` line, exit 2."""
     from generator.colour_science import skip_plotting
+    from generator.heap import keep_freed_memory
     from generator.spec.schema import SpecError
 
     try:
         _check_environment()
         skip_plotting()
+        keep_freed_memory()
         with set_aside(), cli.make_context("ocioforge", [*(sys.argv[1:] if argv is None else argv)]) as ctx:
             cli.invoke(ctx)
     except click.exceptions.NoArgsIsHelpError as error:
