@@ -83,9 +83,11 @@ class _System:
     codes (3, m), each set's rows (``sets``, name to slice), the ``unknown`` nodes (flat
     mask), their numbering ``columns`` (4, m; 0 where the node is kept), ``free``, the
     weights on unknown nodes, the rows with a kept node (``touching``, their numbers, and
-    ``kept``, their weights on kept nodes: every other row's are 0), and ``rest``, per
+    ``kept``, their weights on kept nodes: every other row's are 0), ``rest``, per
     channel, the squared right-hand side of the free nodes no colour reaches (the
-    regularisation times their sampled values: the same whatever the colours' weights)."""
+    regularisation times their sampled values: the same whatever the colours' weights),
+    and ``keys``, the rows' :func:`~generator.luts.solve.band_keys` where the solve forms
+    ``A^T A`` (at least as many rows as nodes), else None."""
 
     nodes: np.ndarray
     weights: np.ndarray
@@ -97,6 +99,7 @@ class _System:
     touching: np.ndarray
     kept: np.ndarray
     rest: np.ndarray
+    keys: np.ndarray | None
 
 
 def _system(lat: Lattice, colours: dict, zero: int | None) -> _System:
@@ -140,6 +143,8 @@ def system_at(cube: np.ndarray, colours: dict, kept: np.ndarray) -> _System:
         touching,
         weights[:, touching] * ~reached[:, touching],
         rest,
+        # A^T A's bands cost a pass over the nodes a product, A itself a pass over the colours
+        solve.band_keys(nodes, size) if nodes.shape[1] >= size**3 else None,
     )
 
 
@@ -234,9 +239,8 @@ def _solved(
     # The stopping rule is relative to the whole right-hand side, unreached free nodes included.
     whole = np.sqrt(np.einsum("ck,ck->c", right, right) + system.rest)
     size = cube.shape[0]
-    # A^T A's bands cost a pass over the nodes a product, A itself a pass over the colours.
-    if system.nodes.shape[1] >= size**3:
-        matrix = solve.bands(system.nodes, free, size)
+    if system.keys is not None:
+        matrix = solve.bands(system.nodes, free, size, system.keys)
         diagonal = matrix[0][unknown] + FIT_REGULARISATION
         every = np.zeros((3, size**3))
 

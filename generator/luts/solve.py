@@ -43,21 +43,35 @@ def offsets(size: int) -> np.ndarray:
     return np.array([r * size * size + g * size + b for r in (0, 1) for g in (0, 1) for b in (0, 1)])
 
 
-def bands(nodes: np.ndarray, weights: np.ndarray, size: int) -> np.ndarray:
-    """``A^T A`` of the rows ``nodes``, ``weights`` (4, m; node numbers ascending along each
-    tetrahedron's corners, as :func:`generator.luts.fit.tetrahedra` gives them) in a size³
-    lattice: band ``k`` (8, size³) holds the entries ``[i, i + offsets(size)[k]]``."""
+def band_keys(nodes: np.ndarray, size: int) -> np.ndarray:
+    """Where each product of two corners of a row lands in :func:`bands`' flat array, per pair of
+    corners (6, m): the same for every weighting of the rows, so a fit's passes compute it once."""
     steps = offsets(size)
     band = np.zeros(steps[-1] + 1, dtype=np.intp)  # band of each difference (a lookup, not a search)
     band[steps] = np.arange(steps.size)
-    pairs = [(a, b) for a in range(nodes.shape[0]) for b in range(a + 1, nodes.shape[0])]
-    keys, values = np.empty((len(pairs), nodes.shape[1]), dtype=np.intp), np.empty((len(pairs), nodes.shape[1]))
-    for row, (a, b) in enumerate(pairs):
+    keys = np.empty((len(_PAIRS), nodes.shape[1]), dtype=np.intp)
+    for row, (a, b) in enumerate(_PAIRS):
         np.take(band, nodes[b] - nodes[a], out=keys[row])
         keys[row] += nodes[a] * steps.size
+    return keys
+
+
+#: The pairs of a tetrahedron's four corners.
+_PAIRS = [(a, b) for a in range(4) for b in range(a + 1, 4)]
+
+
+def bands(nodes: np.ndarray, weights: np.ndarray, size: int, keys: np.ndarray | None = None) -> np.ndarray:
+    """``A^T A`` of the rows ``nodes``, ``weights`` (4, m; node numbers ascending along each
+    tetrahedron's corners, as :func:`generator.luts.fit.tetrahedra` gives them) in a size³
+    lattice: band ``k`` (8, size³) holds the entries ``[i, i + offsets(size)[k]]``. ``keys``:
+    the rows' :func:`band_keys`, computed here if not given."""
+    keys = band_keys(nodes, size) if keys is None else keys
+    values = np.empty(keys.shape)
+    for row, (a, b) in enumerate(_PAIRS):
         np.multiply(weights[a], weights[b], out=values[row])
-    flat = np.bincount(keys.ravel(), weights=values.ravel(), minlength=steps.size * size**3)
-    out = np.ascontiguousarray(flat.reshape(size**3, steps.size).T)
+    count = offsets(size).size
+    flat = np.bincount(keys.ravel(), weights=values.ravel(), minlength=count * size**3)
+    out = np.ascontiguousarray(flat.reshape(size**3, count).T)
     out[0] = np.bincount(nodes.ravel(), weights=(weights * weights).ravel(), minlength=size**3)
     return out
 
