@@ -1,8 +1,10 @@
 """CLF files written by OpenColorIO from the transforms of :mod:`generator.luts.transforms`.
 
 OCIO's GroupTransform.write writes the document: its header, every operator, style
-and parameter, as the config's transforms hold them. Its tables are then re-texted
-in an ElementTree document of that output: the writer pads every table value to
+and parameter, as the config's transforms hold them, each table a two-entry stand-in
+of its kind, flags and channel count (writing the tables themselves took most of a
+pack's CLF time, to be replaced). Their arrays are then written in an ElementTree
+document of that output: the writer pads every table value to
 eleven characters and eight significant digits of float32 (0.3 becomes 0.30000001),
 which doubled the files (the LUT pack 28 to 36 MB, past LUT_PACK_BYTES), and eight
 digits do not always read back to the same float32. Each table is written instead
@@ -30,7 +32,7 @@ MAX_DECIMALS = 9
 def clf_file(steps: list, identifier: str, description: str, descriptors: tuple[str, str] = ("", "")) -> bytes:
     """The CLF ProcessList of the transforms ``steps``, written by OCIO (module docstring), with
     its id, Description and, where given, Input and Output descriptors."""
-    group = ocio.GroupTransform(steps)
+    group = ocio.GroupTransform([_stand_in(t) for t in steps])
     meta = group.getFormatMetadata()
     meta.setID(identifier)
     meta.addChildElement("Description", description)
@@ -42,9 +44,30 @@ def clf_file(steps: list, identifier: str, description: str, descriptors: tuple[
     return _retexted(written, tables)
 
 
+def _stand_in(step):
+    """A LUT1D or LUT3D transform's two-entry stand-in: its kind, direction, interpolation, file
+    bit depth, flags and channel count (OCIO writes one column for a table whose channels are
+    equal); any other transform (and a half-domain LUT1D, whose length is fixed) as it is."""
+    if isinstance(step, ocio.Lut3DTransform):
+        out = ocio.Lut3DTransform(gridSize=2)
+    elif isinstance(step, ocio.Lut1DTransform) and not step.getInputHalfDomain():
+        rows = np.asarray(step.getData()).reshape(-1, 3)
+        mono = bool(np.all(rows == rows[:, :1]))
+        out = ocio.Lut1DTransform(length=2)
+        out.setData(np.array([0, 0, 0, 1, 1, 1 if mono else 0.5], dtype=np.float32))
+        out.setHueAdjust(step.getHueAdjust())
+        out.setOutputRawHalfs(step.getOutputRawHalfs())
+    else:
+        return step
+    out.setDirection(step.getDirection())
+    out.setInterpolation(step.getInterpolation())
+    out.setFileOutputBitDepth(step.getFileOutputBitDepth())
+    return out
+
+
 def _retexted(written: str, tables: list) -> bytes:
     """OCIO's document ``written``, flat, each LUT1D or LUT3D array holding :func:`table_text`
-    of the transform in ``tables`` it was written from."""
+    of the transform in ``tables`` it was written from (or stands in for), with its dimensions."""
     root = ElementTree.fromstring(written)
     namespace = root.tag[1:].split("}")[0]
     for element in root.iter():  # local names, the namespace an attribute (ElementTree's
@@ -55,7 +78,10 @@ def _retexted(written: str, tables: list) -> bytes:
         raise ValueError(f"OCIO wrote {len(arrays)} tables of {len(tables)}")
     for array, table in zip(arrays, tables):
         columns = int(array.attrib["dim"].split()[-1])
-        array.text = "\n" + table_text(np.asarray(table.getData()).reshape(-1, 3)[:, :columns])
+        rows = np.asarray(table.getData()).reshape(-1, 3)
+        grid = [table.getGridSize()] * 3 if isinstance(table, ocio.Lut3DTransform) else [len(rows)]
+        array.attrib["dim"] = " ".join(str(n) for n in (*grid, columns))
+        array.text = "\n" + table_text(rows[:, :columns])
     for element in root.iter():
         if len(element):
             element.text = "\n"

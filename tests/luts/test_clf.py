@@ -6,7 +6,7 @@ import numpy as np
 import PyOpenColorIO as ocio
 import pytest
 
-from generator.luts import clf, formats, hsv
+from generator.luts import clf, formats, hsv, transforms
 from generator.luts.lattice import display_lattice
 
 
@@ -85,3 +85,18 @@ def test_the_hsv_files_run_as_their_transforms(tmp_path):
     (tmp_path / "f.clf").write_bytes(hsv.shared_clf())
     read = _apply(ocio.FileTransform("f.clf", interpolation=ocio.INTERP_DEFAULT), tmp_path)
     assert np.array_equal(read, _apply(ocio.GroupTransform(hsv.shared_steps())), equal_nan=True)
+
+
+def test_tables_of_every_kind_are_written_whole(tmp_path):
+    """OCIO writes two-entry stand-ins; each array and its dimensions are the table's own: a
+    one-column 1D table, one whose channels differ in a single entry, and a trilinear 3D table."""
+    ramp = np.linspace(0.0, 1.0, 11) ** 2
+    mono = np.repeat(ramp[:, None], 3, axis=1)
+    nearly = mono.copy()
+    nearly[5, 2] += 2.0**-20
+    cube = np.random.default_rng(4).uniform(-0.1, 1.1, (5, 5, 5, 3))
+    steps = [transforms.lut1d(mono), transforms.lut1d(nearly), transforms.lut3d(cube, ocio.INTERP_LINEAR)]
+    data = clf.clf_file(steps, "ocioforge:test", "tables")
+    dims = [line.split('"')[1] for line in data.decode().splitlines() if line.startswith("<Array dim=")]
+    assert dims == ["11 1", "11 3", "5 5 5 3"]
+    _file_agrees_with_its_transforms(tmp_path, data, steps)
