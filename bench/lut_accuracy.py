@@ -136,9 +136,8 @@ def _measure(spec, req, path: Path, method: str, interpolation, optimization: st
     from generator.luts import probes
 
     apply = probes.ocio_apply(ocio.FileTransform(str(path), interpolation=interpolation), optimization=optimization)
-    return _figures(
-        probes.errors_on(req.display, probes.reference_sets(spec, req.source, req.display, method), apply)[0]
-    )
+    sets = probes.reference_sets(spec, req.source, req.display, method)
+    return _figures(probes.errors_on(req.display, probes.targets(req.display, sets), apply)[0])
 
 
 def clamped_cube(path: Path, out: Path) -> Path:

@@ -180,17 +180,17 @@ def view_key(item: Item) -> tuple | None:
 
 
 def view_shared(items: list[Item]) -> dict:
-    """What the files of one ACES view (``items``, of one :func:`view_key`) share: the view's
-    display codes on the measuring probes (``probes``) and on the fit's colours where a file's
-    fit needs them (``training``), and each display layout's lattice values (``values``, by
-    :func:`shared_key`)."""
+    """What the files of one ACES view (``items``, of one :func:`view_key`) share: the measuring
+    probes and their targets (``probes``, :func:`_aces_targets`), the view's display codes on
+    the fit's colours where a file's fit needs them (``training``), and each display layout's
+    lattice values (``values``, by :func:`shared_key`)."""
     req = items[0].req
     view = _aces_view(req)
     keys = {key: item for item in items if (key := shared_key(item)) is not None}
     # a source layout fits to the training; so does a display layout holding the view's own codes
     own_codes = bool(keys) and aces_bake.light_before_clamp(req.spec, req.display, view) is None
     training = aces_bake.training_sets(req.spec, req.display, view) if own_codes or len(keys) < len(items) else None
-    probes_ = aces_probes.view_sets(req.spec, req.display, view.name, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT)
+    probes_ = _aces_targets(req, view)
     values = {
         key: aces_bake.display_values(req.spec, req.display, view, item.req.size, _decimals(item), training)
         for key, item in keys.items()
@@ -259,11 +259,15 @@ def _apply(transform, optimization: str):
 
 
 def _measure(
-    req: bake.Request, paths: list[Path], sets: dict, interpolation="tetrahedral", optimization="OPTIMIZATION_LOSSLESS"
+    req: bake.Request,
+    paths: list[Path],
+    wanted: dict,
+    interpolation="tetrahedral",
+    optimization="OPTIMIZATION_LOSSLESS",
 ):
-    """The file's figures on :func:`probes.reference_sets`' ``sets``, read as OCIO reads it."""
+    """The file's figures on :func:`probes.targets` ``wanted`` of the probes, read as OCIO reads it."""
     apply = _apply(_transform(paths, interpolation), optimization)
-    return probes.figures(*probes.errors_on(req.display, sets, apply))
+    return probes.figures(*probes.errors_on(req.display, wanted, apply))
 
 
 def _row(name: str, req: bake.Request, figures: dict, default: dict, trilinear: dict | None) -> str:
@@ -291,21 +295,26 @@ def _aces_view(req: bake.Request) -> ACESView:
 
 def _aces_figures(req: bake.Request, paths: list[Path], sets: dict | None = None) -> dict:
     """Set name to (p99, max) of the file read through OCIO (default flags, tetrahedral) on
-    :mod:`generator.luts.aces_probes`' sets (their :func:`~aces_probes.view_sets`, evaluated here
-    unless given), against the reference; a set the source's codes hold no colour of is left out."""
+    :mod:`generator.luts.aces_probes`' sets (their :func:`_aces_targets`, evaluated here unless
+    given), against the reference; a set the source's codes hold no colour of is left out."""
     view = _aces_view(req)
     apply = _apply(_transform(paths, "tetrahedral"), "OPTIMIZATION_DEFAULT")
-    sets = sets or aces_probes.view_sets(
-        req.spec, req.display, view.name, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT
-    )
+    sets = sets or _aces_targets(req, view)
     out = {}
     for name, pair in sets.items():
-        code, expected = aces_probes.held_in(req.spec, req.source, req.display, pair)
+        code, wanted = aces_probes.held_in(req.spec, req.source, req.display, pair)
         if not len(code):  # a bounded source (sRGB's codes) holds no bright colour
             continue
-        error = probes.errors(req.display, apply(code), expected)[0]
+        error = probes.errors_against(req.display, apply(code), wanted)[0]
         out[name] = (float(np.percentile(error, 99)), float(error.max()))
     return out
+
+
+def _aces_targets(req: bake.Request, view: ACESView) -> dict:
+    """:func:`aces_probes.view_sets` of the pack's probes, each with its :func:`probes.target`
+    for the display's codes: the same for every source's file of the view."""
+    sets = aces_probes.view_sets(req.spec, req.display, view.name, aces_probes.PROBE_SEED, aces_probes.PROBE_COUNT)
+    return {name: (aces, probes.target(req.display, expected)) for name, (aces, expected) in sets.items()}
 
 
 def _aces_row(name: str, req: bake.Request, figures: dict) -> str:
@@ -330,10 +339,11 @@ def bake_item(item: Item, folder: Path, shared: dict | None = None) -> tuple[tup
     if req.view is not None:
         figures = _aces_figures(req, paths, (shared or {}).get("probes"))
         return tuple(p.name for p in paths), _aces_row(item.name, req, figures)
-    sets = probes.reference_sets(req.spec, req.source, req.display, req.method)  # one reference, three readings
-    trilinear = _measure(req, paths, sets, "trilinear") if req.fmt != "clf" else None
-    default = _measure(req, paths, sets, optimization="OPTIMIZATION_DEFAULT")
-    return tuple(p.name for p in paths), _row(item.name, req, _measure(req, paths, sets), default, trilinear)
+    sets = probes.reference_sets(req.spec, req.source, req.display, req.method)
+    wanted = probes.targets(req.display, sets)  # one reference, three readings
+    trilinear = _measure(req, paths, wanted, "trilinear") if req.fmt != "clf" else None
+    default = _measure(req, paths, wanted, optimization="OPTIMIZATION_DEFAULT")
+    return tuple(p.name for p in paths), _row(item.name, req, _measure(req, paths, wanted), default, trilinear)
 
 
 #: The items a pack's forked workers bake (a spec holds functions, which do not pickle: the

@@ -17,7 +17,7 @@ codes pass the top of a capped code range, as S-Log3's brightest codes fall shor
 times a 1000 cd/m² peak) are left out of both, as a file in that encoding never holds them.
 
 Errors are ten-bit code values (largest channel difference times 1023) for SDR
-displays and ΔE ITP (ITU-R BT.2124, :func:`~generator.metrics.delta_e_itp`)
+displays and ΔE ITP (ITU-R BT.2124, as :func:`~generator.metrics.delta_e_itp`)
 for HDR ones; each set reports its maximum and 99th percentile.
 """
 
@@ -31,7 +31,7 @@ from generator import reference, tolerances
 from generator.colorimetry.matrices import channel_max, channel_min
 from generator.colorimetry.transfer import Linear
 from generator.luts.source_axes import code_range
-from generator.metrics import colour_relative_error, delta_e_itp
+from generator.metrics import colour_relative_error, delta_e_of_ictcp, ictcp_of_codes
 from generator.spec.schema import ColourSpace, Display, Spec
 
 SETS = ("in_gamut", "dark", "out_of_gamut", "over_range")
@@ -157,11 +157,31 @@ def training(
 
 def errors(display: Display, actual, expected) -> tuple[np.ndarray, str]:
     """Per-colour error of code values ``actual`` against ``expected``, and its unit."""
-    actual, expected = np.asarray(actual, dtype=np.float64), np.asarray(expected, dtype=np.float64)
+    return errors_against(display, actual, target(display, expected))
+
+
+def target(display: Display, expected) -> np.ndarray:
+    """What :func:`errors_against` compares a reading with: the ``expected`` code values, or
+    for an HDR display their ICtCp, computed once for all the readings of a file."""
+    expected = np.asarray(expected, dtype=np.float64)
+    if not display.is_hdr:
+        return expected
+    with np.errstate(all="ignore"):
+        return ictcp_of_codes(display, expected)
+
+
+def errors_against(display: Display, actual, wanted: np.ndarray) -> tuple[np.ndarray, str]:
+    """:func:`errors` of code values ``actual`` against a :func:`target` ``wanted``."""
+    actual = np.asarray(actual, dtype=np.float64)
     if display.is_hdr:
         with np.errstate(all="ignore"):
-            return np.nan_to_num(delta_e_itp(display, actual, expected)), "ΔE ITP"
-    return channel_max(np.abs(actual - expected)) * 1023.0, "10-bit codes"
+            return np.nan_to_num(delta_e_of_ictcp(ictcp_of_codes(display, actual), wanted)), "ΔE ITP"
+    return channel_max(np.abs(actual - wanted)) * 1023.0, "10-bit codes"
+
+
+def targets(display: Display, sets: dict) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """:func:`reference_sets`' ``sets`` with each expected value its :func:`target`."""
+    return {name: (code, target(display, expected)) for name, (code, expected) in sets.items()}
 
 
 def reference_sets(
@@ -193,12 +213,12 @@ def reference_sets(
     return out
 
 
-def errors_on(display: Display, sets: dict, apply) -> tuple[dict[str, np.ndarray], str]:
-    """Per-colour errors of ``apply`` (input values (n, 3) -> display code values) on
-    :func:`reference_sets`' ``sets``, and their unit ("" without a set)."""
+def errors_on(display: Display, wanted: dict, apply) -> tuple[dict[str, np.ndarray], str]:
+    """Per-colour errors of ``apply`` (input values (n, 3) -> display code values) on the
+    :func:`targets` ``wanted`` of :func:`reference_sets`, and their unit ("" without a set)."""
     result, unit = {}, ""
-    for name, (code, expected) in sets.items():
-        result[name], unit = errors(display, apply(code), expected)
+    for name, (code, goal) in wanted.items():
+        result[name], unit = errors_against(display, apply(code), goal)
     return result, unit
 
 
@@ -218,7 +238,8 @@ def measure(
 ) -> dict[str, Figures]:
     """Figures of ``apply`` (source code values (n, 3) -> display code values) on every set of
     :func:`reference_sets`."""
-    return figures(*errors_on(display, reference_sets(spec, source, display, method, gamut_source, count), apply))
+    sets = reference_sets(spec, source, display, method, gamut_source, count)
+    return figures(*errors_on(display, targets(display, sets), apply))
 
 
 def ocio_apply(transform, interpolation=None, search_path: str = "", optimization: str = "OPTIMIZATION_DEFAULT"):
