@@ -27,7 +27,7 @@ import numpy as np
 from generator.colorimetry.gamuts import gamuts
 from generator.colorimetry.matrices import channel_max
 from generator.colorimetry.transfer import PiecewisePower
-from generator.luts import aces_probes
+from generator.luts import aces_probes, numbers
 from generator.luts.aces_axes import HDR_LOW_PEAK
 from generator.luts.aces_chroma import (
     BLACK_OFFSET,
@@ -324,7 +324,7 @@ def table_rows(cube: np.ndarray) -> str:
     """A 3D table's rows as OCIO writes them at 16-bit integer output depth (the float32 value
     times 65535, blue fastest), one space apart where OCIO pads each to six characters."""
     codes = np.rint(np.asarray(cube, dtype=np.float32).astype(np.float64).reshape(-1, 3) * CODE_STEPS)
-    return ("%d %d %d\n" * len(codes)) % tuple(codes.astype(np.int64).ravel().tolist())
+    return numbers.integer_table(codes).decode("ascii")
 
 
 def _with_table(text: str, cube: np.ndarray) -> str:

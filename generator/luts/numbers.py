@@ -105,7 +105,32 @@ def _block(q: np.ndarray, decimals: int) -> bytes:
         chars[:, place + 2], keep[:, place + 2] = digits[place], places >= place
     chars[:, -1] = ord(" ")
     chars.reshape(rows, columns, width)[:, -1, -1] = ord("\n")
-    return np.compress(keep.ravel(), chars.ravel()).tobytes()
+    return chars.ravel()[keep.ravel()].tobytes()  # boolean indexing: a third of np.compress's time
+
+
+def integer_table(values) -> bytes:
+    """Rows of integers ``values`` (shape (rows, columns)) as text lines, each as ``str`` writes it:
+    columns one space apart, each row ending with a newline."""
+    q = np.asarray(values, dtype=np.int64)
+    return b"".join(_integer_block(q[start : start + TABLE_BLOCK]) for start in range(0, len(q), TABLE_BLOCK))
+
+
+def _integer_block(q: np.ndarray) -> bytes:
+    rows, columns = q.shape
+    q = q.ravel()
+    magnitude = np.abs(q)
+    count = len(str(int(magnitude.max(initial=0))))
+    digits, _ = _digits(magnitude, count)
+    chars = np.empty((q.size, count + 2), dtype=np.uint8)
+    keep = np.ones((q.size, count + 2), dtype=bool)
+    chars[:, 0], keep[:, 0] = ord("-"), q < 0
+    for place in range(count):  # a leading zero is dropped; the units digit is always written
+        chars[:, place + 1] = digits[place]
+        if place < count - 1:
+            keep[:, place + 1] = magnitude >= 10 ** (count - 1 - place)
+    chars[:, -1] = ord(" ")
+    chars.reshape(rows, columns, count + 2)[:, -1, -1] = ord("\n")
+    return chars.ravel()[keep.ravel()].tobytes()  # boolean indexing: a third of np.compress's time
 
 
 def number(value: float) -> str:

@@ -41,6 +41,17 @@ def test_a_table_of_one_column_is_one_value_a_line():
     assert numbers.table(np.array([[0.0], [-0.0000004], [1.5], [-2.25]]), 6) == b"0\n0\n1.5\n-2.25\n"
 
 
+def test_integers_are_written_as_python_writes_them_across_blocks():
+    rng = np.random.default_rng(RNG_SEED)
+    values = rng.integers(0, 65536, (numbers.TABLE_BLOCK + 300, 3))
+    values[::7] = rng.integers(-100000, 100000, (len(values[::7]), 3))
+    values[::11, 0], values[::13, 1], values[5] = 0, -1, (9, 10, 99)
+    values[-1] = (100, 999, 1000)
+    expected = "".join(" ".join(str(v) for v in row) + "\n" for row in values.tolist())
+    assert numbers.integer_table(values).decode("ascii") == expected
+    assert numbers.integer_table(np.array([[0], [7], [-12]])) == b"0\n7\n-12\n"
+
+
 def test_a_number_is_text_that_reads_back_to_the_same_float():
     rng = np.random.default_rng(RNG_SEED)
     values = np.concatenate([rng.normal(0.0, 1.0, 500), 10.0 ** rng.uniform(-300, 300, 500), [0.1, -0.0078125, 1.0]])
