@@ -8,10 +8,11 @@ as "<view> - <display>" colour spaces: from OCIO 2.4 the ACES 2.0 views are OCIO
 analytic config. It is called once per file of the pack, with the file's --format and
 --cubesize. Formats it lacks are skipped and counted. ocioforge bakes the same
 files as one process, in parallel over the cores, and measures each through OCIO for its
-README (ociobakelut measures nothing). Printed: both wall times and the ratio ours / theirs, and
-their CPU times (children's user + system), which other work on the machine does not inflate.
+README (ociobakelut measures nothing). Printed, for each of several rounds (each timing both,
+in turn first): both wall times and the ratio ours / theirs, and their CPU times (children's
+user + system); then the median round's ratio.
 
-Run: .venv/bin/python bench/pack.py
+Run: .venv/bin/python bench/pack.py [ROUNDS]
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ from __future__ import annotations
 import os
 import resource
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -110,34 +112,55 @@ def _children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
+#: Rounds of both timings: the machine's speed drifts by tens of percent within a minute, so
+#: each round times both, in turn first, and the median round's ratio is the figure.
+ROUNDS = 3
+
+
+def _timed(commands: list[list[str]]) -> tuple[float, float]:
+    """Wall and CPU seconds of running ``commands`` one after another."""
+    started, cpu = time.perf_counter(), _children_cpu()
+    for command in commands:
+        subprocess.run(command, check=True, capture_output=True)
+    return time.perf_counter() - started, _children_cpu() - cpu
+
+
 def main() -> None:
     from generator.luts import pack
     from generator.spec import load
 
+    rounds = int(sys.argv[1]) if len(sys.argv) > 1 else ROUNDS
     tool, version = their_tool()
     items = pack.plan(load.load())
+    print(f"default pack: {len(items)} files on {os.cpu_count()} cores, each measured for its README")
+    ratios = []
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         (folder / "spec.toml").write_text(bench_spec(items, version), encoding="utf-8")
         ocioforge = [sys.executable, "-c", OCIOFORGE]
         subprocess.run([*ocioforge, "build", str(folder / "spec.toml"), "-o", str(folder / "pack-bench")], check=True)
-        commands, skipped = their_commands(items, folder / "pack-bench", folder / "theirs", tool, version)
-        (folder / "theirs").mkdir()
-        started, cpu = time.perf_counter(), _children_cpu()
-        for command in commands:
-            subprocess.run(command, check=True, capture_output=True)
-        theirs, their_cpu = time.perf_counter() - started, _children_cpu() - cpu
-        started, cpu = time.perf_counter(), _children_cpu()
-        subprocess.run([*ocioforge, "pack", "-o", str(folder / "ours")], check=True, capture_output=True)
-        ours, our_cpu = time.perf_counter() - started, _children_cpu() - cpu
-    print(f"default pack: {len(items)} files on {os.cpu_count()} cores, each measured for its README")
-    print(f"  ocioforge pack       {ours:8.2f} s wall  {our_cpu:8.2f} s CPU")
+        for n in range(rounds):
+            theirs_out, ours_out = folder / f"theirs{n}", folder / f"ours{n}"
+            theirs_out.mkdir()
+            commands, skipped = their_commands(items, folder / "pack-bench", theirs_out, tool, version)
+            pack_command = [[*ocioforge, "pack", "-o", str(ours_out)]]
+            if n % 2:
+                (ours, our_cpu), (theirs, their_cpu) = _timed(pack_command), _timed(commands)
+            else:
+                (theirs, their_cpu), (ours, our_cpu) = _timed(commands), _timed(pack_command)
+            ratios.append(ours / theirs)
+            print(f"round {n + 1} ({'ours' if n % 2 else 'theirs'} first)")
+            print(f"  ocioforge pack       {ours:8.2f} s wall  {our_cpu:8.2f} s CPU")
+            print(
+                f"  ociobakelut loop     {theirs:8.2f} s wall  {their_cpu:8.2f} s CPU  "
+                f"({len(commands)} files; {skipped} in formats it lacks skipped; OCIO {version[0]}.{version[1]}, {tool})"
+            )
+            print(f"  ratio ours/theirs    {ours / theirs:8.2f} wall  {our_cpu / their_cpu:8.2f} CPU")
     print(
-        f"  ociobakelut loop     {theirs:8.2f} s wall  {their_cpu:8.2f} s CPU  "
-        f"({len(commands)} files; {skipped} in formats it lacks skipped; OCIO {version[0]}.{version[1]}, {tool})"
+        f"median ratio ours/theirs over {rounds} rounds: {statistics.median(ratios):.2f} wall "
+        f"(rounds {', '.join(f'{r:.2f}' for r in ratios)}; target <= 1.0)"
     )
-    print(f"  ratio ours/theirs    {ours / theirs:8.2f} wall  {our_cpu / their_cpu:8.2f} CPU  (target <= 1.0, wall)")
-    print(f"  load average at the end: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (others' work slows both)")
+    print(f"load average at the end: {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (others' work slows both)")
 
 
 if __name__ == "__main__":
