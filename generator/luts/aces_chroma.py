@@ -128,13 +128,24 @@ class ChromaAxes:
         """AP1 at lattice coordinates ``u`` (m, 3): :meth:`coordinate`'s inverse where p >= q (in
         the table's other half, chromaticities past AP1's R = 0 face, clamped to 0)."""
         u = np.asarray(u, dtype=np.float64)
+        return self.node_values(u[:, :2], u[:, 2], paired=True)
+
+    def node_values(self, chroma, luminance, paired: bool = False) -> np.ndarray:
+        """:meth:`values` of every (p, q) coordinate pair of ``chroma`` (m, 2) with every luminance
+        coordinate of ``luminance`` (k,), pairs outer (m·k, 3), each pair's chromaticity and each
+        luminance computed once (a table's nodes); ``paired``: row i's pair with ``luminance[i]``
+        alone (m, 3). Elementwise the same operations, so the same values."""
+        chroma, luminance = np.asarray(chroma, dtype=np.float64), np.asarray(luminance, dtype=np.float64)
         entries = np.linspace(0.0, 1.0, self.chroma.size)
-        pq = chroma_unlog(np.stack([np.interp(u[:, c], self.chroma, entries) for c in range(2)], axis=1))
+        pq = chroma_unlog(np.stack([np.interp(chroma[:, c], self.chroma, entries) for c in range(2)], axis=1))
         xy = (pq - self.offset) @ np.linalg.inv(self.matrix).T
-        luminance = self.grey(u[:, 2]) + BLACK_OFFSET
+        level = self.grey(luminance) + BLACK_OFFSET
+        x, y = (xy[:, 0], xy[:, 1]) if paired else (xy[:, :1], xy[:, 1:])
+        z = 1.0 - x - y
         with np.errstate(all="ignore"):
-            total = np.where(xy[:, 1] > 0.0, luminance / xy[:, 1], 0.0)
-        ryb = np.stack([xy[:, 0] * total, luminance, (1.0 - xy[:, 0] - xy[:, 1]) * total], axis=1) - BLACK_OFFSET
+            total = np.where(y > 0.0, level / y, 0.0)
+        level = np.broadcast_to(level, total.shape)
+        ryb = np.stack([(x * total).ravel(), level.ravel(), (z * total).ravel()], axis=1) - BLACK_OFFSET
         return np.maximum(ryb @ np.linalg.inv(self.ryb).T, 0.0)
 
     def grey(self, u) -> np.ndarray:

@@ -184,12 +184,12 @@ def baked(view: ACESView, size: int | None = None) -> AcesLattice:
         toe = HDR_LOW_TOE
     axes, top = chroma_axes(view, size, toe, shape), upper(view)
     # the half colours reach (q <= p), sampled; the other is filled after the fit (:func:`_clamped_half`)
-    grid = np.stack(np.meshgrid(*[np.linspace(0.0, 1.0, size)] * 3, indexing="ij"), axis=-1)
+    nodes = np.linspace(0.0, 1.0, size)
     reached = np.tril(np.ones((size, size), dtype=bool))
+    p, q = np.nonzero(reached)
     cube = np.zeros((size, size, size, 3))
-    cube[reached] = _encoded(view, np.minimum(axes.values(grid[reached].reshape(-1, 3)), top), curve).reshape(
-        -1, size, 3
-    )
+    ap1 = axes.node_values(np.stack([nodes[p], nodes[q]], axis=1), nodes)
+    cube[reached] = _encoded(view, np.minimum(ap1, top), curve).reshape(-1, size, 3)
     lat = AcesLattice(view, top, axes, curve, cube)
     cube = _clamped_half(replace(lat, cube=fitted(lat)))
     # + 0.0: no negative zero, which OCIO would write as "-0"
@@ -205,7 +205,8 @@ def _clamped_half(lat: AcesLattice) -> np.ndarray:
     n = lat.size
     p, q = np.triu_indices(n, 1)
     index = (np.repeat(p, n), np.repeat(q, n), np.tile(np.arange(n), p.size))
-    u = lat.coordinate(np.minimum(lat.axes.values(np.stack(index, axis=1) / (n - 1.0)), lat.upper)) * (n - 1)
+    ap1 = lat.axes.node_values(np.stack([p, q], axis=1) / (n - 1.0), np.arange(n) / (n - 1.0))
+    u = lat.coordinate(np.minimum(ap1, lat.upper)) * (n - 1)
     out = lat.cube.copy()
     out[index] = interpolate(*tetrahedra(np.ascontiguousarray(u.T), n), lat.planes).T
     return out

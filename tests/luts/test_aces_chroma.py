@@ -32,6 +32,16 @@ def test_values_invert_coordinates_inside_ap1(shape):
     assert np.allclose(axes.values(axes.coordinate(ap1)), ap1, rtol=1e-9, atol=1e-12)
 
 
+def test_node_values_are_the_values_of_every_node_pair_by_level():
+    """A table's nodes computed per (p, q) pair and per level are, bit for bit, :meth:`values`
+    of the nodes listed whole (pairs outer), on both halves of the table."""
+    axes = chroma_axes(SDR, 17, 2.0**-7, SDR_WARP)
+    nodes = np.linspace(0.0, 1.0, 17)
+    p, q = np.nonzero(np.ones((17, 17), dtype=bool))
+    whole = np.stack([np.repeat(nodes[p], 17), np.repeat(nodes[q], 17), np.tile(nodes, p.size)], axis=1)
+    assert np.array_equal(axes.node_values(np.stack([nodes[p], nodes[q]], axis=1), nodes), axes.values(whole))
+
+
 def test_the_warp_rises_from_0_to_1_and_crowds_the_faces():
     t = np.linspace(0.0, 1.0, 1001)
     for shape in (SDR_WARP, HDR_WARP):
