@@ -17,6 +17,7 @@ Run: .venv/bin/python bench/pack.py [ROUNDS]
 
 from __future__ import annotations
 
+import argparse
 import os
 import resource
 import shutil
@@ -125,11 +126,19 @@ def _timed(commands: list[list[str]]) -> tuple[float, float]:
     return time.perf_counter() - started, _children_cpu() - cpu
 
 
-def main() -> None:
+def _rounds(text: str) -> int:
+    if not text.isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"{text!r}; allowed: a whole number of rounds, 1 or more")
+    return int(text)
+
+
+def main(argv=None) -> None:
     from generator.luts import pack
     from generator.spec import load
 
-    rounds = int(sys.argv[1]) if len(sys.argv) > 1 else ROUNDS
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("rounds", nargs="?", type=_rounds, default=ROUNDS, metavar="ROUNDS")
+    rounds = parser.parse_args(argv).rounds
     tool, version = their_tool()
     items = pack.plan(load.load())
     print(f"default pack: {len(items)} files on {os.cpu_count()} cores, each measured for its README")
