@@ -5,7 +5,8 @@ By default glibc returns a freed block above 128 KB (or above the largest block 
 up to 32 MB) to the kernel, and trims the heap's top once 2× that is free: every array of a
 bake's hundred thousand colours was mapped, faulted in page by page and unmapped again. Kept,
 the pack's serial bake took 0.13 s of system time instead of 1.9 s, and 15% less wall time
-(docs/luts.md). Memory freed stays with the process until it exits: its peak does not grow.
+(docs/luts.md). Memory freed stays with the process until it exits; its peak did not grow
+(the serial bake: 284 MB either way).
 """
 
 from __future__ import annotations
