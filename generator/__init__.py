@@ -3,8 +3,8 @@
 Layers, from the bottom; a module imports from its own layer and those below, never above,
 and no two modules import each other (tests/test_layers.py holds the package to this):
 
-1. tolerances, files (leftovers: what a killed build left), backends, colour_science, heap: small
-   modules every layer may use;
+1. tolerances, files (leftovers: what a killed build left), backends, colour_science, heap,
+   avx_state: small modules every layer may use;
 2. colorimetry: the colour-space library, matrices, CATs, transfer functions, spectra;
 3. gamut, rendering: gamut mapping; the ACES output transforms in float64;
 4. spec: the frozen description, checked against the library (spec.allowed: what it may ask for);

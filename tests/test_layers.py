@@ -23,6 +23,7 @@ LAYERS = (
         "generator.backends",
         "generator.colour_science",
         "generator.heap",
+        "generator.avx_state",
     ),
     ("generator.colorimetry",),  # the colour-space library, matrices, CATs, curves, spectra
     ("generator.gamut", "generator.rendering"),  # gamut mapping; ACES output transforms (float64)

@@ -22,6 +22,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from generator.avx_state import clear_upper
 from generator.convert import formats, pixels
 from generator.convert.frames import Source
 from generator.convert.judge import Route, Verdict, judge
@@ -206,6 +207,7 @@ def _converted(cpu, band: np.ndarray, rgb: tuple[int, ...]) -> np.ndarray:
     """``band`` with its colour channels through the CPU processor (float32, as OCIO runs); in
     place where the band is R, G, B alone."""
     band = np.ascontiguousarray(band, dtype=np.float32)
+    clear_upper()  # the EXR reader's AVX state slowed OCIO's SSE code tenfold
     if rgb == (0, 1, 2) and band.shape[-1] == 3:
         cpu.applyRGB(band.reshape(-1, 3))
         return band

@@ -7,8 +7,10 @@ import os
 
 import numpy as np
 
+from generator.avx_state import upper_in_use
 from tests.convert import images
 from tests.convert.images import convert
+from tests.test_avx_state import dirty_upper, needs_xinuse
 
 
 def test_output_is_pyopencolorio_on_the_same_pixels(tmp_path, capsys, config):
@@ -160,3 +162,30 @@ def test_an_output_that_appears_meanwhile_is_kept_unless_it_is_this_frames_own(t
     assert convert_frame(_plan(config, force=True), source).status == WRITTEN
     assert (tmp_path / "out" / "s.0001.exr").read_bytes() == first
     assert (tmp_path / "out" / "s.0001.exr").stat().st_mode & 0o777 == 0o640
+
+
+@needs_xinuse
+def test_ocio_runs_with_the_avx_upper_halves_unused(tmp_path, capsys, config, monkeypatch):
+    # a reader leaving them in use made OCIO's SSE code ten times slower
+    import PyOpenColorIO as ocio
+
+    from generator.convert import pixels
+
+    read_rows, apply_rgb, seen = pixels.read_rows, ocio.CPUProcessor.applyRGB, []
+
+    def read_then_dirty(*args):
+        band = read_rows(*args)
+        dirty_upper()
+        return band
+
+    def apply_seen(processor, values):
+        seen.append(upper_in_use())
+        return apply_rgb(processor, values)
+
+    monkeypatch.setattr(pixels, "read_rows", read_then_dirty)
+    monkeypatch.setattr(ocio.CPUProcessor, "applyRGB", apply_seen)
+    (tmp_path / "in").mkdir()
+    source = images.write(tmp_path / "in" / "p.exr", images.pixels(2, 3), "half", compression="zip")
+    code, out, _ = convert(capsys, source, "--config", config, "--to", "ACEScg", "-o", tmp_path / "out", "--jobs", 1)
+    assert code == 0 and "1 written" in out
+    assert seen and not any(seen)
