@@ -165,27 +165,36 @@ def test_an_output_that_appears_meanwhile_is_kept_unless_it_is_this_frames_own(t
 
 
 @needs_xinuse
-def test_ocio_runs_with_the_avx_upper_halves_unused(tmp_path, capsys, config, monkeypatch):
-    # a reader leaving them in use made OCIO's SSE code ten times slower
+def test_ocio_and_the_check_run_with_the_avx_upper_halves_unused(tmp_path, capsys, config, monkeypatch):
+    # a reader leaving them in use made OCIO's SSE code ten times slower, numpy's 2.5 times
     import PyOpenColorIO as ocio
 
-    from generator.convert import pixels
+    from generator.convert import frame, pixels
 
-    read_rows, apply_rgb, seen = pixels.read_rows, ocio.CPUProcessor.applyRGB, []
+    apply_rgb, judge, seen = ocio.CPUProcessor.applyRGB, frame.judge, []
 
-    def read_then_dirty(*args):
-        band = read_rows(*args)
-        dirty_upper()
-        return band
+    def dirtying(read):
+        def read_then_dirty(*args):
+            out = read(*args)
+            dirty_upper()
+            return out
 
-    def apply_seen(processor, values):
-        seen.append(upper_in_use())
-        return apply_rgb(processor, values)
+        return read_then_dirty
 
-    monkeypatch.setattr(pixels, "read_rows", read_then_dirty)
-    monkeypatch.setattr(ocio.CPUProcessor, "applyRGB", apply_seen)
+    def seen_then(function):
+        def wrapped(*args):
+            seen.append((function.__name__, upper_in_use()))
+            return function(*args)
+
+        return wrapped
+
+    monkeypatch.setattr(pixels, "read_rows", dirtying(pixels.read_rows))
+    monkeypatch.setattr(frame, "_sampled", dirtying(frame._sampled))
+    monkeypatch.setattr(ocio.CPUProcessor, "applyRGB", seen_then(apply_rgb))
+    monkeypatch.setattr(frame, "judge", seen_then(judge))
     (tmp_path / "in").mkdir()
     source = images.write(tmp_path / "in" / "p.exr", images.pixels(2, 3), "half", compression="zip")
-    code, out, _ = convert(capsys, source, "--config", config, "--to", "ACEScg", "-o", tmp_path / "out", "--jobs", 1)
-    assert code == 0 and "1 written" in out
-    assert seen and not any(seen)
+    out = tmp_path / "out"
+    code, text, _ = convert(capsys, source, "--config", config, "--to", "ACEScg", "-o", out, "--jobs", 1, "--verify")
+    assert code == 0 and "1 written" in text
+    assert {name for name, _ in seen} == {"applyRGB", "judge"} and not any(dirty for _, dirty in seen)
