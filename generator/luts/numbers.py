@@ -103,8 +103,14 @@ def _block(q: np.ndarray, decimals: int) -> bytes:
     chars[:, 2], keep[:, 2] = ord("."), places > 0
     for place in range(1, decimals + 1):
         chars[:, place + 2], keep[:, place + 2] = digits[place], places >= place
+    return _lines(chars, keep, rows, columns)
+
+
+def _lines(chars: np.ndarray, keep: np.ndarray, rows: int, columns: int) -> bytes:
+    """The kept characters of numbers ``chars`` (rows·columns, width; ASCII, the last column
+    the separator), columns one space apart, each row ending with a newline."""
     chars[:, -1] = ord(" ")
-    chars.reshape(rows, columns, width)[:, -1, -1] = ord("\n")
+    chars.reshape(rows, columns, -1)[:, -1, -1] = ord("\n")
     return chars.ravel()[keep.ravel()].tobytes()  # boolean indexing: a third of np.compress's time
 
 
@@ -128,9 +134,7 @@ def _integer_block(q: np.ndarray) -> bytes:
         chars[:, place + 1] = digits[place]
         if place < count - 1:
             keep[:, place + 1] = magnitude >= 10 ** (count - 1 - place)
-    chars[:, -1] = ord(" ")
-    chars.reshape(rows, columns, count + 2)[:, -1, -1] = ord("\n")
-    return chars.ravel()[keep.ravel()].tobytes()  # boolean indexing: a third of np.compress's time
+    return _lines(chars, keep, rows, columns)
 
 
 def number(value: float) -> str:
