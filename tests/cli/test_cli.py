@@ -276,7 +276,10 @@ def test_a_full_standard_output_is_named_and_loses_no_file(tmp_path):
             )
 
         built = ocioforge("build", "-o", "show")
-        checked = ocioforge("verify", "show", "--quick", "--engines", "ocio", "--report", "report")
+        # one check: the report and the verdict are printed whatever the checks
+        checked = ocioforge(
+            "verify", "show", "--quick", "--engines", "ocio", "--only", "ACES2065-1 -> ACEScg", "--report", "report"
+        )
     for done in (built, checked):
         assert done.returncode == 2 and done.stderr.count("\n") == 1, done.stderr
         assert done.stderr.startswith("error: standard output: No space left on device (files the command wrote")

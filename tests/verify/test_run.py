@@ -34,9 +34,10 @@ def test_a_missing_file_is_a_clear_error(config_copy, missing):
 def test_a_host_verified_alone_has_its_default_flag_departures_explained(build_config):
     """oiiotool runs OCIO with its default flags; verified without the in-process engines, its
     departures the flags explain are named so (APPROX) from in-process runs made for that alone,
-    not failures (they failed when the ocio engine was not asked for)."""
+    not failures (they failed when the ocio engine was not asked for). Samsung Log's checks: its
+    inverse 1D table departs under the default flags (OPTIMIZATION_LUT_INV_FAST)."""
     require_program("oiiotool")
-    result = verify(build_config((2, 1)), ("oiiotool",), density="quick")
+    result = verify(build_config((2, 1)), ("oiiotool",), density="quick", only="Samsung")
     names = {e.name for e in engine_registry()["oiiotool"]}  # Debian's too, where it is installed
     assert {run.name for run in result.engines} == names
     assert {o.engine for o in result.outcomes} <= {f"{n} ({v})" for n in names for v in ("EXR float", "TIFF uint16")}
